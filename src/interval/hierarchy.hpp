@@ -1,0 +1,38 @@
+#pragma once
+// The bounding-sphere hierarchy: takes the kept boxes of an octree, puts out a flat array
+// the fragment shader walks without a stack. Layout (docs/hierarchy.md):
+//   nodes in pre-order; each node is 3 vec4 texels
+//     t0 = (center.xyz, radius)         radius = half the box diagonal (exact bound)
+//     t1 = (boxMin.xyz, escape)         escape = index of the next node when this subtree
+//                                       is skipped or finished (== node count at the end)
+//     t2 = (boxMax.xyz, isLeaf)         1.0 for a leaf (kept box at the deepest level it
+//                                       reached), 0.0 for an inner node
+//   Walking: i = 0; while i < count: if ray meets sphere(i) and box(i): if leaf, trace the
+//   segment and go to escape, else go to i + 1 (first child); otherwise go to escape.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace zs {
+
+struct Box {
+  std::array<double, 3> min{};
+  std::array<double, 3> max{};
+};
+
+struct SphereNode {
+  std::array<double, 3> center{};
+  double radius = 0;
+  Box box;
+  std::int32_t escape = 0;
+  bool leaf = false;
+};
+
+struct SphereHierarchy {
+  std::vector<SphereNode> nodes;  // pre-order
+
+  // 12 floats per node, in the texel layout above.
+  std::vector<float> packed() const;
+};
+
+}  // namespace zs

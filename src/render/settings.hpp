@@ -1,0 +1,87 @@
+#pragma once
+// Plain data: everything that decides how a surface is drawn. The scene loader fills it,
+// the command line and the viewer edit it, the renderer reads it. Defaults here are the
+// documented defaults of docs/surf-format.md.
+#include <array>
+
+namespace zs {
+
+using Vec3 = std::array<double, 3>;
+
+enum class Projection { Perspective, Orthographic };
+
+struct Camera {
+  Vec3 eye{0, 0, 4};
+  Vec3 target{0, 0, 0};
+  Vec3 up{0, 1, 0};
+  Projection projection = Projection::Perspective;
+  double fovY = 40.0;   // degrees, perspective
+  double height = 3.0;  // world units covered vertically, orthographic
+};
+
+struct Domain {
+  Vec3 min{-1.5, -1.5, -1.5};
+  Vec3 max{1.5, 1.5, 1.5};
+};
+
+struct DirectionalLight {
+  Vec3 direction{-0.4, -0.6, -1.0};  // direction the light travels
+  double intensity = 0.8;
+  Vec3 color{1, 1, 1};
+};
+
+struct PointLight {
+  Vec3 position{3, 3, 4};
+  double intensity = 0.6;
+  Vec3 color{1, 1, 1};
+};
+
+struct Lights {
+  double ambient = 0.15;
+  DirectionalLight directional;
+  PointLight point;
+};
+
+struct Material {
+  Vec3 color{0.85, 0.55, 0.2};
+  double specular = 0.5;
+  double shininess = 40.0;
+};
+
+struct Materials {
+  Material front{};
+  Material back{{0.25, 0.55, 0.85}, 0.5, 40.0};
+};
+
+struct Tracing {
+  int intervals = 10;       // sign samples per leaf segment (thesis: "intervalos")
+  double epsilon = 0.001;   // bisection stops when the bracket or |F| is below this
+  int maxBisections = 40;   // safety bound on bisection steps
+  int hits = 4;             // n nearest hits kept per ray
+};
+
+struct Highlight {
+  bool enabled = true;
+  double threshold = 0.15;  // silhouette: |cos| below; border: distance to a face below
+  Vec3 color{0.05, 0.05, 0.05};
+};
+
+struct Reflection {
+  bool enabled = true;
+  double primaryWeight = 0.7;  // color = primary*w + reflected*(1-w)
+};
+
+struct RenderSettings {
+  Camera camera;
+  Lights lights;
+  Materials materials;
+  Tracing tracing;
+  Highlight silhouette{true, 0.15, {0.05, 0.05, 0.05}};
+  Highlight border{true, 0.01, {0.9, 0.9, 0.9}};
+  Reflection reflection;
+  double opacity = 1.0;  // < 1 blends the kept hits front to back
+  int samples = 1;       // N x N supersampling
+  Vec3 background{1, 1, 1};
+};
+
+}  // namespace zs
