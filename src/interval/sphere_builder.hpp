@@ -1,0 +1,18 @@
+#pragma once
+// The sphere hierarchy builder: takes an octree's leaves (pre-order, with their cells),
+// puts out the SphereHierarchy of hierarchy.hpp. Inner nodes exist only on the way to a
+// kept leaf (subtrees with nothing kept are pruned), an inner node's box is the tight
+// union of its children's boxes, and an inner node with a single child is dropped (its
+// child has the same box), which shortens the GPU walk. docs/hierarchy.md has the layout.
+#include "interval/hierarchy.hpp"
+#include "interval/octree.hpp"
+
+namespace zs {
+
+SphereHierarchy buildSphereHierarchy(const Octree& tree);
+
+// The sphere around a box: its center, radius = half the diagonal (the smallest sphere
+// that holds the box; the thesis' eq. 4.2 writes the full diagonal, twice as large).
+SphereNode sphereAround(const Box& box);
+
+}  // namespace zs
