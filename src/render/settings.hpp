@@ -17,40 +17,54 @@ struct Camera {
   Projection projection = Projection::Perspective;
   double fovY = 40.0;   // degrees, perspective
   double height = 3.0;  // world units covered vertically, orthographic
+
+  bool operator==(const Camera&) const = default;
 };
 
 struct Domain {
   Vec3 min{-1.5, -1.5, -1.5};
   Vec3 max{1.5, 1.5, 1.5};
+
+  bool operator==(const Domain&) const = default;
 };
 
 struct DirectionalLight {
   Vec3 direction{-0.4, -0.6, -1.0};  // direction the light travels
   double intensity = 0.8;
   Vec3 color{1, 1, 1};
+
+  bool operator==(const DirectionalLight&) const = default;
 };
 
 struct PointLight {
   Vec3 position{3, 3, 4};
   double intensity = 0.6;
   Vec3 color{1, 1, 1};
+
+  bool operator==(const PointLight&) const = default;
 };
 
 struct Lights {
   double ambient = 0.15;
   DirectionalLight directional;
   PointLight point;
+
+  bool operator==(const Lights&) const = default;
 };
 
 struct Material {
   Vec3 color{0.85, 0.55, 0.2};
   double specular = 0.5;
   double shininess = 40.0;
+
+  bool operator==(const Material&) const = default;
 };
 
 struct Materials {
   Material front{};
   Material back{{0.25, 0.55, 0.85}, 0.5, 40.0};
+
+  bool operator==(const Materials&) const = default;
 };
 
 struct Tracing {
@@ -58,17 +72,23 @@ struct Tracing {
   double epsilon = 0.001;   // bisection stops when the bracket or |F| is below this
   int maxBisections = 40;   // safety bound on bisection steps
   int hits = 4;             // n nearest hits kept per ray
+
+  bool operator==(const Tracing&) const = default;
 };
 
 struct Highlight {
   bool enabled = true;
   double threshold = 0.15;  // silhouette: |cos| below; border: distance to a face below
   Vec3 color{0.05, 0.05, 0.05};
+
+  bool operator==(const Highlight&) const = default;
 };
 
 struct Reflection {
   bool enabled = true;
   double primaryWeight = 0.7;  // color = primary*w + reflected*(1-w)
+
+  bool operator==(const Reflection&) const = default;
 };
 
 struct RenderSettings {
@@ -82,6 +102,8 @@ struct RenderSettings {
   double opacity = 1.0;  // < 1 blends the kept hits front to back
   int samples = 1;       // N x N supersampling
   Vec3 background{1, 1, 1};
+
+  bool operator==(const RenderSettings&) const = default;
 };
 
 }  // namespace zs

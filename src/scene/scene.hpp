@@ -17,6 +17,8 @@ struct Scene {
   RenderSettings render;
   int width = 800;
   int height = 600;
+
+  bool operator==(const Scene&) const = default;
 };
 
 }  // namespace zs

@@ -1,0 +1,185 @@
+#include "scene/reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "parser/parser.hpp"
+#include "scene/hints.hpp"
+#include "scene/string_map.hpp"
+#include "scene/values.hpp"
+
+namespace zs::scene_detail {
+
+namespace {
+
+using Entry = std::pair<const toml::key*, const toml::node*>;
+
+// toml++ keeps a table's keys sorted by name; a person reads the file top to bottom, and
+// [params] must keep the file's order.
+std::vector<Entry> inFileOrder(const toml::table& table) {
+  std::vector<Entry> entries;
+  for (const auto& [key, node] : table) entries.emplace_back(&key, &node);
+  std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    const Position pa = positionOf(*a.first), pb = positionOf(*b.first);
+    return std::pair(pa.line, pa.column) < std::pair(pb.line, pb.column);
+  });
+  return entries;
+}
+
+// A parameter name is whatever the formula language reads as a parameter: asking the parser
+// keeps the two in agreement (x, y, z, constants and function names are refused).
+bool isParamName(std::string_view name) {
+  const ParseResult parsed = parseFormula(name);
+  const Formula* f = std::get_if<Formula>(&parsed);
+  return f && f->root != kNoNode && f->graph[f->root].op == Op::Param &&
+         f->graph.params().size() == 1 && f->graph.params()[0] == name;
+}
+
+class Reader {
+ public:
+  Reader(Scene& scene, const SourceText& src) : scene_(scene), src_(src) {}
+
+  std::optional<SceneError> table(const toml::table& table, const std::string& prefix) {
+    for (const auto& [key, node] : inFileOrder(table)) {
+      const std::string name = prefix.empty() ? std::string(key->str())
+                                              : prefix + "." + std::string(key->str());
+      if (auto err = entry(name, *key, *node)) return err;
+    }
+    return std::nullopt;
+  }
+
+  std::optional<SceneError> crossChecks() const;
+
+ private:
+  std::optional<SceneError> entry(const std::string& name, const toml::key& key,
+                                  const toml::node& node) {
+    seen_.emplace_back(name, positionOf(node));
+    if (name == kFormulaKey) return formula(node);
+    if (name == kParamsKey) return params(node);
+    if (const KeySpec* spec = findKey(name)) return readLeaf(scene_, *spec, node, src_);
+    if (isTableName(name)) {
+      if (const toml::table* t = node.as_table()) return table(*t, name);
+      return src_.error(positionOf(node), name, name + " must be a table, got " + typeName(node),
+                        "write [" + name + "] on its own line, followed by its keys");
+    }
+    return src_.error(positionOf(key), name, "unknown key \"" + name + "\"",
+                      unknownKeyHint(name));
+  }
+
+  std::optional<SceneError> formula(const toml::node& node) {
+    const std::string key(kFormulaKey);
+    if (!node.is_string()) {
+      return src_.error(positionOf(node), key, "formula must be a string, got " + typeName(node),
+                        "put the formula in double quotes: formula = \"x^2 + y^2 + z^2 - 1\"");
+    }
+    std::string text = *node.value<std::string>();
+    const auto offsets = stringSourceMap(src_.text(), src_.offsetOf(positionOf(node)), text);
+    if (auto err = checkFormula(text, src_, offsets)) return err;
+    scene_.formula = std::move(text);
+    return std::nullopt;
+  }
+
+  std::optional<SceneError> params(const toml::node& node) {
+    const toml::table* table = node.as_table();
+    if (!table) {
+      return src_.error(positionOf(node), "params", "params must be a table, got " + typeName(node),
+                        "write [params] on its own line, then one name = value per parameter");
+    }
+    for (const auto& [key, value] : inFileOrder(*table)) {
+      const std::string name(key->str());
+      const std::string dotted = "params." + name;
+      seen_.emplace_back(dotted, positionOf(*value));
+      if (!isParamName(name)) {
+        return src_.error(positionOf(*key), dotted, "\"" + name + "\" is not a parameter name",
+                          "a parameter is a letter or '_' followed by letters, digits or '_', "
+                          "other than x, y, z and the names of functions and constants");
+      }
+      double v = 0;
+      const Range any{-INFINITY, INFINITY};
+      if (auto err = readNumber(*value, dotted, any, src_, v)) return err;
+      auto it = std::find_if(scene_.params.begin(), scene_.params.end(),
+                             [&](const auto& p) { return p.first == name; });
+      if (it != scene_.params.end()) it->second = v;
+      else scene_.params.emplace_back(name, v);
+    }
+    return std::nullopt;
+  }
+
+  // The latest-written of `keys`, so an error about two keys points at the one that made
+  // the pair inconsistent; position 0 when this document set none of them.
+  std::pair<std::string, Position> locate(std::initializer_list<std::string_view> keys) const {
+    for (auto it = seen_.rbegin(); it != seen_.rend(); ++it) {
+      if (std::find(keys.begin(), keys.end(), it->first) != keys.end()) return *it;
+    }
+    return {std::string(*keys.begin()), Position{}};
+  }
+
+  SceneError errorAt(std::initializer_list<std::string_view> keys, std::string message,
+                     std::string hint) const {
+    auto [key, pos] = locate(keys);
+    return src_.error(pos, key, std::move(message), std::move(hint));
+  }
+
+  Scene& scene_;
+  const SourceText& src_;
+  std::vector<std::pair<std::string, Position>> seen_;  // keys in the order they were read
+};
+
+std::optional<SceneError> Reader::crossChecks() const {
+  static constexpr const char* kAxis[] = {"x", "y", "z"};
+  const Domain& d = scene_.domain;
+  for (int i = 0; i < 3; ++i) {
+    if (!(d.min[i] < d.max[i])) {
+      return errorAt({"domain.min", "domain.max"},
+                     std::string("domain.min.") + kAxis[i] + " (" + formatDouble(d.min[i]) +
+                         ") must be less than domain.max." + kAxis[i] + " (" +
+                         formatDouble(d.max[i]) + ")",
+                     "the domain is the box from min to max; each component of min must be "
+                     "below the same component of max");
+    }
+  }
+  const Camera& c = scene_.render.camera;
+  const Vec3 f{c.target[0] - c.eye[0], c.target[1] - c.eye[1], c.target[2] - c.eye[2]};
+  if (f[0] == 0 && f[1] == 0 && f[2] == 0) {
+    return errorAt({"camera.eye", "camera.target"}, "camera.eye and camera.target are the same point",
+                   "the camera looks from eye towards target; move one of them");
+  }
+  const Vec3& u = c.up;
+  const Vec3 cross{f[1] * u[2] - f[2] * u[1], f[2] * u[0] - f[0] * u[2], f[0] * u[1] - f[1] * u[0]};
+  const double norm = std::hypot(cross[0], cross[1], cross[2]);
+  // Relative test: an up vector along the view direction leaves the camera's right axis
+  // undefined (right = normalize(forward x up)).
+  if (norm <= 1e-9 * std::hypot(f[0], f[1], f[2]) * std::hypot(u[0], u[1], u[2])) {
+    return errorAt({"camera.up", "camera.eye", "camera.target"},
+                   "camera.up is parallel to the view direction (target - eye)",
+                   "choose an up vector that is not along the line from eye to target");
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<SceneError> checkFormula(std::string_view formula, const SourceText& src,
+                                       const std::vector<std::size_t>& byteOffsets) {
+  const ParseResult parsed = parseFormula(formula);
+  const ParseError* err = std::get_if<ParseError>(&parsed);
+  if (!err) return std::nullopt;
+  const std::size_t last = byteOffsets.size() - 1;
+  const std::size_t begin = byteOffsets[std::min(err->span.begin, last)];
+  const std::size_t end = std::max(begin, byteOffsets[std::min(err->span.end, last)]);
+  const std::string_view covered = src.text().substr(begin, end - begin);
+  const int width = covered.find('\n') == std::string_view::npos ? codePoints(covered) : 1;
+  return src.error(src.positionOf(begin), "formula", "formula: " + err->message, err->hint, width);
+}
+
+std::optional<SceneError> applyDocument(Scene& scene, const toml::table& doc,
+                                         const SourceText& src) {
+  Reader reader(scene, src);
+  if (auto err = reader.table(doc, "")) return err;
+  return reader.crossChecks();
+}
+
+}  // namespace zs::scene_detail

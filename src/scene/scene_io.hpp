@@ -1,0 +1,67 @@
+#pragma once
+// Scene files: takes the text of a .surf file (TOML), a path, a `--set KEY=VALUE` assignment
+// or a bare formula, and puts out a validated Scene, or a SceneError that names the file,
+// line, column and key, with a hint and the offending source line for a caret. Nothing here
+// throws. saveScene writes the opposite way: every key, so that parseScene(saveScene(s))
+// gives back s exactly. The format and every key are documented in docs/surf-format.md.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "expr/graph.hpp"
+#include "scene/scene.hpp"
+
+namespace zs {
+
+struct SceneError {
+  std::string file;     // the scene's file name, "--set" or "<formula>"
+  int line = 0;         // 1-based; 0 when the error has no place in a text (unreadable file)
+  int column = 0;       // 1-based, counted in code points like toml++ does
+  std::string key;      // dotted key ("camera.fov_y"); empty for TOML syntax errors
+  std::string message;
+  std::string hint;        // may be empty
+  std::string sourceLine;  // the line holding the error, for the caret; may be empty
+  int width = 1;           // code points the caret underlines
+
+  bool operator==(const SceneError&) const = default;
+};
+
+using SceneResult = std::variant<Scene, SceneError>;
+
+// Parses and validates a whole .surf text; `fileName` is only used in errors.
+SceneResult parseScene(std::string_view text, std::string_view fileName);
+
+// Reads the file and parses it; a missing or unreadable file is a SceneError with line 0.
+SceneResult loadScene(const std::filesystem::path& path);
+
+// A scene file when `arg` names an existing file or ends in ".surf"; otherwise `arg` is a
+// formula, and the scene holds it with every other setting at its default.
+SceneResult loadSceneOrFormula(std::string_view arg);
+
+// Applies one command-line assignment such as `camera.eye=[0,0,3]` or `formula="x^2-y"`:
+// KEY is a dotted scene key, VALUE a TOML value (an inline table also works for a table
+// key). Same validation and hints as a file; errors name the file "--set". On error the
+// scene is left unchanged.
+std::optional<SceneError> applyOverride(Scene& scene, std::string_view assignment);
+
+// A complete .surf text holding every key of `scene`, doubles in shortest round-trip form.
+std::string saveScene(const Scene& scene);
+
+//   scene.surf:3:14: error: message
+//     formula = "x^^2"
+//                  ^
+//     hint: ...
+std::string formatSceneError(const SceneError& error);
+
+// The values of the formula's parameters in graph.params() order: the scene's value where
+// it has one, kDefaultParamValue otherwise.
+std::vector<double> paramValues(const Scene& scene, const Graph& graph);
+
+// Every dotted leaf key a scene file may hold (params.NAME excluded), in file order: for
+// completion in the prompt and for checking the documentation.
+std::vector<std::string> sceneKeys();
+
+}  // namespace zs

@@ -1,0 +1,99 @@
+#include "scene/schema.hpp"
+
+#include <algorithm>
+#include <array>
+#include <limits>
+
+namespace zs::scene_detail {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+constexpr Range kAny{-kInf, kInf};
+constexpr Range kNonNegative{0, kInf};
+constexpr Range kPositive{0, kInf, true};
+constexpr Range kUnit{0, 1};
+
+constexpr std::array<std::string_view, 2> kProjections{"perspective", "orthographic"};
+constexpr std::array<std::string_view, 2> kCriteria{"thesis", "uniform"};
+
+// A reference to one Scene member, as a plain function pointer the schema can hold.
+#define ZS_FIELD(member) +[](Scene& s) -> decltype(auto) { return (s.member); }
+
+const EnumRef kProjectionRef{
+    [](const Scene& s) { return static_cast<int>(s.render.camera.projection); },
+    [](Scene& s, int v) { s.render.camera.projection = static_cast<Projection>(v); },
+    kProjections};
+const EnumRef kCriteriaRef{
+    [](const Scene& s) { return static_cast<int>(s.octree.criteria); },
+    [](Scene& s, int v) { s.octree.criteria = static_cast<Criteria>(v); }, kCriteria};
+
+// File order: top-level keys first (TOML puts them before any [table]), then each table's
+// keys together, so the writer can emit a header whenever the prefix changes.
+const KeySpec kKeys[] = {
+    {"opacity", ZS_FIELD(render.opacity), {0, 1, true}},
+    {"samples", ZS_FIELD(render.samples), {1, 8}},
+    {"background", ZS_FIELD(render.background), kUnit},
+    {"image.width", ZS_FIELD(width), {1, 16384}},
+    {"image.height", ZS_FIELD(height), {1, 16384}},
+    {"domain.min", ZS_FIELD(domain.min), kAny},
+    {"domain.max", ZS_FIELD(domain.max), kAny},
+    {"camera.eye", ZS_FIELD(render.camera.eye), kAny},
+    {"camera.target", ZS_FIELD(render.camera.target), kAny},
+    {"camera.up", ZS_FIELD(render.camera.up), kAny, true},
+    {"camera.projection", kProjectionRef, kAny},
+    {"camera.fov_y", ZS_FIELD(render.camera.fovY), {0, 180, true, true}},
+    {"camera.height", ZS_FIELD(render.camera.height), kPositive},
+    {"octree.level", ZS_FIELD(octree.level), {0, 12}},
+    {"octree.criteria", kCriteriaRef, kAny},
+    {"octree.node_budget", ZS_FIELD(octree.nodeBudget), {1, 1e9}},
+    {"tracing.intervals", ZS_FIELD(render.tracing.intervals), {1, 1000}},
+    {"tracing.epsilon", ZS_FIELD(render.tracing.epsilon), kPositive},
+    {"tracing.hits", ZS_FIELD(render.tracing.hits), {1, 16}},
+    {"tracing.max_bisections", ZS_FIELD(render.tracing.maxBisections), {1, 200}},
+    {"lights.ambient", ZS_FIELD(render.lights.ambient), kUnit},
+    {"lights.directional.direction", ZS_FIELD(render.lights.directional.direction), kAny, true},
+    {"lights.directional.intensity", ZS_FIELD(render.lights.directional.intensity), kNonNegative},
+    {"lights.directional.color", ZS_FIELD(render.lights.directional.color), kUnit},
+    {"lights.point.position", ZS_FIELD(render.lights.point.position), kAny},
+    {"lights.point.intensity", ZS_FIELD(render.lights.point.intensity), kNonNegative},
+    {"lights.point.color", ZS_FIELD(render.lights.point.color), kUnit},
+    {"materials.front.color", ZS_FIELD(render.materials.front.color), kUnit},
+    {"materials.front.specular", ZS_FIELD(render.materials.front.specular), kUnit},
+    {"materials.front.shininess", ZS_FIELD(render.materials.front.shininess), {0, 10000}},
+    {"materials.back.color", ZS_FIELD(render.materials.back.color), kUnit},
+    {"materials.back.specular", ZS_FIELD(render.materials.back.specular), kUnit},
+    {"materials.back.shininess", ZS_FIELD(render.materials.back.shininess), {0, 10000}},
+    {"highlights.silhouette.enabled", ZS_FIELD(render.silhouette.enabled), kAny},
+    {"highlights.silhouette.threshold", ZS_FIELD(render.silhouette.threshold), kUnit},
+    {"highlights.silhouette.color", ZS_FIELD(render.silhouette.color), kUnit},
+    {"highlights.border.enabled", ZS_FIELD(render.border.enabled), kAny},
+    {"highlights.border.tolerance", ZS_FIELD(render.border.threshold), kNonNegative},
+    {"highlights.border.color", ZS_FIELD(render.border.color), kUnit},
+    {"reflection.enabled", ZS_FIELD(render.reflection.enabled), kAny},
+    {"reflection.primary_weight", ZS_FIELD(render.reflection.primaryWeight), kUnit},
+};
+
+#undef ZS_FIELD
+
+}  // namespace
+
+std::span<const KeySpec> keySpecs() { return kKeys; }
+
+const KeySpec* findKey(std::string_view dottedName) {
+  for (const KeySpec& k : kKeys) {
+    if (k.name == dottedName) return &k;
+  }
+  return nullptr;
+}
+
+bool isTableName(std::string_view dottedName) {
+  if (dottedName == kParamsKey) return true;
+  return std::any_of(std::begin(kKeys), std::end(kKeys), [&](const KeySpec& k) {
+    return k.name.size() > dottedName.size() && k.name.starts_with(dottedName) &&
+           k.name[dottedName.size()] == '.';
+  });
+}
+
+}  // namespace zs::scene_detail

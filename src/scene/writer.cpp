@@ -1,0 +1,108 @@
+// saveScene: every key of the schema, in the schema's order, so that the file documents the
+// whole scene and parseScene(saveScene(s)) == s.
+#include <string>
+#include <type_traits>
+
+#include "scene/scene_io.hpp"
+#include "scene/schema.hpp"
+#include "scene/values.hpp"
+
+namespace zs {
+
+namespace {
+
+using namespace scene_detail;
+
+std::string tomlString(std::string_view s) {
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  std::string out = "\"";
+  for (const char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\b': out += "\\b"; break;
+      case '\t': out += "\\t"; break;
+      case '\n': out += "\\n"; break;
+      case '\f': out += "\\f"; break;
+      case '\r': out += "\\r"; break;
+      default:
+        // TOML forbids raw control characters in basic strings; bytes >= 0x80 are UTF-8.
+        if (u < 0x20 || u == 0x7F) {
+          out += "\\u00";
+          out += kHex[u >> 4];
+          out += kHex[u & 15];
+        } else {
+          out += c;
+        }
+    }
+  }
+  return out + "\"";
+}
+
+bool isBareKey(std::string_view s) {
+  if (s.empty()) return false;
+  for (const char c : s) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                    c == '_' || c == '-';
+    if (!ok) return false;
+  }
+  return true;
+}
+
+std::string vectorText(const Vec3& v) {
+  return "[" + formatDouble(v[0]) + ", " + formatDouble(v[1]) + ", " + formatDouble(v[2]) + "]";
+}
+
+std::string valueText(Scene& scene, const KeySpec& spec) {
+  return std::visit(
+      [&](const auto& ref) -> std::string {
+        using Ref = std::decay_t<decltype(ref)>;
+        if constexpr (std::is_same_v<Ref, BoolRef>) {
+          return ref(scene) ? "true" : "false";
+        } else if constexpr (std::is_same_v<Ref, IntRef> || std::is_same_v<Ref, SizeRef>) {
+          return std::to_string(ref(scene));
+        } else if constexpr (std::is_same_v<Ref, RealRef>) {
+          return formatDouble(ref(scene));
+        } else if constexpr (std::is_same_v<Ref, VecRef>) {
+          return vectorText(ref(scene));
+        } else {
+          static_assert(std::is_same_v<Ref, EnumRef>);
+          return tomlString(ref.names[static_cast<std::size_t>(ref.get(scene))]);
+        }
+      },
+      spec.field);
+}
+
+}  // namespace
+
+std::string saveScene(const Scene& scene) {
+  // The schema hands out mutable references (the reader needs them); a copy keeps `scene`
+  // untouched without casting const away.
+  Scene copy = scene;
+  std::string out = "# zeroset scene: every key is described in docs/surf-format.md\n";
+  out += "formula = " + tomlString(scene.formula) + "\n";
+  bool paramsWritten = false;
+  std::string_view table;
+  for (const KeySpec& spec : keySpecs()) {
+    const auto dot = spec.name.rfind('.');
+    const std::string_view prefix = dot == std::string_view::npos ? "" : spec.name.substr(0, dot);
+    const std::string_view leaf = dot == std::string_view::npos ? spec.name : spec.name.substr(dot + 1);
+    // [params] follows the top-level keys: TOML wants those before the first table.
+    if (!prefix.empty() && !paramsWritten) {
+      out += "\n[params]\n";
+      for (const auto& [name, value] : scene.params) {
+        out += (isBareKey(name) ? name : tomlString(name)) + " = " + formatDouble(value) + "\n";
+      }
+      paramsWritten = true;
+    }
+    if (prefix != table) {
+      out += "\n[" + std::string(prefix) + "]\n";
+      table = prefix;
+    }
+    out += std::string(leaf) + " = " + valueText(copy, spec) + "\n";
+  }
+  return out;
+}
+
+}  // namespace zs
