@@ -27,7 +27,9 @@ struct Node {
   double value = 0.0;      // Const: its value
   std::int32_t ival = 0;   // PowI: the exponent; Param: index into Graph::params()
 
-  bool operator==(const Node&) const = default;
+  // Bitwise on `value`, so -0.0 and 0.0 stay distinct and NaN equals itself: hash-consing
+  // must never merge two constants that print differently.
+  bool operator==(const Node& o) const;
 };
 
 // Largest |n| accepted in x^n; larger exponents are written with pow().

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs every Debian package zeroset needs to build, run and test. Idempotent: when all
+# packages are present it only checks and returns (well under a second).
+#   scripts/install-deps.sh          build + run + test dependencies
+#   scripts/install-deps.sh --fuzz   also clang and its libFuzzer runtime
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config python3
+  # GL: every Mesa package in ONE line, or apt upgrades part of Mesa and leaves the rest
+  # at an older point release (docs/toolchain notes).
+  libegl-dev libopengl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
+  libglfw3-dev libglm-dev glslang-dev glslang-tools python3-glad
+  libpng-dev libimgui-dev libcli11-dev libtomlplusplus-dev libedit-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libmpfi-dev libmpfr-dev libgmp-dev
+  xvfb xauth xdotool
+)
+if [[ "${1:-}" == "--fuzz" ]]; then packages+=(clang libclang-rt-14-dev); fi
+
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$p")
+done
+[[ ${#missing[@]} -eq 0 ]] && exit 0
+
+echo "zeroset: installing ${#missing[@]} Debian packages: ${missing[*]}"
+sudo=""
+if [[ $(id -u) -ne 0 ]]; then sudo="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${packages[@]}"

@@ -1,0 +1,22 @@
+// zeroset: implicit surfaces F(x, y, z) = 0, ray-traced. Each subcommand lives in its own
+// cmd_*.cpp; this file only assembles them.
+#include <CLI/CLI.hpp>
+
+#include "app/commands.hpp"
+
+#ifndef ZS_VERSION
+#define ZS_VERSION "unknown"
+#endif
+
+int main(int argc, char** argv) {
+  CLI::App app{"zeroset - see implicit surfaces F(x,y,z) = 0"};
+  app.set_version_flag("--version", std::string("zeroset ") + ZS_VERSION);
+  app.require_subcommand(1);
+  zs::app::addCheckCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  return 0;
+}

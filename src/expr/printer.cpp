@@ -1,0 +1,84 @@
+#include "expr/printer.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <vector>
+
+namespace zs {
+
+namespace {
+
+// Binding strength of what a node prints as; a child printed into a slot that needs more
+// gets parentheses. Matches the parser: sum < product < unary minus < power < atom.
+enum Prec { kSum = 1, kProduct = 2, kUnary = 3, kPower = 4, kAtom = 5 };
+
+struct Printed {
+  std::string text;
+  int prec = kAtom;
+};
+
+std::string number(double v) {
+  char buf[64];
+  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);  // shortest exact round trip
+  return ec == std::errc() ? std::string(buf, end) : std::string("nan");
+}
+
+}  // namespace
+
+std::optional<std::string> print(const Graph& g, NodeId root, std::size_t maxChars) {
+  const std::vector<NodeId> order = reachable(g, {root});
+  std::vector<Printed> out(g.size());
+  auto slot = [&](NodeId child, int need) {
+    const Printed& p = out[static_cast<std::size_t>(child)];
+    return p.prec >= need ? p.text : "(" + p.text + ")";
+  };
+  for (NodeId id : order) {
+    const Node& n = g[id];
+    const OpInfo& info = opInfo(n.op);
+    Printed p;
+    switch (info.kind) {
+      case OpKind::Leaf:
+        if (n.op == Op::Const) {
+          p.text = number(n.value);
+          if (n.value < 0 || (n.value == 0 && std::signbit(n.value))) p.prec = kUnary;
+        } else if (n.op == Op::Param) {
+          p.text = g.params()[static_cast<std::size_t>(n.ival)];
+        } else {
+          p.text = std::string(info.spelling);
+        }
+        break;
+      case OpKind::Prefix:
+        p.text = "-" + slot(n.a, kUnary);
+        p.prec = kUnary;
+        break;
+      case OpKind::Infix:
+        if (n.op == Op::PowI) {
+          p.text = slot(n.a, kAtom) + "^" + std::to_string(n.ival);
+          p.prec = kPower;
+        } else {
+          const int prec = (n.op == Op::Add || n.op == Op::Sub) ? kSum : kProduct;
+          // Left-associative: the right operand needs strictly more binding strength.
+          p.text = slot(n.a, prec) + (prec == kSum ? " " : "") + std::string(info.spelling) +
+                   (prec == kSum ? " " : "") + slot(n.b, prec + 1);
+          p.prec = prec;
+        }
+        break;
+      case OpKind::Call:
+        if (n.op == Op::Pow) {
+          p.text = slot(n.a, kAtom) + "^" + slot(n.b, kUnary);
+          p.prec = kPower;
+        } else if (info.arity == 1) {
+          p.text = std::string(info.spelling) + "(" + out[static_cast<std::size_t>(n.a)].text + ")";
+        } else {
+          p.text = std::string(info.spelling) + "(" + out[static_cast<std::size_t>(n.a)].text +
+                   ", " + out[static_cast<std::size_t>(n.b)].text + ")";
+        }
+        break;
+    }
+    if (p.text.size() > maxChars) return std::nullopt;
+    out[static_cast<std::size_t>(id)] = std::move(p);
+  }
+  return out[static_cast<std::size_t>(root)].text;
+}
+
+}  // namespace zs

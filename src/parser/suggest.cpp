@@ -1,0 +1,96 @@
+#include "parser/suggest.hpp"
+
+#include <algorithm>
+
+#include "expr/opcode.hpp"
+
+namespace zs {
+
+std::size_t editDistance(std::string_view a, std::string_view b) {
+  // Optimal string alignment distance; rows are kept whole because names are short.
+  const std::size_t n = a.size(), m = b.size();
+  std::vector<std::vector<std::size_t>> d(n + 1, std::vector<std::size_t>(m + 1));
+  for (std::size_t i = 0; i <= n; ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= m; ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= n; ++i) {
+    for (std::size_t j = 1; j <= m; ++j) {
+      const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+      }
+    }
+  }
+  return d[n][m];
+}
+
+std::optional<std::string> closestName(std::string_view word,
+                                       const std::vector<std::string_view>& candidates,
+                                       std::size_t maxDistance) {
+  std::optional<std::string> best;
+  std::size_t bestDistance = maxDistance + 1;
+  for (std::string_view c : candidates) {
+    const std::size_t dist = editDistance(word, c);
+    if (dist < bestDistance) {
+      bestDistance = dist;
+      best = std::string(c);
+    }
+  }
+  return best;
+}
+
+namespace {
+
+bool onlyCoordinates(std::string_view s) {
+  return std::all_of(s.begin(), s.end(), [](char c) { return c == 'x' || c == 'y' || c == 'z'; });
+}
+
+std::string spelledProduct(std::string_view letters) {
+  std::string out;
+  for (char c : letters) {
+    if (!out.empty()) out += '*';
+    out += c;
+  }
+  return out;
+}
+
+std::vector<std::string_view> functionNames() {
+  std::vector<std::string_view> names;
+  for (const OpInfo& info : kOpTable) {
+    if (info.kind == OpKind::Call) names.push_back(info.spelling);
+  }
+  return names;
+}
+
+}  // namespace
+
+std::optional<NameProblem> diagnoseName(std::string_view name, bool call) {
+  if (name.size() > 1 && onlyCoordinates(name)) {
+    return NameProblem{"'" + std::string(name) + "' is not a name",
+                       "write " + spelledProduct(name) + " for a product of coordinates"};
+  }
+  if (name.size() > 1 && onlyCoordinates(name.substr(0, 1)) &&
+      std::all_of(name.begin() + 1, name.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+    const std::string v(name.substr(0, 1)), n(name.substr(1));
+    return NameProblem{"'" + std::string(name) + "' is not a name",
+                       "write " + v + "^" + n + " for a power or " + v + "*" + n + " for a product"};
+  }
+  for (std::string_view fn : functionNames()) {
+    if (name.size() > fn.size() && name.substr(0, fn.size()) == fn &&
+        onlyCoordinates(name.substr(fn.size()))) {
+      const std::string arg = spelledProduct(name.substr(fn.size()));
+      return NameProblem{"'" + std::string(name) + "' is not a name",
+                         "write " + std::string(fn) + "(" + arg + ")"};
+    }
+  }
+  if (call && name.size() >= 2) {
+    if (auto best = closestName(name, functionNames())) {
+      return NameProblem{"unknown function '" + std::string(name) + "' \u2014 did you mean " + *best +
+                             "?",
+                         "the functions are listed in docs/formula.md"};
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace zs
