@@ -1,0 +1,36 @@
+#pragma once
+// GLSL for a formula: takes an expression graph with the root of F and the roots of its
+// gradient (expr/derivative.hpp), puts out the "formula block" that is spliced between the
+// prelude and the ray tracer of the fragment shader (codegen/shader_assembly.hpp):
+//
+//   uniform float zs_params[K];      // only when the graph has K > 0 parameters
+//   float zs_F(vec3 p)     { ... }   // F only: the nodes F needs
+//   vec4  zs_FGrad(vec3 p) { ... }   // xyz = gradient, w = F, sharing every temporary
+//
+// Every non-leaf node becomes one temporary `float tN = <op>(operands);` whose operands are
+// other temporaries, p.x/p.y/p.z, zs_params[i] or float literals, so expressions never nest
+// and deep formulas cannot exhaust a GLSL compiler's parser. Integer powers are chains of
+// multiplications (repeated squaring, squares shared between powers of the same base).
+// Points outside F's domain set a flag and make zs_F return zs_UNDEFINED; docs/codegen.md
+// has the full contract. Every identifier is generated here, none comes from the formula.
+#include <array>
+#include <cstddef>
+#include <string>
+
+#include "expr/graph.hpp"
+
+namespace zs {
+
+struct GlslFormula {
+  std::string source;           // the formula block, ending with a newline
+  std::size_t paramCount = 0;   // K: length of zs_params (== graph.params().size())
+  std::size_t temporaries = 0;  // float temporaries declared in zs_FGrad (the larger body)
+};
+
+// f and grad must be nodes of g (grad as returned by gradient(g, f)).
+GlslFormula emitFormulaGlsl(const Graph& g, NodeId f, const std::array<NodeId, 3>& grad);
+
+// Adds the gradient of formula.root to formula.graph, then emits.
+GlslFormula emitFormulaGlsl(Formula& formula);
+
+}  // namespace zs

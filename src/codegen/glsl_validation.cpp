@@ -1,0 +1,125 @@
+#include "codegen/glsl_validation.hpp"
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+
+#include <cstdlib>
+#include <mutex>
+#include <string>
+
+namespace zs {
+namespace {
+
+void initializeGlslangOnce() {
+  static std::once_flag once;
+  // Never finalized: glslang's process state lives as long as the program.
+  std::call_once(once, [] { glslang::InitializeProcess(); });
+}
+
+EShLanguage toGlslang(Stage stage) {
+  switch (stage) {
+    case Stage::Vertex: return EShLangVertex;
+    case Stage::Fragment: return EShLangFragment;
+  }
+  return EShLangFragment;
+}
+
+// Parses "#line L" or "#line L S" (after optional blanks); false for anything else.
+bool parseLineDirective(std::string_view line, long& number, long& string) {
+  std::size_t i = line.find_first_not_of(" \t");
+  if (i == std::string_view::npos || line[i] != '#') return false;
+  i = line.find_first_not_of(" \t", i + 1);
+  if (i == std::string_view::npos || line.substr(i, 4) != "line") return false;
+  const std::string rest(line.substr(i + 4));
+  char* end = nullptr;
+  const long l = std::strtol(rest.c_str(), &end, 10);
+  if (end == rest.c_str()) return false;
+  char* end2 = nullptr;
+  const long s = std::strtol(end, &end2, 10);
+  number = l;
+  if (end2 != end) string = s;
+  return true;
+}
+
+}  // namespace
+
+std::string numberSourceLines(std::string_view source) {
+  std::string out;
+  long line = 1, string = 0;
+  std::size_t pos = 0;
+  while (pos < source.size()) {
+    std::size_t end = source.find('\n', pos);
+    if (end == std::string_view::npos) end = source.size();
+    const std::string_view text = source.substr(pos, end - pos);
+    out += std::to_string(string) + ":" + std::to_string(line) + " | ";
+    out.append(text);
+    out += '\n';
+    long newLine = 0, newString = string;
+    if (parseLineDirective(text, newLine, newString)) {
+      line = newLine;
+      string = newString;
+    } else {
+      ++line;
+    }
+    pos = end + 1;
+  }
+  return out;
+}
+
+ValidationResult validateGlsl(std::string_view source, Stage stage) {
+  initializeGlslangOnce();
+  ValidationResult result;
+  result.numberedSource = numberSourceLines(source);
+
+  // No setEnv* calls: with an OpenGL client glslang applies SPIR-V-for-GL rules and rejects
+  // valid desktop GLSL (docs/toolchain.md). Cascading errors: report all of them.
+  const EShLanguage language = toGlslang(stage);
+  glslang::TShader shader(language);
+  const char* text = source.data();
+  const int length = static_cast<int>(source.size());
+  const char* name = stage == Stage::Vertex ? "vertex" : "fragment";
+  shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
+  const auto messages = static_cast<EShMessages>(EShMsgDefault | EShMsgCascadingErrors);
+  const bool compiled = shader.parse(GetDefaultResources(), 330, false, messages);
+  result.log = shader.getInfoLog();
+  if (!compiled) return result;
+
+  // A single-stage link catches what compilation alone does not, e.g. a prototype whose
+  // body never got spliced in, or a missing main().
+  glslang::TProgram program;
+  program.addShader(&shader);
+  const bool linked = program.link(messages);
+  result.log += program.getInfoLog();
+  result.ok = linked;
+  return result;
+}
+
+std::string formatInternalShaderError(std::string_view what, const ValidationResult& result) {
+  std::string s = "internal error in zeroset: the generated ";
+  s.append(what);
+  s += " was rejected by glslang.\n"
+       "This is a bug in zeroset's shader code generator, not a problem with your input; "
+       "please report it with the text below.\n--- glslang log ---\n";
+  s += result.log;
+  if (!s.empty() && s.back() != '\n') s += '\n';
+  s += "--- shader source (string:line as in the log) ---\n";
+  s += result.numberedSource;
+  return s;
+}
+
+std::string formatDriverShaderError(std::string_view what, Stage stage,
+                                    std::string_view driverLog, std::string_view source) {
+  const ValidationResult glslang = validateGlsl(source, stage);
+  std::string s = "internal error in zeroset: the GL driver rejected the ";
+  s.append(what);
+  s += glslang.ok ? ", which glslang accepted.\n" : ", which glslang rejects too.\n";
+  s += "--- driver log ---\n";
+  s.append(driverLog);
+  if (!s.empty() && s.back() != '\n') s += '\n';
+  s += "--- glslang log ---\n" + glslang.log;
+  if (s.back() != '\n') s += '\n';
+  s += "--- shader source (string:line as in the logs) ---\n" + glslang.numberedSource;
+  return s;
+}
+
+}  // namespace zs

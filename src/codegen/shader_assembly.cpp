@@ -1,0 +1,67 @@
+#include "codegen/shader_assembly.hpp"
+
+#include <stdexcept>
+
+#include "codegen/embedded_templates.hpp"
+
+namespace zs {
+namespace {
+
+// Appends one piece, preceded by a comment naming where it comes from and a #line that
+// restarts the numbering at line 1 of source string `string`. GLSL 3.30 reads
+// "#line L S" as "the next line is line L of string S" (older versions used L + 1).
+void appendPiece(std::string& out, std::string_view origin, int string, std::string_view text) {
+  if (!out.empty() && out.back() != '\n') out += '\n';
+  out += "// ---- zeroset: ";
+  out.append(origin);
+  out += " ----\n#line 1 " + std::to_string(string) + "\n";
+  out.append(text);
+  if (out.back() != '\n') out += '\n';
+}
+
+// True when `name` occurs in `text` as a whole identifier (zs_F must not match zs_FGrad).
+bool mentionsIdentifier(std::string_view text, std::string_view name) {
+  auto isIdent = [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+           c == '_';
+  };
+  for (std::size_t pos = text.find(name); pos != std::string_view::npos;
+       pos = text.find(name, pos + 1)) {
+    const bool startOk = pos == 0 || !isIdent(text[pos - 1]);
+    const std::size_t end = pos + name.size();
+    const bool endOk = end == text.size() || !isIdent(text[end]);
+    if (startOk && endOk) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::string_view shaderTemplate(std::string_view fileName) {
+  std::string known;
+  for (const EmbeddedTemplate& t : embeddedTemplates()) {
+    if (t.fileName == fileName) return t.text;
+    known += known.empty() ? "" : ", ";
+    known.append(t.fileName);
+  }
+  throw std::logic_error("internal error in zeroset: no shader template named '" +
+                         std::string(fileName) + "' was embedded (embedded: " + known + ")");
+}
+
+std::string assembleFragmentShader(const GlslFormula& formula) {
+  const std::string_view prelude = shaderTemplate(kPreludeTemplate);
+  const std::string_view raytrace = shaderTemplate(kRaytraceTemplate);
+  if (!mentionsIdentifier(raytrace, "zs_F") && !mentionsIdentifier(raytrace, "zs_FGrad")) {
+    throw std::logic_error(
+        "internal error in zeroset: shaders/templates/raytrace_main.frag.glsl calls neither "
+        "zs_F nor zs_FGrad, so the generated formula would be unused");
+  }
+  std::string out(prelude);  // starts with #version, which must come first
+  appendPiece(out, "generated formula block (src/codegen/emit_glsl.cpp)", 1, formula.source);
+  appendPiece(out, "shaders/templates/raytrace_main.frag.glsl", 2, raytrace);
+  return out;
+}
+
+std::string_view vertexShaderSource() { return shaderTemplate(kVertexTemplate); }
+
+}  // namespace zs
