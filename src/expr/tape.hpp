@@ -4,6 +4,7 @@
 // operands always refer to earlier slots. Point and interval evaluators both run it.
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "expr/graph.hpp"
@@ -29,17 +30,17 @@ Tape compileTape(const Graph& g, const std::vector<NodeId>& roots);
 // Double-precision scalar semantics of one operation (NaN outside the domain).
 double applyScalar(Op op, double a, double b, std::int32_t ival, double value);
 
-// Evaluates a tape at a point. Reuses its scratch buffer between calls; not thread-safe,
-// make one per thread.
+// Evaluates a tape at a point. Owns a copy of the tape and reuses its scratch buffer between
+// calls; not thread-safe, make one per thread.
 class PointEvaluator {
  public:
-  explicit PointEvaluator(const Tape& tape) : tape_(tape), slots_(tape.code.size()) {}
+  explicit PointEvaluator(Tape tape) : tape_(std::move(tape)), slots_(tape_.code.size()) {}
   // Fills `out` (one value per tape output). params: one value per graph parameter.
   void eval(double x, double y, double z, std::span<const double> params, std::span<double> out);
   double eval1(double x, double y, double z, std::span<const double> params = {});
 
  private:
-  const Tape& tape_;
+  Tape tape_;
   std::vector<double> slots_;
 };
 
