@@ -94,7 +94,8 @@ std::string choiceHint(std::string_view word, std::span<const std::string_view> 
   int bestDistance = 1 << 30;
   for (std::string_view c : choices) {
     all.emplace_back("\"" + std::string(c) + "\"");
-    const int d = editDistance(word, c);
+    // An abbreviation ("persp", "ortho") is as clear a slip as a typo.
+    const int d = !word.empty() && c.starts_with(word) ? 0 : editDistance(word, c);
     if (d < bestDistance) {
       bestDistance = d;
       best = c;

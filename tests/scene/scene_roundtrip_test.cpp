@@ -1,0 +1,148 @@
+// saveScene -> parseScene gives back the same Scene, for every key of the schema.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <type_traits>
+
+#include "parser/parser.hpp"
+#include "scene/scene_io.hpp"
+#include "scene/schema.hpp"
+
+namespace zs {
+namespace {
+
+// A scene in which every key differs from its default, with doubles chosen to break any
+// printing that is not round-trip exact.
+Scene everyKeyChanged() {
+  Scene s;
+  s.formula = "a*x^2 + b*y^2 +\tz^2 - 1";
+  s.params = {{"b", 1.0 / 3.0}, {"a", 0.1 + 0.2}, {"unused", -7.25}};
+  s.domain = {{-2.5, -1e-300, -3}, {2.5, 5e-324, 1.7976931348623157e308}};
+  s.octree = {7, Criteria::Uniform, 123'456};
+  RenderSettings& r = s.render;
+  r.camera = {{0.1, 4.4, -9e10}, {1, 2, 3}, {0.3, 1, 0}, Projection::Orthographic, 33.3, 2.2};
+  r.lights.ambient = 0.05;
+  r.lights.directional = {{1, -1, 0.5}, 1.25, {0.9, 0.8, 0.7}};
+  r.lights.point = {{-3, 2, 1e-5}, 0.45, {0.1, 0.2, 0.3}};
+  r.materials.front = {{0.2, 0.3, 0.4}, 0.11, 12.5};
+  r.materials.back = {{0.6, 0.7, 0.8}, 0.22, 99};
+  r.tracing = {17, 1e-7 / 3, 77, 9};
+  r.silhouette = {false, 0.33, {0.5, 0.25, 0.125}};
+  r.border = {false, 0.0625, {0.2, 0.1, 0.05}};
+  r.reflection = {false, 0.55};
+  r.opacity = 0.4;
+  r.samples = 3;
+  r.background = {0.01, 0.02, 0.03};
+  s.width = 321;
+  s.height = 123;
+  return s;
+}
+
+const Scene& expectScene(const SceneResult& r) {
+  if (const auto* e = std::get_if<SceneError>(&r)) ADD_FAILURE() << formatSceneError(*e);
+  static const Scene kEmpty;
+  const Scene* s = std::get_if<Scene>(&r);
+  return s ? *s : kEmpty;
+}
+
+TEST(SceneRoundTrip, EveryKeyOfTheTestSceneDiffersFromItsDefault) {
+  // Guards the round-trip test below: a key left at its default would round-trip trivially.
+  Scene changed = everyKeyChanged();
+  Scene defaults;
+  for (const auto& spec : scene_detail::keySpecs()) {
+    const bool same = std::visit(
+        [&](const auto& ref) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(ref)>, scene_detail::EnumRef>) {
+            return ref.get(changed) == ref.get(defaults);
+          } else {
+            return ref(changed) == ref(defaults);
+          }
+        },
+        spec.field);
+    EXPECT_FALSE(same) << spec.name;
+  }
+  EXPECT_NE(changed.formula, defaults.formula);
+  EXPECT_NE(changed.params, defaults.params);
+}
+
+TEST(SceneRoundTrip, EveryKeySurvivesSaveAndParse) {
+  const Scene original = everyKeyChanged();
+  const std::string text = saveScene(original);
+  const Scene loaded = expectScene(parseScene(text, "saved.surf"));
+  EXPECT_EQ(loaded, original) << text;
+  EXPECT_EQ(saveScene(loaded), text);  // and the text is stable
+}
+
+TEST(SceneRoundTrip, DefaultSceneRoundTrips) {
+  const Scene defaults;
+  EXPECT_EQ(expectScene(parseScene(saveScene(defaults), "d.surf")), defaults);
+}
+
+TEST(SceneRoundTrip, NegativeZeroKeepsItsSign) {
+  Scene s;
+  s.render.camera.target = {-0.0, 0, 0};
+  const Scene loaded = expectScene(parseScene(saveScene(s), "z.surf"));
+  EXPECT_TRUE(std::signbit(loaded.render.camera.target[0]));
+}
+
+TEST(SceneRoundTrip, SavedTextHoldsEveryKey) {
+  const std::string text = saveScene(Scene{});
+  for (const std::string& key : sceneKeys()) {
+    const auto dot = key.rfind('.');
+    const std::string leaf = dot == std::string::npos ? key : key.substr(dot + 1);
+    if (dot == std::string::npos) {
+      EXPECT_NE(text.find("\n" + leaf + " = "), std::string::npos) << key;
+      continue;
+    }
+    // The leaf must appear inside its own [table] section.
+    const auto header = text.find("\n[" + key.substr(0, dot) + "]\n");
+    ASSERT_NE(header, std::string::npos) << key;
+    const auto next = text.find("\n[", header + 1);
+    const auto at = text.find("\n" + leaf + " = ", header);
+    EXPECT_TRUE(at != std::string::npos && at < next) << key;
+  }
+  EXPECT_NE(text.find("\n[params]\n"), std::string::npos);
+}
+
+TEST(SceneRoundTrip, DocumentationNamesEveryKey) {
+  // ctest sets ZS_SOURCE_DIR; the compiled-in path serves a binary started by hand.
+  const char* env = std::getenv("ZS_SOURCE_DIR");
+  const char* root = env ? env : ZS_SCENE_TEST_SOURCE_DIR;
+  std::ifstream in(std::string(root) + "/docs/surf-format.md");
+  ASSERT_TRUE(in) << "docs/surf-format.md is missing";
+  std::stringstream doc;
+  doc << in.rdbuf();
+  for (const std::string& key : sceneKeys()) {
+    EXPECT_NE(doc.str().find("`" + key + "`"), std::string::npos) << key << " is undocumented";
+  }
+}
+
+TEST(SceneParams, ValuesFollowTheGraphOrderWithDefaultsForMissingOnes) {
+  Scene s;
+  s.params = {{"c", 3.0}, {"a", 1.0}, {"unused", 9.0}};
+  const ParseResult parsed = parseFormula("a*x^2 + b*y^2 + c*z^2 - 1");
+  ASSERT_TRUE(std::holds_alternative<Formula>(parsed));
+  const Graph& g = std::get<Formula>(parsed).graph;
+  ASSERT_EQ(g.params().size(), 3u);
+  const std::vector<double> values = paramValues(s, g);
+  ASSERT_EQ(values.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::string& name = g.params()[i];
+    const double expected = name == "a" ? 1.0 : name == "c" ? 3.0 : kDefaultParamValue;
+    EXPECT_EQ(values[i], expected) << name;
+  }
+}
+
+TEST(SceneParams, FileOrderIsKept) {
+  const Scene s = expectScene(parseScene("formula = \"x\"\n[params]\nzeta = 1\nalpha = 2\nmid = 3\n", "p.surf"));
+  ASSERT_EQ(s.params.size(), 3u);
+  EXPECT_EQ(s.params[0].first, "zeta");
+  EXPECT_EQ(s.params[1].first, "alpha");
+  EXPECT_EQ(s.params[2].first, "mid");
+}
+
+}  // namespace
+}  // namespace zs
