@@ -1,9 +1,13 @@
 #pragma once
-// The zeroset command line: one function per subcommand registers it with CLI11.
+// The zeroset command line: one function per subcommand registers it with CLI11; each
+// lives in its own cmd_*.cpp.
 #include <CLI/CLI.hpp>
 
 namespace zs::app {
 
 void addCheckCommand(CLI::App& app);
+void addOctreeCommand(CLI::App& app);
+void addShaderCommand(CLI::App& app);
+void addRenderCommand(CLI::App& app);
 
 }  // namespace zs::app

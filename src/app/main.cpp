@@ -13,6 +13,9 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("zeroset ") + ZS_VERSION);
   app.require_subcommand(1);
   zs::app::addCheckCommand(app);
+  zs::app::addRenderCommand(app);
+  zs::app::addOctreeCommand(app);
+  zs::app::addShaderCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,119 @@
+// `zeroset render SCENE|FORMULA -o out.png [--size WxH] [--depth out.pfm]
+// [--backend egl|osmesa] [--set KEY=VALUE]...`: one picture, headless.
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <unistd.h>
+
+#include "app/commands.hpp"
+#include "app/pipeline.hpp"
+#include "app/scene_args.hpp"
+#include "render/gl_context.hpp"
+#include "render/ray_tracer.hpp"
+
+namespace zs::app {
+
+namespace {
+
+struct RenderArgs {
+  SceneArgs scene;
+  std::string output;
+  std::string size;
+  std::string depth;
+  std::string backend = "egl";
+};
+
+bool parseSize(const std::string& text, int& w, int& h) {
+  char x = 0;
+  char rest = 0;
+  return std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &rest) == 3 && (x == 'x' || x == 'X') &&
+         w > 0 && h > 0 && w <= 16384 && h <= 16384;
+}
+
+int runRender(const RenderArgs& args) {
+  std::optional<Scene> scene = loadSceneArgs(args.scene);
+  if (!scene) return 1;
+  if (!args.size.empty() && !parseSize(args.size, scene->width, scene->height)) {
+    std::cerr << "error: --size '" << args.size << "' is not WIDTHxHEIGHT\n"
+              << "hint: e.g. --size 800x600 (1 to 16384 pixels each way)\n";
+    return 1;
+  }
+  Backend backend;
+  if (!parseBackend(args.backend, backend)) {
+    std::cerr << "error: unknown backend '" << args.backend << "'\nhint: egl or osmesa\n";
+    return 1;
+  }
+  // Everything that can fail on the user's input fails here, before any GL context exists.
+  auto prepared = prepareSurface(*scene);
+  if (auto* err = std::get_if<std::string>(&prepared)) {
+    std::cerr << *err;
+    return 1;
+  }
+  const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
+
+  ContextResult ctx = createHeadlessContext(backend);
+  if (!ctx.context) {
+    std::cerr << "error: " << ctx.error << "\n"
+              << (backend == Backend::Egl ? "hint: try --backend osmesa\n" : "");
+    return 1;
+  }
+  RayTracer tracer;
+  std::string log;
+  if (!tracer.build(surface.vertexShader, surface.fragmentShader, log)) {
+    std::cerr << log;
+    return 1;
+  }
+  if (std::string err = tracer.setHierarchy(surface.hierarchy.packed()); !err.empty()) {
+    std::cerr << "error: " << err << "\n";
+    return 1;
+  }
+  tracer.setParams(surface.paramsAsFloats());
+
+  const bool showProgress = isatty(STDERR_FILENO);
+  const auto start = std::chrono::steady_clock::now();
+  Frame frame = tracer.render(scene->render, scene->domain, scene->width, scene->height,
+                              [showProgress](int done, int total) {
+                                if (showProgress) {
+                                  std::fprintf(stderr, "\rrendering: tile %d of %d", done, total);
+                                }
+                                return true;
+                              });
+  if (showProgress) std::fprintf(stderr, "\r\033[K");
+  if (!frame.error.empty()) {
+    std::cerr << "error: " << frame.error << "\n";
+    return 1;
+  }
+  const double renderMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if (std::string err = writePng(args.output, frame.color); !err.empty()) {
+    std::cerr << "error: " << err << "\n";
+    return 1;
+  }
+  if (!args.depth.empty()) {
+    if (std::string err = writePfm(args.depth, frame.depth); !err.empty()) {
+      std::cerr << "error: " << err << "\n";
+      return 1;
+    }
+  }
+  std::printf("wrote %s (%dx%d) in %.0f ms: %zu octree leaves, %s\n", args.output.c_str(),
+              scene->width, scene->height, renderMs, surface.octree.leaves.size(),
+              ctx.context->backendName().c_str());
+  return 0;
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("render", "Render a surface to a PNG, without a window");
+  auto args = std::make_shared<RenderArgs>();
+  addSceneOptions(*cmd, args->scene);
+  cmd->add_option("-o,--output", args->output, "the PNG to write")->required();
+  cmd->add_option("--size", args->size, "image size WIDTHxHEIGHT (default: the scene's)");
+  cmd->add_option("--depth", args->depth,
+                  "also write a PFM with the distance from the eye to the first hit");
+  cmd->add_option("--backend", args->backend, "egl (default) or osmesa")
+      ->check(CLI::IsMember({"egl", "osmesa"}));
+  cmd->callback([args] { std::exit(runRender(*args)); });
+}
+
+}  // namespace zs::app

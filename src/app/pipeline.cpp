@@ -1,0 +1,59 @@
+#include "app/pipeline.hpp"
+
+#include <chrono>
+
+#include "codegen/glsl_validation.hpp"
+#include "codegen/shader_assembly.hpp"
+#include "expr/derivative.hpp"
+#include "interval/sphere_builder.hpp"
+#include "parser/parser.hpp"
+#include "scene/scene_io.hpp"
+
+namespace zs::app {
+
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+}  // namespace
+
+Box toBox(const Domain& domain) { return Box{domain.min, domain.max}; }
+
+std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bool validate) {
+  PreparedSurface s;
+  auto t = std::chrono::steady_clock::now();
+  ParseResult parsed = parseFormula(scene.formula);
+  if (auto* err = std::get_if<ParseError>(&parsed)) return formatError(scene.formula, *err);
+  s.formula = std::get<Formula>(std::move(parsed));
+  s.gradient = gradient(s.formula.graph, s.formula.root);
+  s.params = paramValues(scene, s.formula.graph);
+  s.times.parseMs = msSince(t);
+
+  t = std::chrono::steady_clock::now();
+  OctreeResult tree = buildOctree(s.formula, s.params, toBox(scene.domain), scene.octree);
+  if (auto* err = std::get_if<OctreeError>(&tree)) return "error: " + err->message + "\n";
+  s.octree = std::get<Octree>(std::move(tree));
+  s.hierarchy = buildSphereHierarchy(s.octree);
+  s.times.octreeMs = msSince(t);
+
+  t = std::chrono::steady_clock::now();
+  s.glsl = emitFormulaGlsl(s.formula.graph, s.formula.root, s.gradient);
+  s.fragmentShader = assembleFragmentShader(s.glsl);
+  s.vertexShader = std::string(vertexShaderSource());
+  s.times.codegenMs = msSince(t);
+
+  if (validate) {
+    t = std::chrono::steady_clock::now();
+    const ValidationResult vert = validateGlsl(s.vertexShader, Stage::Vertex);
+    if (!vert.ok) return formatInternalShaderError("vertex shader", vert);
+    const ValidationResult frag = validateGlsl(s.fragmentShader, Stage::Fragment);
+    if (!frag.ok) return formatInternalShaderError("fragment shader for " + scene.formula, frag);
+    s.times.validateMs = msSince(t);
+  }
+  return s;
+}
+
+}  // namespace zs::app

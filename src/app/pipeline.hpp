@@ -1,0 +1,40 @@
+#pragma once
+// The CPU half of zeroset, end to end: takes a Scene, puts out everything the GPU half needs
+// (the packed sphere hierarchy, the parameter values, the shader text validated by glslang)
+// with the time each stage took. Used by every command that shows a surface; no GL here.
+#include <array>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "codegen/emit_glsl.hpp"
+#include "interval/hierarchy.hpp"
+#include "interval/octree.hpp"
+#include "scene/scene.hpp"
+
+namespace zs::app {
+
+struct StageTimes {
+  double parseMs = 0, octreeMs = 0, codegenMs = 0, validateMs = 0;
+};
+
+struct PreparedSurface {
+  Formula formula;
+  std::array<NodeId, 3> gradient{};
+  std::vector<double> params;  // graph.params() order
+  Octree octree;
+  SphereHierarchy hierarchy;
+  GlslFormula glsl;
+  std::string vertexShader, fragmentShader;
+  StageTimes times;
+
+  std::vector<float> paramsAsFloats() const { return {params.begin(), params.end()}; }
+};
+
+Box toBox(const Domain& domain);
+
+// Error text is ready to print (caret formatting, octree budget messages, or an internal
+// shader error that names itself a bug). `validate` runs glslang on the assembled shaders.
+std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bool validate = true);
+
+}  // namespace zs::app

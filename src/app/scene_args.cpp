@@ -1,0 +1,36 @@
+#include "app/scene_args.hpp"
+
+#include <iostream>
+
+#include "scene/scene_io.hpp"
+
+namespace zs::app {
+
+void addSceneOptions(CLI::App& cmd, SceneArgs& args, bool inputRequired) {
+  auto* input = cmd.add_option("input", args.input,
+                               "a .surf scene file, or a formula such as \"x^2+y^2+z^2-1\"");
+  if (inputRequired) input->required();
+  cmd.add_option("--set", args.sets,
+                 "override a scene key: KEY=VALUE with a dotted key and a TOML value, e.g. "
+                 "--set camera.eye=[0,0,3] --set params.a=0.2 (repeatable)")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
+std::optional<Scene> loadSceneArgs(const SceneArgs& args) {
+  SceneResult loaded = loadSceneOrFormula(args.input);
+  if (auto* err = std::get_if<SceneError>(&loaded)) {
+    std::cerr << formatSceneError(*err);
+    return std::nullopt;
+  }
+  Scene scene = std::get<Scene>(std::move(loaded));
+  for (const std::string& assignment : args.sets) {
+    if (auto err = applyOverride(scene, assignment)) {
+      std::cerr << formatSceneError(*err);
+      return std::nullopt;
+    }
+  }
+  return scene;
+}
+
+}  // namespace zs::app

@@ -1,0 +1,25 @@
+#pragma once
+// The SCENE|FORMULA argument and the --set KEY=VALUE options shared by the commands that
+// show a surface: loads the scene (or a formula with defaults) and applies the overrides
+// in order. On failure prints the file:line:column or caret error and returns nothing.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "scene/scene.hpp"
+
+namespace zs::app {
+
+struct SceneArgs {
+  std::string input;
+  std::vector<std::string> sets;
+};
+
+// Adds the positional SCENE|FORMULA and the repeatable --set to a subcommand.
+void addSceneOptions(CLI::App& cmd, SceneArgs& args, bool inputRequired = true);
+
+std::optional<Scene> loadSceneArgs(const SceneArgs& args);
+
+}  // namespace zs::app
