@@ -84,7 +84,8 @@ std::string unknownKeyHint(std::string_view dottedName) {
   for (const std::string& candidate : allNames()) {
     if (parentOf(candidate) == parent) siblings.emplace_back(leafOf(candidate));
   }
-  const std::string where = parent.empty() ? "at the top level" : "in [" + std::string(parent) + "]";
+  const std::string where =
+      parent.empty() ? "at the top level" : "in [" + std::string(parent) + "]";
   return "valid keys " + where + ": " + quoteList(siblings);
 }
 

@@ -51,16 +51,19 @@ SceneResult parseScene(std::string_view text, std::string_view fileName) {
 
 SceneResult loadScene(const std::filesystem::path& path) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) return fileError(path, "is a directory, not a scene file");
+  if (std::filesystem::is_directory(path, ec))
+    return fileError(path, "is a directory, not a scene file");
   std::ifstream in(path, std::ios::binary);
   if (!in) return fileError(path, std::string("cannot open scene file: ") + std::strerror(errno));
   const auto size = std::filesystem::file_size(path, ec);
   if (!ec && size > kMaxSceneBytes) {
-    return fileError(path, "scene file is larger than " + std::to_string(kMaxSceneBytes >> 20) + " MiB");
+    return fileError(path,
+                     "scene file is larger than " + std::to_string(kMaxSceneBytes >> 20) + " MiB");
   }
   std::ostringstream text;
   text << in.rdbuf();
-  if (in.bad()) return fileError(path, std::string("cannot read scene file: ") + std::strerror(errno));
+  if (in.bad())
+    return fileError(path, std::string("cannot read scene file: ") + std::strerror(errno));
   return parseScene(text.str(), path.string());
 }
 

@@ -44,7 +44,8 @@ std::optional<SceneError> applyOverride(Scene& scene, std::string_view assignmen
                      "for example --set camera.eye=[0,0,3] or --set params.a=0.2");
   }
   const std::string key(trim(assignment.substr(0, eq)));
-  if (key.empty()) return src.error({1, 1}, "", "missing KEY before '='", "for example --set octree.level=3");
+  if (key.empty())
+    return src.error({1, 1}, "", "missing KEY before '='", "for example --set octree.level=3");
   const std::string_view value = trim(assignment.substr(eq + 1));
   if (value.empty()) {
     return src.error(src.positionOf(eq + 1), key, "missing VALUE after '" + key + "='",

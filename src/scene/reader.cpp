@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,8 +45,8 @@ class Reader {
 
   std::optional<SceneError> table(const toml::table& table, const std::string& prefix) {
     for (const auto& [key, node] : inFileOrder(table)) {
-      const std::string name = prefix.empty() ? std::string(key->str())
-                                              : prefix + "." + std::string(key->str());
+      const std::string name =
+          prefix.empty() ? std::string(key->str()) : prefix + "." + std::string(key->str());
       if (auto err = entry(name, *key, *node)) return err;
     }
     return std::nullopt;
@@ -65,8 +66,7 @@ class Reader {
       return src_.error(positionOf(node), name, name + " must be a table, got " + typeName(node),
                         "write [" + name + "] on its own line, followed by its keys");
     }
-    return src_.error(positionOf(key), name, "unknown key \"" + name + "\"",
-                      unknownKeyHint(name));
+    return src_.error(positionOf(key), name, "unknown key \"" + name + "\"", unknownKeyHint(name));
   }
 
   std::optional<SceneError> formula(const toml::node& node) {
@@ -98,12 +98,15 @@ class Reader {
                           "other than x, y, z and the names of functions and constants");
       }
       double v = 0;
-      const Range any{-INFINITY, INFINITY};
+      const Range any{-std::numeric_limits<double>::infinity(),
+                      std::numeric_limits<double>::infinity()};
       if (auto err = readNumber(*value, dotted, any, src_, v)) return err;
       auto it = std::find_if(scene_.params.begin(), scene_.params.end(),
                              [&](const auto& p) { return p.first == name; });
-      if (it != scene_.params.end()) it->second = v;
-      else scene_.params.emplace_back(name, v);
+      if (it != scene_.params.end())
+        it->second = v;
+      else
+        scene_.params.emplace_back(name, v);
     }
     return std::nullopt;
   }
@@ -144,7 +147,8 @@ std::optional<SceneError> Reader::crossChecks() const {
   const Camera& c = scene_.render.camera;
   const Vec3 f{c.target[0] - c.eye[0], c.target[1] - c.eye[1], c.target[2] - c.eye[2]};
   if (f[0] == 0 && f[1] == 0 && f[2] == 0) {
-    return errorAt({"camera.eye", "camera.target"}, "camera.eye and camera.target are the same point",
+    return errorAt({"camera.eye", "camera.target"},
+                   "camera.eye and camera.target are the same point",
                    "the camera looks from eye towards target; move one of them");
   }
   const Vec3& u = c.up;
@@ -176,7 +180,7 @@ std::optional<SceneError> checkFormula(std::string_view formula, const SourceTex
 }
 
 std::optional<SceneError> applyDocument(Scene& scene, const toml::table& doc,
-                                         const SourceText& src) {
+                                        const SourceText& src) {
   Reader reader(scene, src);
   if (auto err = reader.table(doc, "")) return err;
   return reader.crossChecks();

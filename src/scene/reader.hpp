@@ -4,19 +4,19 @@
 // the formula, checks the keys that constrain each other (domain, camera) and returns the
 // first error. Shared by parseScene (onto defaults) and applyOverride (onto the current
 // scene). The scene may be partly changed when an error is returned.
+#include <toml++/toml.h>
+
 #include <cstddef>
 #include <optional>
 #include <string_view>
 #include <vector>
-
-#include <toml++/toml.h>
 
 #include "scene/source_text.hpp"
 
 namespace zs::scene_detail {
 
 std::optional<SceneError> applyDocument(Scene& scene, const toml::table& doc,
-                                         const SourceText& src);
+                                        const SourceText& src);
 
 // Parses `formula`; on error, places the parser's byte span at the source position the
 // formula's bytes were read from (`byteOffsets`: one source offset per formula byte, plus

@@ -17,10 +17,10 @@
 namespace zs {
 
 struct SceneError {
-  std::string file;     // the scene's file name, "--set" or "<formula>"
-  int line = 0;         // 1-based; 0 when the error has no place in a text (unreadable file)
-  int column = 0;       // 1-based, counted in code points like toml++ does
-  std::string key;      // dotted key ("camera.fov_y"); empty for TOML syntax errors
+  std::string file;  // the scene's file name, "--set" or "<formula>"
+  int line = 0;      // 1-based; 0 when the error has no place in a text (unreadable file)
+  int column = 0;    // 1-based, counted in code points like toml++ does
+  std::string key;   // dotted key ("camera.fov_y"); empty for TOML syntax errors
   std::string message;
   std::string hint;        // may be empty
   std::string sourceLine;  // the line holding the error, for the caret; may be empty

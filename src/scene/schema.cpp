@@ -23,11 +23,10 @@ constexpr std::array<std::string_view, 2> kCriteria{"thesis", "uniform"};
 
 const EnumRef kProjectionRef{
     [](const Scene& s) { return static_cast<int>(s.render.camera.projection); },
-    [](Scene& s, int v) { s.render.camera.projection = static_cast<Projection>(v); },
-    kProjections};
-const EnumRef kCriteriaRef{
-    [](const Scene& s) { return static_cast<int>(s.octree.criteria); },
-    [](Scene& s, int v) { s.octree.criteria = static_cast<Criteria>(v); }, kCriteria};
+    [](Scene& s, int v) { s.render.camera.projection = static_cast<Projection>(v); }, kProjections};
+const EnumRef kCriteriaRef{[](const Scene& s) { return static_cast<int>(s.octree.criteria); },
+                           [](Scene& s, int v) { s.octree.criteria = static_cast<Criteria>(v); },
+                           kCriteria};
 
 // File order: top-level keys first (TOML puts them before any [table]), then each table's
 // keys together, so the writer can emit a header whenever the prefix changes.
@@ -79,7 +78,9 @@ const KeySpec kKeys[] = {
 
 }  // namespace
 
-std::span<const KeySpec> keySpecs() { return kKeys; }
+std::span<const KeySpec> keySpecs() {
+  return kKeys;
+}
 
 const KeySpec* findKey(std::string_view dottedName) {
   for (const KeySpec& k : kKeys) {

@@ -6,12 +6,14 @@
 namespace zs::scene_detail {
 
 namespace {
-bool isContinuation(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
+bool isContinuation(char c) {
+  return (static_cast<unsigned char>(c) & 0xC0) == 0x80;
+}
 }  // namespace
 
 int codePoints(std::string_view utf8) {
-  return static_cast<int>(std::count_if(utf8.begin(), utf8.end(),
-                                        [](char c) { return !isContinuation(c); }));
+  return static_cast<int>(
+      std::count_if(utf8.begin(), utf8.end(), [](char c) { return !isContinuation(c); }));
 }
 
 SourceText::SourceText(std::string_view file, std::string_view text) : file_(file), text_(text) {
@@ -50,8 +52,8 @@ std::string_view SourceText::lineText(int line) const {
   return text_.substr(start, end - start);
 }
 
-SceneError SourceText::error(Position pos, std::string key, std::string message,
-                             std::string hint, int width) const {
+SceneError SourceText::error(Position pos, std::string key, std::string message, std::string hint,
+                             int width) const {
   SceneError e;
   e.file = file_;
   e.line = pos.line;

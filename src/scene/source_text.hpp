@@ -22,9 +22,9 @@ class SourceText {
 
   std::string_view file() const { return file_; }
   std::string_view text() const { return text_; }
-  std::size_t offsetOf(Position pos) const;          // clamped to the text
-  Position positionOf(std::size_t offset) const;     // offset clamped to the text
-  std::string_view lineText(int line) const;         // without the line break
+  std::size_t offsetOf(Position pos) const;       // clamped to the text
+  Position positionOf(std::size_t offset) const;  // offset clamped to the text
+  std::string_view lineText(int line) const;      // without the line break
 
   SceneError error(Position pos, std::string key, std::string message, std::string hint = {},
                    int width = 1) const;

@@ -33,8 +33,10 @@ std::vector<std::size_t> stringSourceMap(std::string_view text, std::size_t quot
   const bool basic = quote == '"';
   std::size_t pos = quoteOffset + (multiline ? 3 : 1);
   // TOML drops a newline that immediately follows the opening delimiter.
-  if (multiline && text.substr(pos, 2) == "\r\n") pos += 2;
-  else if (multiline && text.substr(pos, 1) == "\n") pos += 1;
+  if (multiline && text.substr(pos, 2) == "\r\n")
+    pos += 2;
+  else if (multiline && text.substr(pos, 1) == "\n")
+    pos += 1;
 
   // The decoded value guides the walk: it says how many bytes are left and tells a '\r' the
   // parser dropped from one it kept.

@@ -23,7 +23,8 @@ SceneError typeError(const toml::node& node, const std::string& key, std::string
                      const SourceText& src) {
   std::string hint;
   if (expected.starts_with("a vector") && node.is_number()) hint = "write a vector as [x, y, z]";
-  if (expected == "an integer" && node.is_floating_point()) hint = "write it without a decimal point";
+  if (expected == "an integer" && node.is_floating_point())
+    hint = "write it without a decimal point";
   if (expected == "a boolean" && node.is_string()) hint = "write true or false without quotes";
   if (expected == "a string" && !node.is_string()) hint = "put the text in double quotes";
   return src.error(positionOf(node), key,
@@ -36,8 +37,9 @@ std::optional<SceneError> readInteger(const toml::node& node, const KeySpec& spe
   if (!node.is_integer()) return typeError(node, key, "an integer", src);
   out = *node.value<std::int64_t>();
   if (!spec.range.contains(static_cast<double>(out))) {
-    return src.error(positionOf(node), key,
-                     key + " must be " + rangeText(spec.range, true) + ", got " + std::to_string(out));
+    return src.error(
+        positionOf(node), key,
+        key + " must be " + rangeText(spec.range, true) + ", got " + std::to_string(out));
   }
   return std::nullopt;
 }
@@ -80,16 +82,26 @@ Position positionOf(const toml::key& key) {
 
 std::string typeName(const toml::node& node) {
   switch (node.type()) {
-    case toml::node_type::none: return "nothing";
-    case toml::node_type::table: return "a table";
-    case toml::node_type::array: return "an array";
-    case toml::node_type::string: return "a string";
-    case toml::node_type::integer: return "an integer";
-    case toml::node_type::floating_point: return "a float";
-    case toml::node_type::boolean: return "a boolean";
-    case toml::node_type::date: return "a date";
-    case toml::node_type::time: return "a time";
-    case toml::node_type::date_time: return "a date-time";
+    case toml::node_type::none:
+      return "nothing";
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::floating_point:
+      return "a float";
+    case toml::node_type::boolean:
+      return "a boolean";
+    case toml::node_type::date:
+      return "a date";
+    case toml::node_type::time:
+      return "a time";
+    case toml::node_type::date_time:
+      return "a date-time";
   }
   return "an unknown value";
 }
@@ -111,7 +123,8 @@ std::optional<SceneError> readNumber(const toml::node& node, const std::string& 
   }
   const double v = *node.value<double>();
   if (!std::isfinite(v)) {
-    return src.error(positionOf(node), key, key + " must be a finite number, got " + formatDouble(v));
+    return src.error(positionOf(node), key,
+                     key + " must be a finite number, got " + formatDouble(v));
   }
   if (!range.contains(v)) {
     return src.error(positionOf(node), key,

@@ -2,10 +2,10 @@
 // One TOML value into one scene field: takes a toml++ node and the key's schema row, checks
 // the type (booleans, integers, finite numbers, vectors of exactly 3 numbers, enum words)
 // and the range, and stores the value or returns an error pointing at the value.
+#include <toml++/toml.h>
+
 #include <optional>
 #include <string>
-
-#include <toml++/toml.h>
 
 #include "scene/schema.hpp"
 #include "scene/source_text.hpp"

@@ -1,7 +1,10 @@
 // saveScene: every key of the schema, in the schema's order, so that the file documents the
 // whole scene and parseScene(saveScene(s)) == s.
+#include <algorithm>
+#include <iterator>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 #include "scene/scene_io.hpp"
 #include "scene/schema.hpp"
@@ -15,26 +18,23 @@ using namespace scene_detail;
 
 std::string tomlString(std::string_view s) {
   static constexpr char kHex[] = "0123456789ABCDEF";
+  static constexpr std::pair<char, std::string_view> kEscapes[] = {
+      {'"', "\\\""}, {'\\', "\\\\"}, {'\b', "\\b"}, {'\t', "\\t"},
+      {'\n', "\\n"}, {'\f', "\\f"},  {'\r', "\\r"}};
   std::string out = "\"";
   for (const char c : s) {
     const auto u = static_cast<unsigned char>(c);
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\b': out += "\\b"; break;
-      case '\t': out += "\\t"; break;
-      case '\n': out += "\\n"; break;
-      case '\f': out += "\\f"; break;
-      case '\r': out += "\\r"; break;
-      default:
-        // TOML forbids raw control characters in basic strings; bytes >= 0x80 are UTF-8.
-        if (u < 0x20 || u == 0x7F) {
-          out += "\\u00";
-          out += kHex[u >> 4];
-          out += kHex[u & 15];
-        } else {
-          out += c;
-        }
+    const auto* e = std::find_if(std::begin(kEscapes), std::end(kEscapes),
+                                 [c](const auto& p) { return p.first == c; });
+    if (e != std::end(kEscapes)) {
+      out += e->second;
+    } else if (u < 0x20 || u == 0x7F) {
+      // TOML forbids raw control characters in basic strings; bytes >= 0x80 are UTF-8.
+      out += "\\u00";
+      out += kHex[u >> 4];
+      out += kHex[u & 15];
+    } else {
+      out += c;
     }
   }
   return out + "\"";
@@ -87,7 +87,8 @@ std::string saveScene(const Scene& scene) {
   for (const KeySpec& spec : keySpecs()) {
     const auto dot = spec.name.rfind('.');
     const std::string_view prefix = dot == std::string_view::npos ? "" : spec.name.substr(0, dot);
-    const std::string_view leaf = dot == std::string_view::npos ? spec.name : spec.name.substr(dot + 1);
+    const std::string_view leaf =
+        dot == std::string_view::npos ? spec.name : spec.name.substr(dot + 1);
     // [params] follows the top-level keys: TOML wants those before the first table.
     if (!prefix.empty() && !paramsWritten) {
       out += "\n[params]\n";

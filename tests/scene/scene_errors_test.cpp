@@ -26,7 +26,8 @@ const BadScene kBadScenes[] = {
     {"toml syntax: unterminated string", "formula = \"x^2 - 1\n", 1, 19, "", "", ""},
     {"toml syntax: key without value", "formula = \"x\"\nsamples =\n", 2, 10, "", "", ""},
     {"duplicate key", "formula = \"x\"\n[octree]\nlevel = 1\nlevel = 2\n", 4, 9, "", "level", ""},
-    {"duplicate table", "formula = \"x\"\n[camera]\nfov_y = 30\n[camera]\n", 4, 1, "", "camera", ""},
+    {"duplicate table", "formula = \"x\"\n[camera]\nfov_y = 30\n[camera]\n", 4, 1, "", "camera",
+     ""},
     {"wrong type: string for integer", "formula = \"x\"\n[octree]\nlevel = \"3\"\n", 3, 9,
      "octree.level", "must be an integer, got a string", ""},
     {"wrong type: float for integer", "formula = \"x\"\n[tracing]\nhits = 2.5\n", 3, 8,
@@ -68,8 +69,8 @@ const BadScene kBadScenes[] = {
      "did you mean \"perspective\"? expected one of \"perspective\", \"orthographic\""},
     {"misspelled enum word", "formula = \"x\"\n[octree]\ncriteria = \"thesys\"\n", 3, 12,
      "octree.criteria", "no option", "did you mean \"thesis\"?"},
-    {"domain min above max", "formula = \"x\"\n[domain]\nmin = [0, 2, 0]\nmax = [1, 1, 1]\n", 4,
-     7, "domain.max", "domain.min.y (2.0) must be less than domain.max.y (1.0)", ""},
+    {"domain min above max", "formula = \"x\"\n[domain]\nmin = [0, 2, 0]\nmax = [1, 1, 1]\n", 4, 7,
+     "domain.max", "domain.min.y (2.0) must be less than domain.max.y (1.0)", ""},
     {"eye equals target", "formula = \"x\"\n[camera]\neye = [0, 0, 0]\n", 3, 7, "camera.eye",
      "same point", ""},
     {"zero up vector", "formula = \"x\"\n[camera]\nup = [0, 0, 0]\n", 3, 6, "camera.up",
@@ -90,7 +91,9 @@ const BadScene kBadScenes[] = {
 };
 
 // gtest prints the case's name instead of its bytes.
-void PrintTo(const BadScene& bad, std::ostream* os) { *os << bad.name; }
+void PrintTo(const BadScene& bad, std::ostream* os) {
+  *os << bad.name;
+}
 
 class MalformedScene : public ::testing::TestWithParam<BadScene> {};
 

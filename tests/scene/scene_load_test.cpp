@@ -37,7 +37,9 @@ const FormulaInFile kFormulaErrors[] = {
     {"after a multi-byte character", "# é\nformula = \"x^2 + )\" # ü\n", 2, 18},
 };
 
-void PrintTo(const FormulaInFile& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const FormulaInFile& c, std::ostream* os) {
+  *os << c.name;
+}
 
 class FormulaErrorInFile : public ::testing::TestWithParam<FormulaInFile> {};
 
@@ -62,7 +64,8 @@ TEST(SceneErrorFormat, ShowsTheLineAndACaret) {
 
 TEST(SceneErrorFormat, HintLineAndNoCaretWithoutPosition) {
   SceneError e{"a.surf", 0, 0, "", "cannot open scene file: gone", "check the path", "", 1};
-  EXPECT_EQ(formatSceneError(e), "a.surf: error: cannot open scene file: gone\n  hint: check the path\n");
+  EXPECT_EQ(formatSceneError(e),
+            "a.surf: error: cannot open scene file: gone\n  hint: check the path\n");
 }
 
 class TempDir : public ::testing::Test {

@@ -58,7 +58,9 @@ struct BadOverride {
   const char* hint;
 };
 
-void PrintTo(const BadOverride& bad, std::ostream* os) { *os << bad.assignment; }
+void PrintTo(const BadOverride& bad, std::ostream* os) {
+  *os << bad.assignment;
+}
 
 class BadOverrides : public ::testing::TestWithParam<BadOverride> {};
 

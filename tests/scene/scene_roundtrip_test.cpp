@@ -107,17 +107,34 @@ TEST(SceneRoundTrip, SavedTextHoldsEveryKey) {
   EXPECT_NE(text.find("\n[params]\n"), std::string::npos);
 }
 
-TEST(SceneRoundTrip, DocumentationNamesEveryKey) {
+std::string readDoc() {
   // ctest sets ZS_SOURCE_DIR; the compiled-in path serves a binary started by hand.
   const char* env = std::getenv("ZS_SOURCE_DIR");
   const char* root = env ? env : ZS_SCENE_TEST_SOURCE_DIR;
   std::ifstream in(std::string(root) + "/docs/surf-format.md");
-  ASSERT_TRUE(in) << "docs/surf-format.md is missing";
   std::stringstream doc;
   doc << in.rdbuf();
+  return doc.str();
+}
+
+TEST(SceneDocs, NameEveryKey) {
+  const std::string doc = readDoc();
+  ASSERT_FALSE(doc.empty()) << "docs/surf-format.md is missing";
   for (const std::string& key : sceneKeys()) {
-    EXPECT_NE(doc.str().find("`" + key + "`"), std::string::npos) << key << " is undocumented";
+    EXPECT_NE(doc.find("`" + key + "`"), std::string::npos) << key << " is undocumented";
   }
+}
+
+TEST(SceneDocs, CompleteExampleLoads) {
+  const std::string doc = readDoc();
+  const auto begin = doc.find("```toml\n");
+  ASSERT_NE(begin, std::string::npos);
+  const auto end = doc.find("```\n", begin + 8);
+  ASSERT_NE(end, std::string::npos);
+  const Scene s = expectScene(parseScene(doc.substr(begin + 8, end - begin - 8), "example"));
+  EXPECT_EQ(s.formula, "x^4 + y^4 + z^4 - a");
+  EXPECT_EQ(s.render.samples, 2);
+  EXPECT_EQ(s.params, (std::vector<std::pair<std::string, double>>{{"a", 1.0}}));
 }
 
 TEST(SceneParams, ValuesFollowTheGraphOrderWithDefaultsForMissingOnes) {
@@ -137,7 +154,8 @@ TEST(SceneParams, ValuesFollowTheGraphOrderWithDefaultsForMissingOnes) {
 }
 
 TEST(SceneParams, FileOrderIsKept) {
-  const Scene s = expectScene(parseScene("formula = \"x\"\n[params]\nzeta = 1\nalpha = 2\nmid = 3\n", "p.surf"));
+  const Scene s = expectScene(
+      parseScene("formula = \"x\"\n[params]\nzeta = 1\nalpha = 2\nmid = 3\n", "p.surf"));
   ASSERT_EQ(s.params.size(), 3u);
   EXPECT_EQ(s.params[0].first, "zeta");
   EXPECT_EQ(s.params[1].first, "alpha");
