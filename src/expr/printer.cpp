@@ -23,6 +23,14 @@ std::string number(double v) {
   return ec == std::errc() ? std::string(buf, end) : std::string("nan");
 }
 
+// `a^n` with an integer |n| beyond kMaxIntegerExponent is rejected by the parser, so such a
+// power (built by pow()) is printed in call syntax.
+bool hugeIntegerExponent(const Graph& g, NodeId exponent) {
+  const Node& e = g[exponent];
+  return e.op == Op::Const && std::nearbyint(e.value) == e.value &&
+         std::fabs(e.value) > kMaxIntegerExponent;
+}
+
 }  // namespace
 
 std::optional<std::string> print(const Graph& g, NodeId root, std::size_t maxChars) {
@@ -64,7 +72,7 @@ std::optional<std::string> print(const Graph& g, NodeId root, std::size_t maxCha
         }
         break;
       case OpKind::Call:
-        if (n.op == Op::Pow) {
+        if (n.op == Op::Pow && !hugeIntegerExponent(g, n.b)) {
           p.text = slot(n.a, kAtom) + "^" + slot(n.b, kUnary);
           p.prec = kPower;
         } else if (info.arity == 1) {
