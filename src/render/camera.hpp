@@ -1,0 +1,33 @@
+#pragma once
+// The camera contract (docs/camera.md) on the CPU: takes a Camera and an image size, puts
+// out the orthonormal basis the shader receives and the exact ray of any pixel. The shader
+// repeats primaryRay() in float; tests use this double version as the analytic reference.
+#include "render/settings.hpp"
+
+namespace zs {
+
+struct CameraBasis {
+  Vec3 eye{};
+  Vec3 forward{};  // normalize(target - eye)
+  Vec3 right{};    // normalize(forward x up)
+  Vec3 up{};       // right x forward
+};
+
+// Degenerate input never fails: eye == target looks down -z, and an up vector parallel to
+// the view direction is replaced by the world axis least aligned with it (documented).
+CameraBasis cameraBasis(const Camera& camera);
+
+struct Ray {
+  Vec3 origin{};
+  Vec3 direction{};  // unit length
+};
+
+// Ray through pixel (i, j), counted from the top-left; (i + 0.5, j + 0.5) is the pixel
+// center, so sub-pixel offsets pass fractional i, j with the 0.5 already removed.
+Ray primaryRay(const Camera& camera, int width, int height, double i, double j);
+
+// Scale of the image plane at unit distance: tan(fov_y / 2) for perspective, height / 2
+// for orthographic. Clamped so fov_y in (0, 180) and height > 0.
+double imagePlaneHalfHeight(const Camera& camera);
+
+}  // namespace zs

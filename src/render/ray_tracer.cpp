@@ -1,0 +1,191 @@
+// RayTracer: GL objects (program, node texture, offscreen target) and the tiled render.
+// Uniform values come from ray_tracer_uniforms.cpp.
+#include "render/ray_tracer.hpp"
+
+#include <glad/gl.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "render/shader_program.hpp"
+
+namespace zs {
+
+RayTracer::RayTracer() { glGenVertexArrays(1, &vao_); }
+
+RayTracer::~RayTracer() {
+  releaseTarget();
+  if (program_) glDeleteProgram(program_);
+  if (nodeTexture_) glDeleteTextures(1, &nodeTexture_);
+  if (nodeBuffer_) glDeleteBuffers(1, &nodeBuffer_);
+  glDeleteVertexArrays(1, &vao_);
+}
+
+bool RayTracer::build(std::string_view vertexSource, std::string_view fragmentSource,
+                      std::string& log) {
+  const unsigned program = compileProgram(vertexSource, fragmentSource, log);
+  if (!program) return false;
+  if (program_) glDeleteProgram(program_);
+  program_ = program;
+  locations_.clear();
+  return true;
+}
+
+int RayTracer::uniform(const char* name) {
+  auto it = locations_.find(name);
+  if (it == locations_.end()) it = locations_.emplace(name, glGetUniformLocation(program_, name)).first;
+  return it->second;
+}
+
+std::string RayTracer::setHierarchy(std::span<const float> packed) {
+  GpuHierarchy gpu;
+  if (std::string error = toGpuHierarchy(packed, gpu); !error.empty()) return error;
+  GLint maxTexels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+  if (gpu.count > maxTexels)
+    return "hierarchy: " + std::to_string(gpu.count) + " nodes exceed GL_MAX_TEXTURE_BUFFER_SIZE (" +
+           std::to_string(maxTexels) + ")";
+  if (!nodeBuffer_) glGenBuffers(1, &nodeBuffer_);
+  if (!nodeTexture_) glGenTextures(1, &nodeTexture_);
+  glBindBuffer(GL_TEXTURE_BUFFER, nodeBuffer_);
+  // A zero-size buffer store is not a valid texture-buffer source: keep one dummy texel.
+  static const std::uint32_t dummy[4] = {};
+  const void* data = gpu.texels.empty() ? static_cast<const void*>(dummy) : gpu.texels.data();
+  glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(std::max<std::size_t>(gpu.texels.size(), 4) * 4),
+               data, GL_STATIC_DRAW);
+  glBindTexture(GL_TEXTURE_BUFFER, nodeTexture_);
+  glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32UI, nodeBuffer_);
+  glBindBuffer(GL_TEXTURE_BUFFER, 0);
+  hierarchy_ = std::move(gpu);
+  return {};
+}
+
+void RayTracer::setParams(std::span<const float> params) {
+  params_.assign(params.begin(), params.end());
+}
+
+void RayTracer::releaseTarget() {
+  if (fbo_) glDeleteFramebuffers(1, &fbo_);
+  if (colorTex_) glDeleteTextures(1, &colorTex_);
+  if (depthTex_) glDeleteTextures(1, &depthTex_);
+  fbo_ = colorTex_ = depthTex_ = 0;
+  targetWidth_ = targetHeight_ = 0;
+}
+
+std::string RayTracer::ensureTarget(int width, int height) {
+  if (fbo_ && width == targetWidth_ && height == targetHeight_) return {};
+  GLint maxSize = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+  if (width <= 0 || height <= 0 || width > maxSize || height > maxSize)
+    return "image size " + std::to_string(width) + "x" + std::to_string(height) +
+           " is outside 1.." + std::to_string(maxSize);
+  releaseTarget();
+  auto makeTexture = [&](GLenum internal, GLenum format, GLenum type) {
+    GLuint tex = 0;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal), width, height, 0, format, type, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return tex;
+  };
+  colorTex_ = makeTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE);
+  depthTex_ = makeTexture(GL_R32F, GL_RED, GL_FLOAT);  // distance to the first hit
+  glGenFramebuffers(1, &fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colorTex_, 0);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, depthTex_, 0);
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    releaseTarget();
+    return "offscreen framebuffer incomplete (status " + std::to_string(status) + ")";
+  }
+  targetWidth_ = width;
+  targetHeight_ = height;
+  return {};
+}
+
+std::string RayTracer::prepare(const RenderSettings& settings, const Domain& domain, int width,
+                               int height, bool offscreen) {
+  if (!program_) return "the ray tracer has no shader program (build() first)";
+  if (width <= 0 || height <= 0) return "image size must be positive";
+  if (offscreen) {
+    if (std::string error = ensureTarget(width, height); !error.empty()) return error;
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(2, buffers);
+  }
+  glUseProgram(program_);
+  setUniforms(settings, domain, width, height);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_BUFFER, nodeTexture_);
+  glBindVertexArray(vao_);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glViewport(0, 0, width, height);
+  return {};
+}
+
+std::string RayTracer::drawOffscreen(const RenderSettings& settings, const Domain& domain,
+                                     int width, int height) {
+  if (std::string error = prepare(settings, domain, width, height, true); !error.empty())
+    return error;
+  glDisable(GL_SCISSOR_TEST);
+  glDrawArrays(GL_TRIANGLES, 0, 6);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return {};
+}
+
+void RayTracer::draw(const RenderSettings& settings, const Domain& domain, int width, int height) {
+  if (!prepare(settings, domain, width, height, false).empty()) return;
+  glDisable(GL_SCISSOR_TEST);
+  glDrawArrays(GL_TRIANGLES, 0, 6);
+}
+
+Frame RayTracer::render(const RenderSettings& settings, const Domain& domain, int width,
+                        int height, const ProgressFn& progress, int tileSize) {
+  Frame frame;
+  if (std::string error = prepare(settings, domain, width, height, true); !error.empty()) {
+    frame.error = error;
+    return frame;
+  }
+  tileSize = std::max(tileSize, 16);
+  const int tilesX = (width + tileSize - 1) / tileSize, tilesY = (height + tileSize - 1) / tileSize;
+  glEnable(GL_SCISSOR_TEST);  // the full-viewport triangles only shade the scissored tile
+  int done = 0;
+  for (int ty = 0; ty < tilesY; ++ty) {
+    for (int tx = 0; tx < tilesX; ++tx) {
+      glScissor(tx * tileSize, ty * tileSize, tileSize, tileSize);
+      glDrawArrays(GL_TRIANGLES, 0, 6);
+      glFinish();
+      if (progress && !progress(++done, tilesX * tilesY)) {
+        glDisable(GL_SCISSOR_TEST);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        frame.error = "cancelled";
+        return frame;
+      }
+    }
+  }
+  glDisable(GL_SCISSOR_TEST);
+
+  // Read back; GL rows come bottom-up, frames are top-down.
+  frame.color = {width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 4)};
+  frame.depth = {width, height, std::vector<float>(std::size_t(width) * height)};
+  std::vector<std::uint8_t> rgba(frame.color.rgba.size());
+  std::vector<float> depth(frame.depth.values.size());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  glReadBuffer(GL_COLOR_ATTACHMENT1);
+  glReadPixels(0, 0, width, height, GL_RED, GL_FLOAT, depth.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  for (int y = 0; y < height; ++y) {
+    const std::size_t src = std::size_t(height - 1 - y) * width, dst = std::size_t(y) * width;
+    std::memcpy(&frame.color.rgba[dst * 4], &rgba[src * 4], std::size_t(width) * 4);
+    std::memcpy(&frame.depth.values[dst], &depth[src], std::size_t(width) * sizeof(float));
+  }
+  return frame;
+}
+
+}  // namespace zs

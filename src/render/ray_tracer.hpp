@@ -1,0 +1,83 @@
+#pragma once
+// The GPU ray tracer of thesis chapter 4.4. Takes finished shader text (vertex + the
+// fragment shader spliced from the prelude, the generated formula and
+// raytrace_main.frag.glsl), the packed sphere hierarchy (interval/hierarchy.hpp), the
+// formula's parameter values and the RenderSettings; puts out frames (RGBA8 + per-pixel
+// depth) rendered offscreen in tiles, or draws into the current framebuffer for the viewer.
+// Needs a current GL 3.3+ core context (gl_context.hpp) for its whole life; all GL objects
+// belong to that context. Never aborts on bad input: errors come back as strings.
+#include <functional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "render/hierarchy_gpu.hpp"
+#include "render/image.hpp"
+#include "render/settings.hpp"
+
+namespace zs {
+
+struct Frame {
+  Image color;     // RGBA8, top row first
+  DepthMap depth;  // distance along the unit ray from its origin to the first hit; +inf if none
+  std::string error;  // non-empty: nothing was rendered
+};
+
+// Called after each tile; return false to stop (the frame then reports "cancelled").
+using ProgressFn = std::function<bool(int tilesDone, int tilesTotal)>;
+
+class RayTracer {
+ public:
+  RayTracer();
+  ~RayTracer();
+  RayTracer(const RayTracer&) = delete;
+  RayTracer& operator=(const RayTracer&) = delete;
+
+  // Compiles and links; on failure returns false and `log` holds the driver log plus the
+  // numbered source. A failed build keeps the previous program, if any.
+  bool build(std::string_view vertexSource, std::string_view fragmentSource, std::string& log);
+  bool ready() const { return program_ != 0; }
+
+  // The 12-float-per-node hierarchy; "" on success, else why it was rejected (the previous
+  // hierarchy stays). Nothing is hit until a hierarchy is set.
+  std::string setHierarchy(std::span<const float> packed);
+  // Values of `uniform float zs_params[K]`, in declaration order; ignored when the formula
+  // has no parameters (the driver then reports no such uniform).
+  void setParams(std::span<const float> params);
+
+  // Offscreen render in tiles of at most tileSize x tileSize pixels, each its own draw call
+  // followed by glFinish, so no single draw runs for seconds and progress can be shown.
+  Frame render(const RenderSettings& settings, const Domain& domain, int width, int height,
+               const ProgressFn& progress = {}, int tileSize = 256);
+  // One draw call of the whole frame into the internal offscreen target, no read-back:
+  // what frame-time measurements time (with glFinish). "" on success.
+  std::string drawOffscreen(const RenderSettings& settings, const Domain& domain, int width,
+                            int height);
+  // Draws into the framebuffer bound now (the viewer's window), viewport (0, 0, w, h).
+  void draw(const RenderSettings& settings, const Domain& domain, int width, int height);
+
+  // Sampling also looks for tangent roots (local minima of |F| between sign samples, see
+  // docs/renderer.md). On by default; off only to measure what the fix costs.
+  void setTangentRoots(bool on) { tangentRoots_ = on; }
+
+ private:
+  std::string prepare(const RenderSettings& settings, const Domain& domain, int width,
+                      int height, bool offscreen);
+  void setUniforms(const RenderSettings& settings, const Domain& domain, int width, int height);
+  int uniform(const char* name);
+  std::string ensureTarget(int width, int height);
+  void releaseTarget();
+
+  unsigned program_ = 0, vao_ = 0;
+  unsigned nodeBuffer_ = 0, nodeTexture_ = 0;
+  unsigned fbo_ = 0, colorTex_ = 0, depthTex_ = 0;
+  int targetWidth_ = 0, targetHeight_ = 0;
+  GpuHierarchy hierarchy_;
+  std::vector<float> params_;
+  bool tangentRoots_ = true;
+  std::unordered_map<std::string, int> locations_;
+};
+
+}  // namespace zs

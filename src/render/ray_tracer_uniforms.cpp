@@ -1,0 +1,80 @@
+// RenderSettings -> shader uniforms. Out-of-range knobs are clamped here (documented in
+// docs/renderer.md) so no setting can hang or break the shader.
+#include <glad/gl.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/camera.hpp"
+#include "render/ray_tracer.hpp"
+
+namespace zs {
+namespace {
+
+void vec3Uniform(int location, const Vec3& v, double scale = 1) {
+  glUniform3f(location, float(v[0] * scale), float(v[1] * scale), float(v[2] * scale));
+}
+
+}  // namespace
+
+void RayTracer::setUniforms(const RenderSettings& s, const Domain& domain, int width, int height) {
+  glUniform1i(uniform("rtHierarchy"), 0);
+  glUniform1i(uniform("rtNodeCount"), hierarchy_.count);
+  glUniform3f(uniform("rtRootMin"), hierarchy_.rootMin[0], hierarchy_.rootMin[1],
+              hierarchy_.rootMin[2]);
+  glUniform3f(uniform("rtCell"), hierarchy_.cell[0], hierarchy_.cell[1], hierarchy_.cell[2]);
+  glUniform1f(uniform("rtPad"), hierarchy_.pad);
+  vec3Uniform(uniform("rtDomainMin"), domain.min);
+  vec3Uniform(uniform("rtDomainMax"), domain.max);
+  glUniform2f(uniform("rtResolution"), float(width), float(height));
+
+  const CameraBasis basis = cameraBasis(s.camera);
+  vec3Uniform(uniform("rtEye"), basis.eye);
+  vec3Uniform(uniform("rtForward"), basis.forward);
+  vec3Uniform(uniform("rtRight"), basis.right);
+  vec3Uniform(uniform("rtUp"), basis.up);
+  glUniform1f(uniform("rtPlaneHalf"), float(imagePlaneHalfHeight(s.camera)));
+  glUniform1i(uniform("rtOrtho"), s.camera.projection == Projection::Orthographic);
+
+  const Tracing& t = s.tracing;
+  glUniform1i(uniform("rtIntervals"), std::clamp(t.intervals, 1, 4096));
+  glUniform1i(uniform("rtMaxBisections"), std::clamp(t.maxBisections, 1, 200));
+  glUniform1i(uniform("rtHits"), std::clamp(t.hits, 1, 8));
+  glUniform1i(uniform("rtSamples"), std::clamp(s.samples, 1, 16));
+  const double epsilon = std::isfinite(t.epsilon) && t.epsilon > 0 ? t.epsilon : 1e-6;
+  glUniform1f(uniform("rtEpsilon"), float(epsilon));
+  glUniform1i(uniform("rtTangentRoots"), tangentRoots_);
+
+  const Lights& l = s.lights;
+  glUniform1f(uniform("rtAmbient"), float(l.ambient));
+  Vec3 dir = l.directional.direction;
+  if (dir == Vec3{0, 0, 0}) dir = {0, 0, -1};  // a zero direction would normalize to NaN
+  vec3Uniform(uniform("rtDirLightDir"), dir);
+  vec3Uniform(uniform("rtDirLight"), l.directional.color, l.directional.intensity);
+  vec3Uniform(uniform("rtPointPos"), l.point.position);
+  vec3Uniform(uniform("rtPointLight"), l.point.color, l.point.intensity);
+
+  const Materials& m = s.materials;
+  vec3Uniform(uniform("rtFrontColor"), m.front.color);
+  vec3Uniform(uniform("rtBackColor"), m.back.color);
+  glUniform2f(uniform("rtFrontPhong"), float(m.front.specular), float(std::max(m.front.shininess, 0.0)));
+  glUniform2f(uniform("rtBackPhong"), float(m.back.specular), float(std::max(m.back.shininess, 0.0)));
+
+  glUniform1i(uniform("rtSilhouetteOn"), s.silhouette.enabled);
+  glUniform1f(uniform("rtSilhouetteThreshold"), float(s.silhouette.threshold));
+  vec3Uniform(uniform("rtSilhouetteColor"), s.silhouette.color);
+  glUniform1i(uniform("rtBorderOn"), s.border.enabled);
+  glUniform1f(uniform("rtBorderThreshold"), float(s.border.threshold));
+  vec3Uniform(uniform("rtBorderColor"), s.border.color);
+  glUniform1i(uniform("rtReflectionOn"), s.reflection.enabled);
+  glUniform1f(uniform("rtPrimaryWeight"), float(std::clamp(s.reflection.primaryWeight, 0.0, 1.0)));
+  glUniform1f(uniform("rtOpacity"), float(std::clamp(s.opacity, 0.0, 1.0)));
+  vec3Uniform(uniform("rtBackground"), s.background);
+
+  if (!params_.empty()) {
+    const int location = uniform("zs_params");
+    if (location >= 0) glUniform1fv(location, GLsizei(params_.size()), params_.data());
+  }
+}
+
+}  // namespace zs
