@@ -1,0 +1,68 @@
+// Templates are embedded faithfully, assembled in order with #line markers, and the whole
+// fragment shader and the vertex shader pass glslang.
+#include "codegen/shader_assembly.hpp"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "codegen/glsl_validation.hpp"
+#include "codegen_test_util.hpp"
+
+namespace zs::test {
+namespace {
+
+TEST(ShaderAssembly, EmbeddedTemplatesEqualTheFilesOnDisk) {
+  for (std::string_view name : {kPreludeTemplate, kRaytraceTemplate, kVertexTemplate}) {
+    SCOPED_TRACE(name);
+    EXPECT_EQ(shaderTemplate(name), readFile(sourceDir() / "shaders/templates" / name));
+  }
+}
+
+TEST(ShaderAssembly, UnknownTemplateIsALoudInternalError) {
+  try {
+    (void)shaderTemplate("no_such_template.glsl");
+    FAIL() << "expected std::logic_error";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("no_such_template.glsl"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find(std::string(kPreludeTemplate)), std::string::npos);
+  }
+}
+
+TEST(ShaderAssembly, PiecesInOrderWithLineDirectives) {
+  const std::optional<GlslFormula> glsl = generate("x^2 + y^2 + z^2 - 1");
+  ASSERT_TRUE(glsl);
+  const std::string shader = assembleFragmentShader(*glsl);
+  EXPECT_EQ(shader.rfind("#version 330 core\n", 0), 0u);
+  const auto prelude = shader.find("float zs_F(vec3 p);");
+  const auto block = shader.find("#line 1 1\n" + glsl->source);
+  const auto main = shader.find("#line 1 2\n" + std::string(shaderTemplate(kRaytraceTemplate)));
+  ASSERT_NE(prelude, std::string::npos);
+  ASSERT_NE(block, std::string::npos);
+  ASSERT_NE(main, std::string::npos);
+  EXPECT_LT(prelude, block);
+  EXPECT_LT(block, main);
+}
+
+TEST(ShaderAssembly, FragmentAndVertexShadersPassGlslang) {
+  const std::optional<GlslFormula> glsl = generate("a x^2 + y^2 + z^2 - 1");
+  ASSERT_TRUE(glsl);
+  const ValidationResult fragment = validateGlsl(assembleFragmentShader(*glsl), Stage::Fragment);
+  EXPECT_TRUE(fragment.ok) << formatInternalShaderError("fragment shader", fragment);
+  const ValidationResult vertex = validateGlsl(vertexShaderSource(), Stage::Vertex);
+  EXPECT_TRUE(vertex.ok) << formatInternalShaderError("vertex shader", vertex);
+}
+
+TEST(ShaderAssembly, ErrorsInTheFormulaBlockPointIntoIt) {
+  // A deliberately broken block: glslang's log must name string 1 at the broken line.
+  GlslFormula broken;
+  broken.source = "float zs_F(vec3 p) { return 1.0; }\nvec4 zs_FGrad(vec3 p) {\n  return oops;\n}\n";
+  const ValidationResult result = validateGlsl(assembleFragmentShader(broken), Stage::Fragment);
+  EXPECT_FALSE(result.ok);
+  EXPECT_NE(result.log.find("1:3:"), std::string::npos) << result.log;
+  EXPECT_NE(result.numberedSource.find("1:3 |   return oops;"), std::string::npos)
+      << result.numberedSource;
+}
+
+}  // namespace
+}  // namespace zs::test
