@@ -6,7 +6,9 @@
 // every double-precision result at points of the operands. glibc's elementary functions
 // are not correctly rounded (its documented errors for double are at most a few ulps), so
 // their endpoints move kLibmUlps outward.
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace zs::detail {
@@ -14,8 +16,15 @@ namespace zs::detail {
 inline constexpr int kLibmUlps = 4;
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
-inline double down(double v) { return std::nextafter(v, -kInf); }
-inline double up(double v) { return std::nextafter(v, kInf); }
+// std::nextafter(v, +-inf), inlined: stepping the bit pattern moves one ulp away from or
+// towards zero (the evaluator spends a large share of its time here otherwise).
+inline double up(double v) {
+  if (!(v < kInf)) return v;  // +inf and NaN stay
+  if (v == 0.0) return std::numeric_limits<double>::denorm_min();
+  const auto bits = std::bit_cast<std::uint64_t>(v);
+  return std::bit_cast<double>(v > 0 ? bits + 1 : bits - 1);
+}
+inline double down(double v) { return -up(-v); }
 
 inline double down(double v, int ulps) {
   for (int i = 0; i < ulps; ++i) v = down(v);
