@@ -1,7 +1,9 @@
 // ---- raytrace_main.frag.glsl (render stage): follows the prelude and the generated
 // formula block, which define zs_FGrad(p) = (grad F, F). docs/renderer.md explains the
 // design; docs/camera.md the camera contract. zs_FGrad has exactly ONE call site (the
-// march loop): every call site is inlined and multiplies llvmpipe's JIT time.
+// march loop) and shade() one: every call site is inlined and multiplies llvmpipe's JIT
+// time. No array is indexed by a run-time value: llvmpipe keeps constant-indexed arrays
+// in registers but spills dynamically indexed ones to memory, and memory is what costs.
 
 // Hierarchy: one uvec4 per node (render/hierarchy_gpu.hpp repacks the 12-float layout):
 // the box as 16-bit corners on a 2^14 grid over the root box, w = escape << 1 | isLeaf.
@@ -29,9 +31,9 @@ uniform vec3 rtSilhouetteColor, rtBorderColor, rtBackground;
 layout(location = 0) out vec4 rtOutColor;
 layout(location = 1) out float rtOutDepth;
 
-const int RT_MAX_SEGS = 16;   // merged leaf segments per ray; overflow widens a neighbour
-const int RT_MAX_HITS = 8;    // upper bound of tracing.hits
-const int RT_MAX_EVALS = 4096;  // safety bound on F evaluations per ray
+const int RT_SEGS = 8;         // merged leaf segments per ray; overflow widens a neighbour
+const int RT_MAX_HITS = 8;     // upper bound of tracing.hits
+const int RT_MAX_EVALS = 4096; // safety bound on F evaluations per ray
 const int SAMPLE = 0, BISECT_F = 1, BISECT_D = 2;
 
 // Ray parameter interval inside the box [lo, hi]; empty when x > y.
@@ -39,141 +41,6 @@ vec2 slab(vec3 lo, vec3 hi, vec3 ro, vec3 inv) {
   vec3 a = (lo - ro) * inv, b = (hi - ro) * inv;
   vec3 n = min(a, b), f = max(a, b);
   return vec2(max(max(n.x, n.y), n.z), min(min(f.x, f.y), f.z));
-}
-
-// Traverses the hierarchy (stackless, pre-order + escape indices), collects the leaf
-// segments in t order, merged where they overlap, then marches them: sign samples,
-// bisection on F, and bisection on dF/dt where |F| has a local minimum between samples
-// (tangent roots and close root pairs that pure sign sampling misses). Returns the number
-// of hits (t, gradient at the hit) found, nearest first, at most `wanted`.
-int traceRay(vec3 ro, vec3 rd, float tStart, int wanted, out float hitT[RT_MAX_HITS],
-             out vec4 hitG[RT_MAX_HITS]) {
-  for (int k = 0; k < RT_MAX_HITS; ++k) { hitT[k] = 0.0; hitG[k] = vec4(0.0); }
-  vec3 safeDir = mix(rd, vec3(1e-30), equal(rd, vec3(0.0)));
-  vec3 inv = 1.0 / safeDir;
-  vec2 dom = slab(rtDomainMin, rtDomainMax, ro, inv);
-  dom.x = max(dom.x, tStart);
-  if (dom.x > dom.y || rtNodeCount == 0) return 0;
-
-  // Segments (ta, tb, number of leaf segments merged in), sorted by t. Three float arrays,
-  // not one vec3 array: Mesa 22.3 llvmpipe miscompiled the element-shifting copies
-  // seg[m] = seg[m - 1] of a vector array (docs/renderer.md).
-  float segA[RT_MAX_SEGS], segB[RT_MAX_SEGS], segN[RT_MAX_SEGS];
-  int nseg = 0;
-  for (int i = 0; i < rtNodeCount;) {
-    uvec4 node = texelFetch(rtHierarchy, i);
-    vec3 qlo = vec3(node.x & 0xFFFFu, node.x >> 16u, node.y & 0xFFFFu);
-    vec3 qhi = vec3(node.y >> 16u, node.z & 0xFFFFu, node.z >> 16u);
-    vec2 tt = slab(rtRootMin + qlo * rtCell - rtPad, rtRootMin + qhi * rtCell + rtPad, ro, inv);
-    float a = max(tt.x, dom.x), b = min(tt.y, dom.y);
-    bool hit = a <= b, leaf = (node.w & 1u) != 0u;
-    i = (hit && !leaf) ? i + 1 : int(node.w >> 1u);
-    if (!(hit && leaf)) continue;
-    int k = 0;
-    while (k < nseg && segB[k] < a) ++k;
-    if (k < nseg && segA[k] <= b) {  // overlaps segment k: widen it, absorb followers
-      segA[k] = min(segA[k], a); segB[k] = max(segB[k], b); segN[k] += 1.0;
-      while (k + 1 < nseg && segA[k + 1] <= segB[k]) {
-        segB[k] = max(segB[k], segB[k + 1]); segN[k] += segN[k + 1];
-        for (int m = k + 1; m + 1 < nseg; ++m) {
-          segA[m] = segA[m + 1]; segB[m] = segB[m + 1]; segN[m] = segN[m + 1];
-        }
-        --nseg;
-      }
-    } else if (nseg < RT_MAX_SEGS) {
-      for (int m = nseg; m > k; --m) {
-        segA[m] = segA[m - 1]; segB[m] = segB[m - 1]; segN[m] = segN[m - 1];
-      }
-      segA[k] = a; segB[k] = b; segN[k] = 1.0;
-      ++nseg;
-    } else {  // full: widen the neighbour with the smaller gap (conservative, never a miss)
-      int m = (k == nseg || (k > 0 && a - segB[k - 1] < segA[k] - b)) ? k - 1 : k;
-      segA[m] = min(segA[m], a); segB[m] = max(segB[m], b); segN[m] += 1.0;
-    }
-  }
-  if (nseg == 0) return 0;
-
-  int found = 0, mode = SAMPLE, si = 0, k = 0, steps = 1, bisections = 0;
-  float t0 = 0.0, h = 0.0, tm = 0.0;
-  float ta = 0.0, fa = 0.0, da = 0.0;  // previous sample (value, derivative along rd)
-  float ts = 0.0, fs = 0.0, ds = 0.0;  // the sample that opened the current bisection
-  float lo = 0.0, flo = 0.0, hi = 0.0, fhi = 0.0;
-  float tSplit = 0.0, fSplit = 0.0, dSplit = 0.0;  // extremum separating a root pair
-  bool havePrev = false, nextSample = false, loadSegment = true, split = false;
-  for (int it = 0; it < RT_MAX_EVALS; ++it) {
-    if (loadSegment) {
-      if (si >= nseg) break;
-      t0 = segA[si];
-      steps = max(1, int(segN[si]) * rtIntervals);
-      h = (segB[si] - t0) / float(steps);
-      k = 0; tm = t0; havePrev = false; loadSegment = false;
-    }
-    vec4 g = zs_FGrad(ro + tm * rd);
-    float f = g.w, df = dot(g.xyz, rd);
-    bool record = false;
-    float tHit = tm;
-    nextSample = false;
-    if (zs_isUndefined(f)) {
-      // Outside F's domain: its boundary is not the surface. A bisection that runs into it
-      // is abandoned and sampling resumes after the sample that opened it.
-      havePrev = mode != SAMPLE;
-      ta = ts; fa = fs; da = ds;
-      mode = SAMPLE; split = false; nextSample = true;
-    } else if (mode == SAMPLE) {
-      if (f == 0.0) {
-        record = true; nextSample = true; havePrev = false;
-      } else if (havePrev && sign(f) != sign(fa)) {
-        mode = BISECT_F; lo = ta; flo = fa; hi = tm; fhi = f;
-      } else if (havePrev && rtTangentRoots && fa * da < 0.0 && f * df > 0.0) {
-        mode = BISECT_D; lo = ta; flo = fa; hi = tm; fhi = f;  // |F| fell, then rose
-      } else {
-        ta = tm; fa = f; da = df; havePrev = true; nextSample = true;
-      }
-      if (mode != SAMPLE) { ts = tm; fs = f; ds = df; bisections = 0; tm = 0.5 * (lo + hi); }
-    } else if (mode == BISECT_F) {  // thesis Algorithm 1 on F, bracket [lo, hi]
-      ++bisections;
-      if (sign(f) == sign(flo)) { lo = tm; flo = f; } else { hi = tm; fhi = f; }
-      if (f == 0.0 || hi - lo <= rtEpsilon || bisections >= rtMaxBisections) {
-        // One secant step inside the final bracket: depth accurate far below epsilon.
-        tHit = f == 0.0 ? tm : clamp(lo + (hi - lo) * flo / (flo - fhi), lo, hi);
-        record = true; mode = SAMPLE;
-        if (split) {  // first root of a pair: re-sample [tSplit, ts] for the second one
-          ta = tSplit; fa = fSplit; da = dSplit; havePrev = true; tm = ts; split = false;
-        } else {
-          ta = ts; fa = fs; da = ds; havePrev = true; nextSample = true;
-        }
-      } else {
-        tm = 0.5 * (lo + hi);
-      }
-    } else {  // BISECT_D: bisection on sign(F_lo) * dF/dt, negative while |F| falls
-      ++bisections;
-      if (sign(f) != sign(flo)) {  // F crossed zero: two roots; bisect the first one
-        mode = BISECT_F; hi = tm; fhi = f; bisections = 0;
-        split = true; tSplit = tm; fSplit = f; dSplit = df;
-      } else {
-        if (sign(flo) * df < 0.0) lo = tm; else hi = tm;
-        if (hi - lo <= rtEpsilon || bisections >= rtMaxBisections) {
-          // A tangent root when F is within epsilon of zero in distance, |F|/|grad F|.
-          record = abs(f) <= rtEpsilon * length(g.xyz);
-          mode = SAMPLE; ta = ts; fa = fs; da = ds; havePrev = true; nextSample = true;
-        }
-      }
-      if (mode != SAMPLE) tm = 0.5 * (lo + hi);
-    }
-    if (record) {
-      vec3 p = ro + tHit * rd, slack = 1e-5 * (rtDomainMax - rtDomainMin);
-      if (all(greaterThanEqual(p, rtDomainMin - slack)) &&
-          all(lessThanEqual(p, rtDomainMax + slack)) && found < RT_MAX_HITS) {
-        hitT[found] = tHit; hitG[found] = g; ++found;
-        if (found >= wanted) break;
-      }
-    }
-    if (nextSample) {
-      ++k;
-      if (k > steps) { ++si; loadSegment = true; } else { tm = t0 + float(k) * h; }
-    }
-  }
-  return found;
 }
 
 // Phong with an ambient term, the directional and the point light; front faces (gradient
@@ -209,9 +76,12 @@ void main() {
   // Depth comes from the pixel-center ray; an even N x N grid has none, so one more ray
   // (depth only) is traced there.
   int rays = grid + (n % 2 == 0 ? 1 : 0), centerRay = n % 2 == 0 ? grid : grid / 2;
-  int wanted = rtOpacity < 1.0 ? clamp(rtHits, 1, RT_MAX_HITS) : 1;
-  float inf = uintBitsToFloat(0x7F800000u), depth = inf;
+  float alpha = clamp(rtOpacity, 0.0, 1.0), w = rtReflectionOn ? rtPrimaryWeight : 1.0;
+  int hitsWanted = alpha < 1.0 ? clamp(rtHits, 1, RT_MAX_HITS) : 1;
+  float depth = uintBitsToFloat(0x7F800000u);  // +inf: no hit
   vec3 sum = vec3(0.0);
+  vec3 safeOne = vec3(1e-30);
+
   for (int s = 0; s < rays; ++s) {
     vec2 offset = s < grid ? (vec2(s % n, s / n) + 0.5) / float(n) - 0.5 : vec2(0.0);
     vec2 q = pixel + offset + 0.5;
@@ -220,49 +90,168 @@ void main() {
     vec3 ro = rtOrtho ? rtEye + uv.x * rtRight + uv.y * rtUp : rtEye;
     vec3 rd = rtOrtho ? rtForward : normalize(rtForward + uv.x * rtRight + uv.y * rtUp);
     bool colorRay = s < grid;
-
-    // Pass 0: the primary ray; pass 1: one reflection ray off the first hit. One loop, so
-    // traceRay (and zs_FGrad inside it) is inlined once.
-    float primT[RT_MAX_HITS], passT[RT_MAX_HITS];
-    vec4 primG[RT_MAX_HITS], passG[RT_MAX_HITS];
-    int primCount = 0, reflCount = 0;
-    vec3 reflO = vec3(0.0), reflD = vec3(0.0);
-    vec4 reflG = vec4(0.0);
-    float reflT = 0.0;
-    for (int pass = 0; pass < 2; ++pass) {
-      bool reflect1 = pass == 1;
-      if (reflect1 && !(rtReflectionOn && colorRay && primCount > 0)) break;
-      vec3 o = ro, d = rd;
-      float tStart = 0.0;
-      if (reflect1) {
-        vec3 nrm = length(primG[0].xyz) > 0.0 ? normalize(primG[0].xyz) : -rd;
-        o = ro + primT[0] * rd;
-        d = reflect(rd, dot(nrm, rd) < 0.0 ? nrm : -nrm);
-        // Leave the surface before looking for the next hit.
-        tStart = max(4.0 * rtEpsilon, 1e-4 * length(rtDomainMax - rtDomainMin));
-        reflO = o; reflD = d;
-      }
-      int count = traceRay(o, d, tStart, reflect1 ? 1 : wanted, passT, passG);
-      if (reflect1) {
-        reflCount = count; reflT = passT[0]; reflG = passG[0];
-      } else {
-        primCount = count; primT = passT; primG = passG;
-      }
-    }
-    if (s == centerRay && primCount > 0) depth = primT[0];
-    if (!colorRay) continue;
-
-    vec3 reflColor = reflCount > 0 ? shade(reflO + reflT * reflD, reflG, reflD) : rtBackground;
-    // Front-to-back blending of the kept hits with the opacity; opaque stops at the first.
     vec3 color = vec3(0.0);
-    float transmit = 1.0, alpha = clamp(rtOpacity, 0.0, 1.0);
-    for (int k = 0; k < primCount; ++k) {
-      vec3 c = shade(ro + primT[k] * rd, primG[k], rd);
-      if (k == 0 && rtReflectionOn) c = mix(reflColor, c, rtPrimaryWeight);
-      color += transmit * alpha * c;
-      transmit *= 1.0 - alpha;
+    float firstT = -1.0;
+    vec4 firstG = vec4(0.0);
+
+    // Pass 0: the primary ray, its hits blended front to back with the opacity (the first
+    // hit weighted w when reflecting). Pass 1: one opaque reflection ray off the first hit,
+    // weighted alpha * (1 - w). One loop, so the march and zs_FGrad are inlined once.
+    for (int pass = 0; pass < 2; ++pass) {
+      vec3 o = ro, d = rd;
+      float tStart = 0.0, passAlpha = alpha, passScale = 1.0;
+      int wanted = hitsWanted;
+      if (pass == 1) {
+        if (!(rtReflectionOn && colorRay && firstT >= 0.0)) break;
+        vec3 nrm = length(firstG.xyz) > 0.0 ? normalize(firstG.xyz) : -rd;
+        o = ro + firstT * rd;
+        d = reflect(rd, dot(nrm, rd) < 0.0 ? nrm : -nrm);
+        tStart = max(4.0 * rtEpsilon, 1e-4 * length(rtDomainMax - rtDomainMin));  // leave the surface
+        passAlpha = 1.0; passScale = alpha * (1.0 - w); wanted = 1;
+      }
+      float transmit = 1.0;
+      int found = 0;
+      vec3 inv = 1.0 / mix(d, safeOne, equal(d, vec3(0.0)));
+      vec2 dom = slab(rtDomainMin, rtDomainMax, o, inv);
+      dom.x = max(dom.x, tStart);
+
+      // Gather: stackless walk (pre-order + escape), each leaf's [t0, t1] clipped to the
+      // domain and merged with the slots it overlaps. Slots are unsorted (segN = 0: free)
+      // so every access has a constant index; the march takes them nearest first.
+      float segA[RT_SEGS], segB[RT_SEGS], segN[RT_SEGS];
+      for (int m = 0; m < RT_SEGS; ++m) { segA[m] = 0.0; segB[m] = 0.0; segN[m] = 0.0; }
+      int count = dom.x <= dom.y ? rtNodeCount : 0;
+      for (int i = 0; i < count;) {
+        uvec4 node = texelFetch(rtHierarchy, i);
+        vec3 qlo = vec3(node.x & 0xFFFFu, node.x >> 16u, node.y & 0xFFFFu);
+        vec3 qhi = vec3(node.y >> 16u, node.z & 0xFFFFu, node.z >> 16u);
+        vec2 tt = slab(rtRootMin + qlo * rtCell - rtPad, rtRootMin + qhi * rtCell + rtPad, o, inv);
+        float a = max(tt.x, dom.x), b = min(tt.y, dom.y);
+        bool hit = a <= b, leaf = (node.w & 1u) != 0u;
+        i = (hit && !leaf) ? i + 1 : int(node.w >> 1u);
+        if (!(hit && leaf)) continue;
+        // Slots are pairwise disjoint, so those overlapping [a, b] are all that merge.
+        float na = a, nb = b, nn = 1.0;
+        for (int m = 0; m < RT_SEGS; ++m) {
+          if (segN[m] > 0.0 && segA[m] <= b && segB[m] >= a) {
+            na = min(na, segA[m]); nb = max(nb, segB[m]); nn += segN[m]; segN[m] = 0.0;
+          }
+        }
+        bool placed = false;
+        float bestGap = uintBitsToFloat(0x7F800000u);
+        int best = 0;
+        for (int m = 0; m < RT_SEGS; ++m) {
+          if (!placed && segN[m] == 0.0) { segA[m] = na; segB[m] = nb; segN[m] = nn; placed = true; }
+          float gap = max(segA[m] - nb, na - segB[m]);
+          if (gap < bestGap) { bestGap = gap; best = m; }
+        }
+        // All slots taken: widen the nearest one (conservative, never a miss; nothing lies
+        // between it and [na, nb], so the slots stay disjoint).
+        for (int m = 0; m < RT_SEGS; ++m) {
+          if (!placed && m == best) {
+            segA[m] = min(segA[m], na); segB[m] = max(segB[m], nb); segN[m] += nn;
+          }
+        }
+      }
+
+      // March: sign samples (tracing.intervals per merged leaf), bisection on F (thesis
+      // Algorithm 1) and, where |F| has a local minimum between two samples, bisection on
+      // dF/dt (tangent roots and close root pairs that sign sampling misses).
+      int mode = SAMPLE, k = 0, steps = 1, bisections = 0;
+      float t0 = 0.0, h = 0.0, tm = 0.0;
+      float ta = 0.0, fa = 0.0, da = 0.0;  // previous sample (value, derivative along d)
+      float ts = 0.0, fs = 0.0, ds = 0.0;  // the sample that opened the current bisection
+      float lo = 0.0, flo = 0.0, hi = 0.0, fhi = 0.0;
+      float tSplit = 0.0, fSplit = 0.0, dSplit = 0.0;  // extremum separating a root pair
+      bool havePrev = false, loadSegment = true, split = false;
+      for (int it = 0; it < RT_MAX_EVALS; ++it) {
+        if (loadSegment) {  // the nearest slot not marched yet
+          float segT0 = uintBitsToFloat(0x7F800000u), segT1 = 0.0, segCount = 0.0;
+          for (int m = 0; m < RT_SEGS; ++m) {
+            if (segN[m] > 0.0 && segA[m] < segT0) { segT0 = segA[m]; segT1 = segB[m]; segCount = segN[m]; }
+          }
+          if (segCount == 0.0) break;
+          for (int m = 0; m < RT_SEGS; ++m) {
+            if (segA[m] == segT0) segN[m] = 0.0;
+          }
+          t0 = segT0;
+          steps = max(1, int(segCount) * rtIntervals);
+          h = (segT1 - t0) / float(steps);
+          k = 0; tm = t0; havePrev = false; loadSegment = false;
+        }
+        vec4 g = zs_FGrad(o + tm * d);
+        float f = g.w, df = dot(g.xyz, d);
+        bool record = false, nextSample = false;
+        float tHit = tm;
+        if (zs_isUndefined(f)) {
+          // Outside F's domain: its boundary is not the surface. A bisection that runs into
+          // it is abandoned and sampling resumes after the sample that opened it.
+          havePrev = mode != SAMPLE;
+          ta = ts; fa = fs; da = ds;
+          mode = SAMPLE; split = false; nextSample = true;
+        } else if (mode == SAMPLE) {
+          if (f == 0.0) {
+            record = true; nextSample = true; havePrev = false;
+          } else if (havePrev && sign(f) != sign(fa)) {
+            mode = BISECT_F; lo = ta; flo = fa; hi = tm; fhi = f;
+          } else if (havePrev && rtTangentRoots && fa * da < 0.0 && f * df > 0.0) {
+            mode = BISECT_D; lo = ta; flo = fa; hi = tm; fhi = f;  // |F| fell, then rose
+          } else {
+            ta = tm; fa = f; da = df; havePrev = true; nextSample = true;
+          }
+          if (mode != SAMPLE) { ts = tm; fs = f; ds = df; bisections = 0; tm = 0.5 * (lo + hi); }
+        } else if (mode == BISECT_F) {  // thesis Algorithm 1, bracket [lo, hi]
+          ++bisections;
+          if (sign(f) == sign(flo)) { lo = tm; flo = f; } else { hi = tm; fhi = f; }
+          if (f == 0.0 || hi - lo <= rtEpsilon || bisections >= rtMaxBisections) {
+            // One secant step inside the final bracket: depth accurate far below epsilon.
+            tHit = f == 0.0 ? tm : clamp(lo + (hi - lo) * flo / (flo - fhi), lo, hi);
+            record = true; mode = SAMPLE; havePrev = true;
+            if (split) {  // first root of a pair: re-sample [tSplit, ts] for the second one
+              ta = tSplit; fa = fSplit; da = dSplit; tm = ts; split = false;
+            } else {
+              ta = ts; fa = fs; da = ds; nextSample = true;
+            }
+          } else {
+            tm = 0.5 * (lo + hi);
+          }
+        } else {  // BISECT_D: bisection on sign(F_lo) * dF/dt, negative while |F| falls
+          ++bisections;
+          if (sign(f) != sign(flo)) {  // F crossed zero: two roots; bisect the first one
+            mode = BISECT_F; hi = tm; fhi = f; bisections = 0;
+            split = true; tSplit = tm; fSplit = f; dSplit = df;
+          } else {
+            if (sign(flo) * df < 0.0) lo = tm; else hi = tm;
+            if (hi - lo <= rtEpsilon || bisections >= rtMaxBisections) {
+              // A tangent root when F is within epsilon of zero in distance, |F|/|grad F|.
+              record = abs(f) <= rtEpsilon * length(g.xyz);
+              mode = SAMPLE; ta = ts; fa = fs; da = ds; havePrev = true; nextSample = true;
+            }
+          }
+          if (mode != SAMPLE) tm = 0.5 * (lo + hi);
+        }
+        if (record) {
+          vec3 p = o + tHit * d, slack = 1e-5 * (rtDomainMax - rtDomainMin);
+          if (all(greaterThanEqual(p, rtDomainMin - slack)) &&
+              all(lessThanEqual(p, rtDomainMax + slack))) {  // the closed domain box only
+            if (pass == 0 && found == 0) { firstT = tHit; firstG = g; }
+            if (colorRay) {
+              float share = (pass == 0 && found == 0) ? w : 1.0;
+              color += passScale * transmit * passAlpha * share * shade(p, g, d);
+            }
+            transmit *= 1.0 - passAlpha;
+            if (++found >= wanted) break;
+          }
+        }
+        if (nextSample) {
+          ++k;
+          if (k > steps) loadSegment = true; else tm = t0 + float(k) * h;
+        }
+      }
+      color += passScale * transmit * rtBackground;  // what the kept hits let through
     }
-    sum += color + transmit * rtBackground;
+    if (s == centerRay && firstT >= 0.0) depth = firstT;
+    if (colorRay) sum += color;
   }
   rtOutColor = vec4(sum / float(grid), 1.0);
   rtOutDepth = depth;

@@ -1,0 +1,79 @@
+// zs_render_frame_time FORMULA [WxH] [octree level] [frames] [--osmesa] [--no-tangent]
+//   [--png out.png]: median glFinish-timed frame time of the real pipeline at the default
+// settings (camera (0,0,4), domain [-1.5,1.5]^3), plus the time to the first frame
+// (shader JIT). Not a test: the numbers in docs/renderer.md come from here.
+#include <glad/gl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+#include "render_support.hpp"
+
+using namespace zs;
+using Clock = std::chrono::steady_clock;
+
+static double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: %s FORMULA [WxH] [level] [frames] [--osmesa] [--no-tangent] [--png out.png]\n", argv[0]);
+    return 2;
+  }
+  int w = 800, h = 600, level = 3, frames = 15;
+  bool osmesa = false, tangent = true;
+  const char* png = nullptr;
+  std::vector<const char*> positional;
+  for (int i = 2; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--osmesa")) osmesa = true;
+    else if (!std::strcmp(argv[i], "--no-tangent")) tangent = false;
+    else if (!std::strcmp(argv[i], "--png") && i + 1 < argc) png = argv[++i];
+    else positional.push_back(argv[i]);
+  }
+  if (positional.size() > 0) std::sscanf(positional[0], "%dx%d", &w, &h);
+  if (positional.size() > 1) level = std::atoi(positional[1]);
+  if (positional.size() > 2) frames = std::max(1, std::atoi(positional[2]));
+
+  std::string error;
+  if (!test::context(osmesa ? Backend::OsMesa : Backend::Egl, error)) {
+    std::fprintf(stderr, "no GL context: %s\n", error.c_str());
+    return 1;
+  }
+  test::SurfaceSpec spec{argv[1]};
+  spec.octreeLevel = level;
+  const auto start = Clock::now();
+  auto tracer = test::makeTracer(spec, error);
+  if (!tracer) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    return 1;
+  }
+  tracer->setTangentRoots(tangent);
+  RenderSettings settings = test::testSettings({0, 0, 4});
+  if (std::string e = tracer->drawOffscreen(settings, spec.domain, w, h); !e.empty()) {
+    std::fprintf(stderr, "%s\n", e.c_str());
+    return 1;
+  }
+  glFinish();
+  const double first = msSince(start);
+  std::vector<double> times;
+  for (int f = 0; f < frames; ++f) {
+    const auto t = Clock::now();
+    tracer->drawOffscreen(settings, spec.domain, w, h);
+    glFinish();
+    times.push_back(msSince(t));
+  }
+  std::sort(times.begin(), times.end());
+  std::printf("%s  %dx%d level %d tangent %s: median %.1f ms (min %.1f, max %.1f), first frame %.0f ms\n",
+              argv[1], w, h, level, tangent ? "on" : "off", times[times.size() / 2], times.front(),
+              times.back(), first);
+  if (png) {
+    Frame frame = tracer->render(settings, spec.domain, w, h);
+    if (!frame.error.empty() || !writePng(png, frame.color).empty()) return 1;
+  }
+  return 0;
+}
