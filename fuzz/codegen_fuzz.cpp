@@ -1,0 +1,78 @@
+// libFuzzer target for the code generator: every formula the parser accepts must yield GLSL
+// that glslang accepts (anything else aborts with the internal-error report). Two kinds of
+// input, chosen by the low bit of the first byte:
+//   even: the remaining bytes are formula text, so coverage guidance explores the whole
+//         language, including near-misses the parser rejects;
+//   odd:  the next 8 bytes seed the random formula generator (tests/support) and the byte
+//         after them picks its depth and parameter count: always-valid formulas, where a
+//         parse error is a generator bug and aborts too.
+// The shader validated is the prelude, the formula block and a minimal main() that calls
+// zs_F and zs_FGrad: the real ray tracer adds ~5 ms of glslang time per input without
+// touching generated code (the ctest validates it with the real template).
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <random>
+#include <string>
+#include <variant>
+
+#include "codegen/emit_glsl.hpp"
+#include "codegen/glsl_validation.hpp"
+#include "codegen/shader_assembly.hpp"
+#include "expr/derivative.hpp"
+#include "parser/parser.hpp"
+#include "support/random_formula.hpp"
+
+namespace {
+
+// Bounds the work per input: glslang time grows with the formula's size.
+constexpr std::size_t kMaxTextBytes = 4096;
+
+std::string fromGenerator(const std::uint8_t* data, std::size_t size) {
+  std::uint64_t seed = 0;
+  std::memcpy(&seed, data, size < 8 ? size : 8);
+  std::mt19937_64 rng(seed);
+  zs::test::RandomFormulaOptions options;
+  const std::uint8_t knobs = size > 8 ? data[8] : 0;
+  options.maxDepth = 1 + knobs % 8;
+  options.paramCount = (knobs / 8) % 11;
+  return zs::test::randomFormula(rng, options);
+}
+
+std::string testShader(const zs::GlslFormula& formula) {
+  std::string s(zs::shaderTemplate(zs::kPreludeTemplate));
+  s += "#line 1 1\n" + formula.source;
+  s += "#line 1 2\nout vec4 zs_color;\n"
+       "void main() {\n"
+       "  vec3 p = gl_FragCoord.xyz;\n"
+       "  zs_color = zs_FGrad(p) + vec4(zs_F(p));\n"
+       "}\n";
+  return s;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return 0;
+  const bool generated = (data[0] & 1) != 0;
+  const std::string text = generated ? fromGenerator(data + 1, size - 1)
+                                     : std::string(reinterpret_cast<const char*>(data + 1),
+                                                   std::min(size - 1, kMaxTextBytes));
+  zs::ParseResult parsed = zs::parseFormula(text);
+  if (auto* error = std::get_if<zs::ParseError>(&parsed)) {
+    if (!generated) return 0;
+    std::fprintf(stderr, "the random formula generator produced an invalid formula:\n%s\n",
+                 zs::formatError(text, *error).c_str());
+    std::abort();
+  }
+  zs::Formula& formula = std::get<zs::Formula>(parsed);
+  const zs::GlslFormula glsl = zs::emitFormulaGlsl(formula);
+  const zs::ValidationResult result = zs::validateGlsl(testShader(glsl), zs::Stage::Fragment);
+  if (!result.ok) {
+    std::fprintf(stderr, "formula: %s\n%s\n", text.c_str(),
+                 zs::formatInternalShaderError("fragment shader", result).c_str());
+    std::abort();
+  }
+  return 0;
+}
