@@ -74,7 +74,8 @@ class Walker {
       stack.pop_back();
       if (tasks && cell.level == stopLevel) {
         tasks->push_back(cell);
-        leaves.push_back({{}, -1, {std::uint32_t(tasks->size() - 1), 0, 0}});  // task marker
+        // A placeholder (level -1, cell[0] = task index) keeps the task's place in pre-order.
+        leaves.push_back({{}, -1, {std::uint32_t(tasks->size() - 1), 0, 0}});
         continue;
       }
       const Decision d = decide(cell);
@@ -165,8 +166,8 @@ OctreeResult buildOctree(const Formula& formula, std::span<const double> params,
   const int split = std::min(kSplitLevel, settings.level);
   std::vector<OctreeLeaf> top;
   std::vector<Cell> tasks;
-  Walker main(shared);
-  main.walk(Cell{}, top, split, split < settings.level ? &tasks : nullptr);
+  Walker topWalker(shared);
+  topWalker.walk(Cell{}, top, split, split < settings.level ? &tasks : nullptr);
 
   unsigned threads = settings.threads ? settings.threads : std::thread::hardware_concurrency();
   threads = std::clamp(threads, 1u, unsigned(std::max<std::size_t>(tasks.size(), 1)));
@@ -184,7 +185,7 @@ OctreeResult buildOctree(const Formula& formula, std::span<const double> params,
       });
     }
   }
-  main.flushBudget();
+  topWalker.flushBudget();
   if (shared.overBudget)
     return OctreeError{"octree build stopped: more than " + std::to_string(settings.nodeBudget) +
                        " boxes tested (the node budget) before reaching level " +
@@ -195,7 +196,7 @@ OctreeResult buildOctree(const Formula& formula, std::span<const double> params,
   tree.domain = domain;
   tree.settings = settings;
   tree.threads = threads;
-  tree.levels = main.stats();
+  tree.levels = topWalker.stats();
   for (const auto& s : stats)
     for (std::size_t l = 0; l < s.size(); ++l) {
       tree.levels[l].tested += s[l].tested;

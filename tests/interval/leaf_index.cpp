@@ -1,11 +1,13 @@
 #include "leaf_index.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 namespace zs::test {
 
 LeafIndex::LeafIndex(const Octree& tree) : tree_(tree) {
+  assert(tree.settings.level < 16);  // the key packs the level into 4 bits
   leaves_.reserve(tree.leaves.size());
   for (std::size_t i = 0; i < tree.leaves.size(); ++i) {
     const OctreeLeaf& l = tree.leaves[i];
