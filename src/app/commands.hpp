@@ -9,5 +9,10 @@ void addCheckCommand(CLI::App& app);
 void addOctreeCommand(CLI::App& app);
 void addShaderCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
+void addBenchCommand(CLI::App& app);
+void addViewCommand(CLI::App& app);
+
+// `zeroset` with no arguments: the formula prompt (repl/prompt.hpp).
+int runPrompt();
 
 }  // namespace zs::app

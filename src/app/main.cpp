@@ -9,6 +9,7 @@
 #endif
 
 int main(int argc, char** argv) {
+  if (argc == 1) return zs::app::runPrompt();
   CLI::App app{"zeroset - see implicit surfaces F(x,y,z) = 0"};
   app.set_version_flag("--version", std::string("zeroset ") + ZS_VERSION);
   app.require_subcommand(1);
@@ -16,6 +17,8 @@ int main(int argc, char** argv) {
   zs::app::addRenderCommand(app);
   zs::app::addOctreeCommand(app);
   zs::app::addShaderCommand(app);
+  zs::app::addBenchCommand(app);
+  zs::app::addViewCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,72 @@
+// `zeroset view [SCENE|FORMULA] [--set KEY=VALUE]... [--output-dir DIR] [--drag-scale N]
+// [--log]`: the interactive viewer (docs/viewer.md). Without an input it opens on the first
+// example surface.
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <variant>
+
+#include "app/commands.hpp"
+#include "app/scene_args.hpp"
+#include "app/viewer/viewer.hpp"
+
+namespace zs::app {
+namespace {
+
+struct ViewArgs {
+  SceneArgs scene;
+  std::string outputDir;
+  int dragScale = 0;
+  bool log = false;
+};
+
+int runView(const ViewArgs& args) {
+  ViewerOptions options;
+  if (args.scene.input.empty()) {
+    std::vector<Example> examples = listExamples(findExamplesDir());
+    auto first = loadExample(examples.front());  // never empty: built-ins at worst
+    if (auto* err = std::get_if<std::string>(&first)) {
+      std::cerr << *err;
+      return 1;
+    }
+    options.scene = std::get<Scene>(first);
+    options.title = "zeroset - " + examples.front().name;
+  } else {
+    std::optional<Scene> scene = loadSceneArgs(args.scene);
+    if (!scene) return 1;
+    options.scene = *scene;
+    options.title = "zeroset - " + args.scene.input;
+  }
+  const char* envDir = std::getenv("ZS_OUTPUT_DIR");
+  options.outputDir = !args.outputDir.empty() ? args.outputDir
+                      : envDir && *envDir     ? envDir
+                                              : ".";
+  options.dragScale = args.dragScale;
+  options.log = args.log;
+  std::string error;
+  std::unique_ptr<Viewer> viewer = Viewer::open(options, error);
+  if (!viewer) {
+    std::cerr << "error: cannot open a window: " << error << "\n"
+              << "hint: without a display, use `zeroset render` (or run under xvfb-run)\n";
+    return 1;
+  }
+  viewer->run();
+  return 0;
+}
+
+}  // namespace
+
+void addViewCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("view", "Open the interactive viewer (see docs/viewer.md)");
+  auto args = std::make_shared<ViewArgs>();
+  addSceneOptions(*cmd, args->scene, false);
+  cmd->add_option("--output-dir", args->outputDir,
+                  "folder for screenshots and saved scenes (default: $ZS_OUTPUT_DIR or .)");
+  cmd->add_option("--drag-scale", args->dragScale,
+                  "resolution divisor while dragging (default: adaptive, ~30 fps)")
+      ->check(CLI::Range(1, 8));
+  cmd->add_flag("--log", args->log, "print events (ready, builds, key actions) on stdout");
+  cmd->callback([args] { std::exit(runView(*args)); });
+}
+
+}  // namespace zs::app

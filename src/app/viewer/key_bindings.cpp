@@ -1,0 +1,117 @@
+// Key table and the scene edits behind the keys. Lowercase increases or toggles, Shift
+// decreases: two keys per ± option, as in the thesis prototype's list (chapter 5.1).
+#include "app/viewer/key_bindings.hpp"
+
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+namespace zs::app {
+namespace {
+
+constexpr int S = GLFW_MOD_SHIFT;
+constexpr int C = GLFW_MOD_CONTROL;
+
+constexpr std::array<KeyBinding, 22> kBindings{{
+    {GLFW_KEY_N, 0, Action::NextExample, "N", "next example surface"},
+    {GLFW_KEY_P, 0, Action::PrevExample, "P", "previous example surface"},
+    {GLFW_KEY_D, 0, Action::DirLightUp, "D", "directional light brighter (+0.1)"},
+    {GLFW_KEY_D, S, Action::DirLightDown, "Shift+D", "directional light dimmer (-0.1)"},
+    {GLFW_KEY_L, 0, Action::PointLightUp, "L", "point light brighter (+0.1)"},
+    {GLFW_KEY_L, S, Action::PointLightDown, "Shift+L", "point light dimmer (-0.1)"},
+    {GLFW_KEY_B, 0, Action::ToggleBorder, "B", "toggle the domain border highlight"},
+    {GLFW_KEY_S, 0, Action::ToggleSilhouette, "S", "toggle the silhouette highlight"},
+    {GLFW_KEY_E, 0, Action::EpsilonUp, "E", "epsilon x10 (coarser roots, faster)"},
+    {GLFW_KEY_E, S, Action::EpsilonDown, "Shift+E", "epsilon /10 (finer roots)"},
+    {GLFW_KEY_O, 0, Action::LevelUp, "O", "octree level +1 (tighter spheres)"},
+    {GLFW_KEY_O, S, Action::LevelDown, "Shift+O", "octree level -1"},
+    {GLFW_KEY_I, 0, Action::IntervalsUp, "I", "intervals per segment +1"},
+    {GLFW_KEY_I, S, Action::IntervalsDown, "Shift+I", "intervals per segment -1"},
+    {GLFW_KEY_C, 0, Action::Screenshot, "C", "screenshot: write a PNG at window size"},
+    {GLFW_KEY_S, C, Action::SaveScene, "Ctrl+S", "save the current view as a .surf"},
+    {GLFW_KEY_F, 0, Action::FocusFormula, "F", "type a formula (focus the text box)"},
+    {GLFW_KEY_H, 0, Action::TogglePanel, "H", "hide / show the panel"},
+    {GLFW_KEY_R, 0, Action::ResetView, "R", "reset camera and lights to the loaded scene"},
+    {GLFW_KEY_Q, C, Action::Quit, "Ctrl+Q", "quit"},
+    {GLFW_KEY_RIGHT, 0, Action::NextExample, "Right", "next example surface"},
+    {GLFW_KEY_LEFT, 0, Action::PrevExample, "Left", "previous example surface"},
+}};
+
+std::string format(const char* what, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%s %g", what, value);
+  return text;
+}
+
+Effect step(double& value, double delta, const char* what, std::string& message) {
+  value = std::max(0.0, std::round((value + delta) * 1000) / 1000);
+  message = format(what, value);
+  return Effect::Redraw;
+}
+
+}  // namespace
+
+std::span<const KeyBinding> keyBindings() { return kBindings; }
+
+const KeyBinding* findBinding(int key, int mods) {
+  mods &= GLFW_MOD_SHIFT | GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER;
+  for (const KeyBinding& b : kBindings) {
+    if (b.key == key && b.mods == mods) return &b;
+  }
+  return nullptr;
+}
+
+Effect applyAction(Action action, Scene& scene, std::string& message) {
+  RenderSettings& r = scene.render;
+  switch (action) {
+    case Action::DirLightUp: return step(r.lights.directional.intensity, 0.1, "directional light", message);
+    case Action::DirLightDown: return step(r.lights.directional.intensity, -0.1, "directional light", message);
+    case Action::PointLightUp: return step(r.lights.point.intensity, 0.1, "point light", message);
+    case Action::PointLightDown: return step(r.lights.point.intensity, -0.1, "point light", message);
+    case Action::ToggleBorder:
+      r.border.enabled = !r.border.enabled;
+      message = r.border.enabled ? "border highlight on" : "border highlight off";
+      return Effect::Redraw;
+    case Action::ToggleSilhouette:
+      r.silhouette.enabled = !r.silhouette.enabled;
+      message = r.silhouette.enabled ? "silhouette on" : "silhouette off";
+      return Effect::Redraw;
+    case Action::EpsilonUp:
+    case Action::EpsilonDown: {
+      // Bounded to [1e-9, 1]: beyond that the bisection either never stops or finds nothing.
+      const double factor = action == Action::EpsilonUp ? 10.0 : 0.1;
+      r.tracing.epsilon = std::clamp(r.tracing.epsilon * factor, 1e-9, 1.0);
+      message = format("epsilon", r.tracing.epsilon);
+      return Effect::Redraw;
+    }
+    case Action::LevelUp:
+    case Action::LevelDown: {
+      const int before = scene.octree.level;
+      const int wanted = before + (action == Action::LevelUp ? 1 : -1);
+      scene.octree.level = std::clamp(wanted, 0, std::max(before, kMaxKeyLevel));
+      message = format("octree level", scene.octree.level);
+      return scene.octree.level == before ? Effect::None : Effect::Rebuild;
+    }
+    case Action::IntervalsUp:
+    case Action::IntervalsDown:
+      r.tracing.intervals =
+          std::clamp(r.tracing.intervals + (action == Action::IntervalsUp ? 1 : -1), 1, 1000);
+      message = format("intervals", r.tracing.intervals);
+      return Effect::Redraw;
+    case Action::NextExample:
+    case Action::PrevExample:
+    case Action::Screenshot:
+    case Action::SaveScene:
+    case Action::FocusFormula:
+    case Action::TogglePanel:
+    case Action::ResetView:
+    case Action::Quit:
+      return Effect::None;
+  }
+  return Effect::None;
+}
+
+}  // namespace zs::app

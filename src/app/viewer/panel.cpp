@@ -1,0 +1,113 @@
+// The panel's own sections: formula, parameters, statistics, keys. Settings widgets live in
+// panel_settings.cpp. Parameter values are edited in the scene's params list, which the
+// viewer turns into shader uniforms (and a rebuilt hierarchy).
+#include "app/viewer/panel.hpp"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <variant>
+
+#include "app/viewer/key_bindings.hpp"
+#include "parser/parser.hpp"
+#include "scene/scene_io.hpp"
+
+namespace zs::app {
+namespace {
+
+double& paramSlot(Scene& scene, const std::string& name) {
+  for (auto& [key, value] : scene.params) {
+    if (key == name) return value;
+  }
+  scene.params.emplace_back(name, kDefaultParamValue);
+  return scene.params.back().second;
+}
+
+void drawFormula(PanelState& state, PanelResult& result) {
+  ImGui::TextUnformatted("F(x,y,z) =");
+  if (state.focusFormula) {
+    ImGui::SetKeyboardFocusHere();
+    state.focusFormula = false;
+  }
+  ImGui::SetNextItemWidth(-1);
+  const bool enter = ImGui::InputText("##formula", &state.formula,
+                                      ImGuiInputTextFlags_EnterReturnsTrue);
+  if (ImGui::IsItemEdited()) {
+    result.formulaEdited = true;
+    checkFormulaText(state);
+  }
+  if (enter) result.formulaSubmitted = true;
+  if (!state.formulaError.empty()) {
+    // The default font is monospaced, so the caret lines up under the formula text.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    ImGui::TextUnformatted(state.formulaError.c_str());
+    ImGui::PopStyleColor();
+  }
+}
+
+void drawParams(Scene& scene, PanelState& state) {
+  if (state.paramNames.empty()) return;
+  ImGui::Separator();
+  ImGui::TextUnformatted("parameters");
+  for (std::size_t i = 0; i < state.paramNames.size(); ++i) {
+    const std::string& name = state.paramNames[i];
+    double& value = paramSlot(scene, name);
+    auto [lo, hi] = i < state.paramRanges.size() ? state.paramRanges[i] : paramRange(value);
+    ImGui::SliderScalar(name.c_str(), ImGuiDataType_Double, &value, &lo, &hi, "%.4g");
+  }
+}
+
+void drawStats(const PanelStats& s) {
+  ImGui::Separator();
+  ImGui::Text("%.1f fps, frame %.1f ms", s.fps, s.frameMs);
+  ImGui::Text("trace %.1f ms at %dx%d%s", s.traceMs, s.width / std::max(1, s.traceScale),
+              s.height / std::max(1, s.traceScale), s.traceScale > 1 ? " (reduced)" : "");
+  ImGui::Text("build %.0f ms: %zu leaves, %zu spheres%s", s.buildMs, s.leaves, s.spheres,
+              s.building ? " (building...)" : "");
+  if (!s.example.empty()) ImGui::Text("example: %s", s.example.c_str());
+  if (!s.status.empty()) ImGui::TextWrapped("%s", s.status.c_str());
+}
+
+void drawKeys() {
+  if (!ImGui::CollapsingHeader("keys and mouse")) return;
+  ImGui::TextUnformatted("left drag    rotate (arcball)");
+  ImGui::TextUnformatted("wheel        zoom");
+  ImGui::TextUnformatted("right drag   move the point light");
+  for (const KeyBinding& b : keyBindings()) ImGui::Text("%-12s %s", b.keyName, b.description);
+}
+
+}  // namespace
+
+std::pair<double, double> paramRange(double value) {
+  const double half = std::max(1.0, std::abs(value));
+  return {value - half, value + half};
+}
+
+void checkFormulaText(PanelState& state) {
+  ParseResult parsed = parseFormula(state.formula);
+  if (auto* err = std::get_if<ParseError>(&parsed))
+    state.formulaError = formatError(state.formula, *err);
+  else
+    state.formulaError.clear();
+}
+
+PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats) {
+  PanelResult result;
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowBgAlpha(0.85f);
+  if (ImGui::Begin("zeroset")) {
+    drawFormula(state, result);
+    drawParams(scene, state);
+    drawStats(stats);
+    drawSettings(scene);
+    drawKeys();
+  }
+  ImGui::End();
+  result.sliderActive = ImGui::IsAnyItemActive() && !ImGui::GetIO().WantTextInput;
+  return result;
+}
+
+}  // namespace zs::app

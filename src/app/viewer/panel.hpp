@@ -1,0 +1,55 @@
+#pragma once
+// The viewer's Dear ImGui panel: takes the current scene (edited in place by the widgets),
+// the formula being typed and what the viewer measured; puts out the edits. The formula box
+// parses on every keystroke and shows the caret and message under it (the last good surface
+// stays on screen); a slider per parameter; every render setting; the octree level,
+// criterion and domain; FPS and frame times; the key list. The caller diffs the scene to
+// decide between a redraw and a rebuild, and checks that it still loads back.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace zs::app {
+
+struct PanelStats {
+  double fps = 0;          // window frames per second
+  double frameMs = 0;      // one window frame, ray tracing included when it traced
+  double traceMs = 0;      // the latest trace alone
+  int traceScale = 1;      // 1 = full resolution, 2 = half, ...
+  int width = 0, height = 0;
+  double buildMs = 0;      // request to upload, for the shown surface
+  std::size_t leaves = 0;  // octree leaves of the shown surface
+  std::size_t spheres = 0;
+  bool building = false;
+  std::string example;     // name of the example on screen, if any
+  std::string status;      // the latest action's message
+};
+
+struct PanelState {
+  std::string formula;       // text in the box (may not parse)
+  std::string formulaError;  // caret + message for `formula`, or the build's error
+  bool focusFormula = false; // set by the F key: put the cursor in the box next frame
+  std::vector<std::string> paramNames;                 // of the shown surface
+  std::vector<std::pair<double, double>> paramRanges;  // slider bounds, fixed per surface
+};
+
+struct PanelResult {
+  bool formulaEdited = false;     // the text changed (the viewer debounces the build)
+  bool formulaSubmitted = false;  // Enter was pressed in the box
+  bool sliderActive = false;      // a widget is being dragged: trace at reduced resolution
+};
+
+PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats);
+
+// Re-parses `state.formula` and fills state.formulaError ("" when it parses).
+void checkFormulaText(PanelState& state);
+
+// Slider bounds for a parameter's value: value ± max(1, |value|).
+std::pair<double, double> paramRange(double value);
+
+// The render settings, octree and domain sections (panel_settings.cpp).
+void drawSettings(Scene& scene);
+
+}  // namespace zs::app

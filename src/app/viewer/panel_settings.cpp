@@ -1,0 +1,120 @@
+// Every render setting, the octree and the domain as panel widgets, in the order of
+// docs/surf-format.md. Bounds mirror the .surf ranges; the viewer still re-checks each
+// edit, so a value typed with Ctrl+click beyond them is refused rather than saved.
+#include <imgui.h>
+
+#include <array>
+
+#include "app/viewer/panel.hpp"
+
+namespace zs::app {
+namespace {
+
+bool dragDouble(const char* label, double& v, double speed, double lo, double hi,
+                const char* format = "%.3g") {
+  return ImGui::DragScalar(label, ImGuiDataType_Double, &v, float(speed), &lo, &hi, format,
+                           ImGuiSliderFlags_AlwaysClamp);
+}
+
+bool dragInt(const char* label, int& v, int lo, int hi) {
+  return ImGui::DragInt(label, &v, 0.1f, lo, hi, "%d", ImGuiSliderFlags_AlwaysClamp);
+}
+
+bool dragVec(const char* label, Vec3& v, double speed) {
+  return ImGui::DragScalarN(label, ImGuiDataType_Double, v.data(), 3, float(speed), nullptr,
+                            nullptr, "%.3g");
+}
+
+bool color(const char* label, Vec3& c) {
+  std::array<float, 3> f{float(c[0]), float(c[1]), float(c[2])};
+  if (!ImGui::ColorEdit3(label, f.data(), ImGuiColorEditFlags_Float)) return false;
+  c = {f[0], f[1], f[2]};
+  return true;
+}
+
+void highlight(const char* name, Highlight& h) {
+  ImGui::PushID(name);
+  ImGui::Checkbox(name, &h.enabled);
+  dragDouble("threshold", h.threshold, 0.005, 0.0, 1.0);
+  color("color", h.color);
+  ImGui::PopID();
+}
+
+void material(const char* name, Material& m) {
+  ImGui::PushID(name);
+  ImGui::TextUnformatted(name);
+  color("color", m.color);
+  dragDouble("specular", m.specular, 0.01, 0.0, 1.0);
+  dragDouble("shininess", m.shininess, 0.5, 0.0, 1000.0);
+  ImGui::PopID();
+}
+
+void camera(Camera& c) {
+  int projection = c.projection == Projection::Orthographic;
+  if (ImGui::Combo("projection", &projection, "perspective\0orthographic\0"))
+    c.projection = projection ? Projection::Orthographic : Projection::Perspective;
+  dragVec("eye", c.eye, 0.02);
+  dragVec("target", c.target, 0.02);
+  dragVec("up", c.up, 0.02);
+  dragDouble("fov y", c.fovY, 0.2, 1.0, 179.0, "%.1f");
+  dragDouble("height", c.height, 0.02, 0.001, 1e4);
+}
+
+void lights(Lights& l) {
+  dragDouble("ambient", l.ambient, 0.01, 0.0, 1.0);
+  ImGui::TextUnformatted("directional");
+  ImGui::PushID("dir");
+  dragDouble("intensity", l.directional.intensity, 0.01, 0.0, 10.0);
+  dragVec("direction", l.directional.direction, 0.02);
+  color("color", l.directional.color);
+  ImGui::PopID();
+  ImGui::TextUnformatted("point (right drag moves it)");
+  ImGui::PushID("point");
+  dragDouble("intensity", l.point.intensity, 0.01, 0.0, 10.0);
+  dragVec("position", l.point.position, 0.05);
+  color("color", l.point.color);
+  ImGui::PopID();
+}
+
+void tracing(Scene& scene) {
+  Tracing& t = scene.render.tracing;
+  dragInt("intervals", t.intervals, 1, 1000);
+  dragDouble("epsilon", t.epsilon, 0.0001, 1e-9, 1.0, "%.2g");
+  dragInt("max bisections", t.maxBisections, 1, 200);
+  dragInt("hits", t.hits, 1, 16);
+  dragInt("samples (NxN)", scene.render.samples, 1, 8);
+  dragDouble("opacity", scene.render.opacity, 0.01, 0.0, 1.0);
+  ImGui::Checkbox("reflection", &scene.render.reflection.enabled);
+  dragDouble("primary weight", scene.render.reflection.primaryWeight, 0.01, 0.0, 1.0);
+  color("background", scene.render.background);
+}
+
+void octreeAndDomain(Scene& scene) {
+  // Each of these rebuilds the octree and the sphere hierarchy on the worker thread.
+  dragInt("octree level", scene.octree.level, 0, 12);
+  int criteria = scene.octree.criteria == Criteria::Uniform;
+  if (ImGui::Combo("criterion", &criteria, "thesis\0uniform\0"))
+    scene.octree.criteria = criteria ? Criteria::Uniform : Criteria::Thesis;
+  dragVec("domain min", scene.domain.min, 0.02);
+  dragVec("domain max", scene.domain.max, 0.02);
+}
+
+}  // namespace
+
+void drawSettings(Scene& scene) {
+  if (ImGui::CollapsingHeader("tracing", ImGuiTreeNodeFlags_DefaultOpen)) tracing(scene);
+  if (ImGui::CollapsingHeader("octree and domain", ImGuiTreeNodeFlags_DefaultOpen))
+    octreeAndDomain(scene);
+  if (ImGui::CollapsingHeader("highlights")) {
+    highlight("silhouette", scene.render.silhouette);
+    highlight("border", scene.render.border);
+  }
+  if (ImGui::CollapsingHeader("lights")) lights(scene.render.lights);
+  if (ImGui::CollapsingHeader("materials")) {
+    material("front", scene.render.materials.front);
+    material("back", scene.render.materials.back);
+  }
+  if (ImGui::CollapsingHeader("camera")) camera(scene.render.camera);
+}
+
+}  // namespace zs::app

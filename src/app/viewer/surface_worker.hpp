@@ -1,0 +1,58 @@
+#pragma once
+// Builds surfaces off the main thread, so the window never freezes: takes Scenes, runs
+// prepareSurface (parse, octree, sphere hierarchy, GLSL, glslang: CPU only) on one worker
+// thread, and puts out the finished surface or its error text, tagged with the request's
+// id. Latest wins: a request that has not started yet is replaced by a newer one, so
+// dragging a slider queues at most one build behind the running one.
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <variant>
+
+#include "app/pipeline.hpp"
+#include "scene/scene.hpp"
+
+namespace zs::app {
+
+class SurfaceWorker {
+ public:
+  struct Result {
+    std::uint64_t id = 0;
+    Scene scene;  // what was built
+    std::variant<PreparedSurface, std::string> surface;
+    double wallMs = 0;  // request to result, queueing included
+  };
+
+  // `wake` runs on the worker thread after each result (the viewer posts an empty GLFW
+  // event so its event wait returns at once).
+  explicit SurfaceWorker(std::function<void()> wake);
+  ~SurfaceWorker();  // waits for a running build to finish; queued ones are dropped
+  SurfaceWorker(const SurfaceWorker&) = delete;
+  SurfaceWorker& operator=(const SurfaceWorker&) = delete;
+
+  std::uint64_t submit(const Scene& scene);
+  // The newest finished result not taken yet; older finished ones are dropped.
+  std::optional<Result> take();
+  bool busy() const;  // something queued or running
+  std::uint64_t lastSubmitted() const;
+
+ private:
+  void run();
+
+  std::function<void()> wake_;
+  mutable std::mutex mutex_;
+  std::condition_variable cv_;
+  std::optional<std::pair<std::uint64_t, Scene>> queued_;
+  std::optional<Result> done_;
+  bool running_ = false, stop_ = false;
+  std::uint64_t nextId_ = 1;
+  std::chrono::steady_clock::time_point queuedAt_;
+  std::thread thread_;  // last member: starts after everything it touches exists
+};
+
+}  // namespace zs::app

@@ -1,0 +1,139 @@
+#pragma once
+// The interactive viewer (`zeroset view`, and the window behind the prompt): takes a Scene
+// and options, opens a GLFW window with a Dear ImGui panel, and runs until it is closed.
+// Puts out frames, plus screenshots (PNG) and saved views (.surf) in the output folder,
+// each path printed on stdout as "screenshot: PATH" / "saved: PATH". Surfaces are built on
+// a worker thread (surface_worker.hpp); only the GL upload runs on the main thread. Another
+// thread (the prompt) may post commands; they run on the main thread between frames.
+#include <chrono>
+#include <deque>
+#include <filesystem>
+#include <future>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/repl/command.hpp"
+#include "app/viewer/examples.hpp"
+#include "app/viewer/key_bindings.hpp"
+#include "app/viewer/panel.hpp"
+#include "app/viewer/surface_view.hpp"
+#include "app/viewer/surface_worker.hpp"
+#include "render/glfw_context.hpp"
+
+namespace zs::app {
+
+struct ViewerOptions {
+  Scene scene;
+  std::string title = "zeroset";
+  std::filesystem::path outputDir = ".";  // screenshots and saved scenes
+  int dragScale = 0;  // fixed resolution divisor while dragging; 0 = adapt to hold ~30 fps
+  // Print events on stdout: "ready WxH" once the first surface is on screen at full
+  // resolution, "built FORMULA", and each key action's message (scripts and tests).
+  bool log = false;
+};
+
+class Viewer {
+ public:
+  // Opens the window (hidden until the first frame) and starts the first build. Fails with
+  // a message when there is no display or no GL 3.3 context; never aborts.
+  static std::unique_ptr<Viewer> open(const ViewerOptions& options, std::string& error);
+  ~Viewer();
+
+  // Runs the event loop until the window is closed, Ctrl+Q, or requestClose().
+  void run();
+
+  // Thread-safe. Queues a prompt command; the future holds what to print once it has been
+  // carried out (a formula: once it is on screen or failed to build). After the window
+  // closed, commands are answered with an error at once.
+  std::future<std::string> post(PromptCommand command);
+  void requestClose();
+
+ private:
+  explicit Viewer(const ViewerOptions& options);
+  struct Pending {
+    PromptCommand command;
+    std::promise<std::string> reply;
+  };
+  // A command that runs once no build is queued or running, so it sees the surface that
+  // was asked for: a screenshot, a save, or the reply to a formula. Keys have no reply.
+  struct Waiting {
+    PromptCommand command;
+    std::optional<std::promise<std::string>> reply;
+  };
+
+  // viewer.cpp: the loop and its pieces
+  void frame();
+  void takeBuild();
+  void requestBuild();
+  void traceIfNeeded(int width, int height);
+  // Checks the edited scene_ (reverting to `before` when it would not load back), then
+  // starts a build or marks a redraw. "" or the refusal.
+  std::string onSceneEdited(const Scene& before);
+  void applyTypedFormula();
+  void setScene(const Scene& scene, const std::string& exampleName);
+  bool interacting() const;
+  int reducedScale(int width, int height) const;
+
+  // viewer_input.cpp: GLFW callbacks and key actions
+  void installCallbacks();
+  void onKey(int key, int mods);
+  void onMouseButton(int button, int action);
+  void onCursor(double x, double y);
+  void onScroll(double dy);
+  void runAction(Action action);
+  void showExample(int delta);
+
+  // viewer_output.cpp: screenshots, saves and prompt commands
+  void runPending();
+  void answerWaiting();
+  std::string runOutput(const PromptCommand& command);
+  std::string screenshot(const std::filesystem::path& path);
+  std::string save(const std::filesystem::path& path);
+
+  ViewerOptions options_;
+  std::unique_ptr<GlfwWindowContext> window_;
+  std::unique_ptr<SurfaceView> view_;
+  std::unique_ptr<SurfaceWorker> worker_;
+  bool imguiReady_ = false;
+
+  Scene scene_;   // what is edited and shown
+  Scene built_;   // the scene of the surface on screen (formula, params, domain, octree)
+  Scene loaded_;  // what R resets camera and lights to
+  bool hasSurface_ = false;
+  std::vector<Example> examples_;
+  int exampleIndex_ = -1;
+  PanelState panel_;
+  PanelStats stats_;
+  bool panelVisible_ = true;
+
+  // Tracing state: `dirty_` = the scene changed since the last trace; `refine_` = the image
+  // on screen is a reduced-resolution one.
+  bool dirty_ = true, refine_ = false;
+  int uiFrames_ = 3;  // frames still to draw for ImGui to settle after an event
+  std::optional<std::chrono::steady_clock::time_point> buildAt_;  // debounced formula build
+  std::chrono::steady_clock::time_point lastWheel_{};
+  double msPerPixel_ = 0;  // from the latest trace, to pick the reduced scale
+  bool sliderActive_ = false, readyPrinted_ = false;
+
+  // Mouse drags: which button, where it started, and the camera/light at the start.
+  int dragButton_ = -1;
+  double dragX_ = 0, dragY_ = 0, cursorX_ = 0, cursorY_ = 0;
+  Camera dragCamera_;
+  Vec3 dragLight_{};
+
+  // Frame timing for the panel.
+  std::chrono::steady_clock::time_point fpsStart_ = std::chrono::steady_clock::now();
+  int fpsFrames_ = 0;
+  double fps_ = 0;
+
+  std::mutex mutex_;  // guards pending_ and closed_
+  std::deque<Pending> pending_;
+  bool closed_ = false;
+  std::vector<Waiting> waiting_;  // main thread only
+  std::string lastBuildError_;    // of the latest build request, "" when it is on screen
+};
+
+}  // namespace zs::app

@@ -1,0 +1,126 @@
+// Mouse and keyboard. ImGui's GLFW backend chains to these callbacks; whatever the panel
+// wants (a click on a widget, typing in the formula box) is left to it.
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <cstdio>
+
+#include "app/viewer/arcball.hpp"
+#include "app/viewer/viewer.hpp"
+
+namespace zs::app {
+namespace {
+
+Viewer* self(GLFWwindow* window) { return static_cast<Viewer*>(glfwGetWindowUserPointer(window)); }
+
+}  // namespace
+
+void Viewer::installCallbacks() {
+  GLFWwindow* w = window_->window();
+  glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int mods) {
+    if (action == GLFW_PRESS || action == GLFW_REPEAT) self(win)->onKey(key, mods);
+    self(win)->uiFrames_ = 3;
+  });
+  glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int button, int action, int) {
+    self(win)->onMouseButton(button, action);
+  });
+  glfwSetCursorPosCallback(w, [](GLFWwindow* win, double x, double y) { self(win)->onCursor(x, y); });
+  glfwSetScrollCallback(w, [](GLFWwindow* win, double, double dy) { self(win)->onScroll(dy); });
+  glfwSetCharCallback(w, [](GLFWwindow* win, unsigned) { self(win)->uiFrames_ = 3; });
+  glfwSetWindowRefreshCallback(w, [](GLFWwindow* win) { self(win)->uiFrames_ = 3; });
+  glfwSetFramebufferSizeCallback(w, [](GLFWwindow* win, int, int) { self(win)->dirty_ = true; });
+}
+
+void Viewer::onKey(int key, int mods) {
+  if (ImGui::GetIO().WantCaptureKeyboard) return;  // typing in the panel
+  if (const KeyBinding* binding = findBinding(key, mods)) runAction(binding->action);
+}
+
+void Viewer::onMouseButton(int button, int action) {
+  uiFrames_ = 3;
+  if (action == GLFW_RELEASE && button == dragButton_) {
+    dragButton_ = -1;  // the next frame refines to full resolution
+    return;
+  }
+  if (action != GLFW_PRESS || dragButton_ >= 0 || ImGui::GetIO().WantCaptureMouse) return;
+  if (button != GLFW_MOUSE_BUTTON_LEFT && button != GLFW_MOUSE_BUTTON_RIGHT) return;
+  dragButton_ = button;
+  dragX_ = cursorX_;
+  dragY_ = cursorY_;
+  dragCamera_ = scene_.render.camera;
+  dragLight_ = scene_.render.lights.point.position;
+}
+
+void Viewer::onCursor(double x, double y) {
+  cursorX_ = x;
+  cursorY_ = y;
+  uiFrames_ = std::max(uiFrames_, 1);
+  if (dragButton_ < 0) return;
+  int width = 0, height = 0;
+  glfwGetWindowSize(window_->window(), &width, &height);
+  const DragPoints drag{dragX_, dragY_, x, y, width, height};
+  if (dragButton_ == GLFW_MOUSE_BUTTON_LEFT)
+    scene_.render.camera = orbitCamera(dragCamera_, drag);
+  else
+    scene_.render.lights.point.position = orbitPoint(scene_.render.camera, dragLight_, drag);
+  dirty_ = true;
+}
+
+void Viewer::onScroll(double dy) {
+  uiFrames_ = 3;
+  if (ImGui::GetIO().WantCaptureMouse || dy == 0) return;
+  scene_.render.camera = zoomCamera(scene_.render.camera, dy);
+  lastWheel_ = std::chrono::steady_clock::now();
+  dirty_ = true;
+}
+
+void Viewer::showExample(int delta) {
+  const int n = int(examples_.size());
+  if (n == 0) return;
+  exampleIndex_ = exampleIndex_ < 0 ? (delta > 0 ? 0 : n - 1) : ((exampleIndex_ + delta) % n + n) % n;
+  const Example& example = examples_[std::size_t(exampleIndex_)];
+  auto loaded = loadExample(example);
+  if (auto* err = std::get_if<std::string>(&loaded)) {
+    stats_.status = *err;
+    return;
+  }
+  setScene(std::get<Scene>(loaded), example.name);
+  stats_.status = "example " + std::to_string(exampleIndex_ + 1) + " of " + std::to_string(n) +
+                  ": " + example.name;
+}
+
+void Viewer::runAction(Action action) {
+  std::string message;
+  switch (action) {
+    case Action::NextExample: showExample(1); break;
+    case Action::PrevExample: showExample(-1); break;
+    case Action::Screenshot: waiting_.push_back({{PromptCommand::Kind::Png, {}}, std::nullopt}); break;
+    case Action::SaveScene: waiting_.push_back({{PromptCommand::Kind::Save, {}}, std::nullopt}); break;
+    case Action::FocusFormula:
+      panelVisible_ = true;
+      panel_.focusFormula = true;
+      break;
+    case Action::TogglePanel: panelVisible_ = !panelVisible_; break;
+    case Action::ResetView:
+      scene_.render.camera = loaded_.render.camera;
+      scene_.render.lights = loaded_.render.lights;
+      stats_.status = "view reset";
+      dirty_ = true;
+      break;
+    case Action::Quit: glfwSetWindowShouldClose(window_->window(), GLFW_TRUE); break;
+    default: {
+      const Scene before = scene_;
+      if (applyAction(action, scene_, message) != Effect::None) {
+        stats_.status = message;
+        if (std::string err = onSceneEdited(before); !err.empty()) message = err;
+      }
+      break;
+    }
+  }
+  if (options_.log && !message.empty()) {
+    std::printf("%s\n", message.c_str());
+    std::fflush(stdout);
+  }
+}
+
+}  // namespace zs::app

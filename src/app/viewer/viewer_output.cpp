@@ -1,0 +1,130 @@
+// What leaves the viewer: screenshots, saved scenes and the replies to prompt commands.
+// All of them wait until no build is queued or running, so they show what was asked for.
+#include <GLFW/glfw3.h>
+
+#include <cstdio>
+
+#include "app/repl/scene_edit.hpp"
+#include "app/viewer/viewer.hpp"
+#include "render/image.hpp"
+
+namespace zs::app {
+
+std::future<std::string> Viewer::post(PromptCommand command) {
+  std::promise<std::string> reply;
+  std::future<std::string> answer = reply.get_future();
+  {
+    std::lock_guard lock(mutex_);
+    if (closed_) {
+      reply.set_value("error: the window was closed\n");
+      return answer;
+    }
+    pending_.push_back({std::move(command), std::move(reply)});
+  }
+  glfwPostEmptyEvent();
+  return answer;
+}
+
+void Viewer::requestClose() { post({PromptCommand::Kind::Quit, {}}); }
+
+void Viewer::runPending() {
+  std::deque<Pending> batch;
+  {
+    std::lock_guard lock(mutex_);
+    batch.swap(pending_);
+  }
+  for (Pending& p : batch) {
+    uiFrames_ = 3;
+    const PromptCommand& c = p.command;
+    switch (c.kind) {
+      case PromptCommand::Kind::Formula:
+      case PromptCommand::Kind::Set:
+      case PromptCommand::Kind::Load: {
+        Scene next = scene_;
+        if (std::string err = applyToScene(c, next); !err.empty()) {
+          p.reply.set_value(err);
+          continue;
+        }
+        if (c.kind == PromptCommand::Kind::Load) {
+          setScene(next, c.arg);
+        } else {
+          const Scene before = scene_;
+          scene_ = next;
+          if (std::string err = onSceneEdited(before); !err.empty()) {
+            p.reply.set_value(err);
+            continue;
+          }
+          panel_.formula = scene_.formula;
+          panel_.formulaError.clear();
+        }
+        waiting_.push_back({c, std::move(p.reply)});
+        break;
+      }
+      case PromptCommand::Kind::Save:
+      case PromptCommand::Kind::Png: waiting_.push_back({c, std::move(p.reply)}); break;
+      case PromptCommand::Kind::Quit:
+        glfwSetWindowShouldClose(window_->window(), GLFW_TRUE);
+        p.reply.set_value("");
+        break;
+      case PromptCommand::Kind::Help: p.reply.set_value(promptHelp()); break;
+      case PromptCommand::Kind::Empty: p.reply.set_value(""); break;
+    }
+  }
+}
+
+void Viewer::answerWaiting() {
+  if (waiting_.empty() || worker_->busy() || buildAt_) return;
+  std::vector<Waiting> ready;
+  ready.swap(waiting_);
+  for (Waiting& w : ready) {
+    std::string text = runOutput(w.command);
+    if (w.reply) {
+      w.reply->set_value(text);
+    } else if (!text.empty()) {
+      std::fputs(text.c_str(), stdout);  // keys: say where the file went
+      std::fflush(stdout);
+    }
+  }
+}
+
+std::string Viewer::runOutput(const PromptCommand& command) {
+  switch (command.kind) {
+    case PromptCommand::Kind::Png:
+      return screenshot(command.arg.empty() ? nextFreePath(options_.outputDir, "zeroset", ".png")
+                                            : std::filesystem::path(command.arg));
+    case PromptCommand::Kind::Save:
+      return save(command.arg.empty() ? nextFreePath(options_.outputDir, "zeroset", ".surf")
+                                      : std::filesystem::path(command.arg));
+    default:
+      // A scene edit: report how its build went (nothing when it is on screen).
+      return lastBuildError_;
+  }
+}
+
+std::string Viewer::screenshot(const std::filesystem::path& path) {
+  int width = 0, height = 0;
+  window_->framebufferSize(width, height);
+  Frame frame = view_->screenshot(scene_.render, scene_.domain, width, height);
+  std::string text;
+  if (!frame.error.empty()) {
+    text = "error: " + frame.error + "\n";
+  } else if (std::string err = writePng(path.string(), frame.color); !err.empty()) {
+    text = "error: " + err + "\n";
+  } else {
+    text = "screenshot: " + path.string() + "\n";
+  }
+  stats_.status = text;
+  return text;
+}
+
+std::string Viewer::save(const std::filesystem::path& path) {
+  // The image size is the window's, so `zeroset render` of the file gives this picture.
+  Scene saved = scene_;
+  window_->framebufferSize(saved.width, saved.height);
+  std::string text = writeSceneFile(path, saved);
+  if (text.empty()) text = "saved: " + path.string() + "\n";
+  stats_.status = text;
+  return text;
+}
+
+}  // namespace zs::app
