@@ -1,0 +1,46 @@
+#pragma once
+// What `zeroset bench` measures: takes the options from the command line, puts out the
+// list of configurations (surface, octree level, intervals, epsilon) to time, ordered so
+// each surface's shader is compiled once and each octree level is built once. The full
+// plan is the union of the thesis' Table 5.2 grid (levels 0-2 x 10/15/20 intervals at
+// epsilon 0.001), its Table 5.3 grid (levels 0-2 x epsilon 0.01/0.001/0.0001 at 10
+// intervals) and deeper levels 3..maxLevel at the thesis' recommended 10 intervals and
+// epsilon 0.001; the quick plan (CI) keeps levels 0-2 at 10 intervals / epsilon 0.001.
+#include <string>
+#include <vector>
+
+#include "render/gl_context.hpp"
+
+namespace zs::bench {
+
+struct BenchOptions {
+  int width = 800;
+  int height = 600;
+  int frames = 20;     // timed frames per configuration (the median is reported)
+  int warmup = 3;      // untimed frames first: first use of a hierarchy, caches, clocks
+  int maxLevel = 6;    // deepest octree level timed
+  bool quick = false;  // the CI plan
+  Backend backend = Backend::Egl;
+  std::string outDir = "bench-results";
+};
+
+// The CI settings: small frames, few of them, the small plan.
+BenchOptions quickOptions(BenchOptions base);
+
+struct BenchConfig {
+  int surface = 1;  // thesis numbering, 1..7
+  int level = 0;
+  int intervals = 10;
+  double epsilon = 0.001;
+
+  bool operator==(const BenchConfig&) const = default;
+};
+
+// Sorted by surface, then level, then intervals, then epsilon; no duplicates (the cell
+// "10 intervals, epsilon 0.001" is in both thesis tables and is timed once).
+std::vector<BenchConfig> benchPlan(const BenchOptions& options);
+
+// "0.001" rather than "1e-03": epsilons as the thesis prints them.
+std::string formatEpsilon(double epsilon);
+
+}  // namespace zs::bench

@@ -1,0 +1,109 @@
+// `zeroset bench [--quick] [--size WxH] [--frames N] [--out DIR] [--backend egl|osmesa]`:
+// reproduces the thesis' Tables 5.2 and 5.3 (and deeper octree levels) headless, and the
+// time from a typed formula to its first frame. Writes DIR/bench.md, DIR/bench.csv,
+// DIR/first_frame.csv and DIR/fps_by_level.png; progress goes to stderr. Exits 1 when any
+// surface or configuration failed, so CI notices a benchmark that no longer runs.
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "app/bench/bench_report.hpp"
+#include "app/bench/fps_plot.hpp"
+#include "app/commands.hpp"
+
+namespace zs::app {
+
+namespace {
+
+struct BenchArgs {
+  bool quick = false;
+  std::string size;
+  int frames = 0;  // 0: the mode's default
+  int maxLevel = -1;
+  std::string out = "bench-results";
+  std::string backend = "egl";
+};
+
+bool writeText(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream file(path, std::ios::binary);
+  file << text;
+  if (file) return true;
+  std::cerr << "error: cannot write " << path.string() << "\n";
+  return false;
+}
+
+int runBench(const BenchArgs& args) {
+  bench::BenchOptions options;
+  if (args.quick) options = bench::quickOptions(options);
+  if (!args.size.empty()) {
+    char x = 0, rest = 0;
+    if (std::sscanf(args.size.c_str(), "%d%c%d%c", &options.width, &x, &options.height,
+                    &rest) != 3 ||
+        (x != 'x' && x != 'X') || options.width <= 0 || options.height <= 0 ||
+        options.width > 16384 || options.height > 16384) {
+      std::cerr << "error: --size '" << args.size << "' is not WIDTHxHEIGHT\n"
+                << "hint: e.g. --size 800x600 (1 to 16384 pixels each way)\n";
+      return 1;
+    }
+  }
+  if (args.frames > 0) options.frames = args.frames;
+  if (args.maxLevel >= 0) options.maxLevel = args.maxLevel;
+  if (!parseBackend(args.backend, options.backend)) {
+    std::cerr << "error: unknown backend '" << args.backend << "'\nhint: egl or osmesa\n";
+    return 1;
+  }
+  options.outDir = args.out;
+  std::error_code ec;
+  std::filesystem::create_directories(options.outDir, ec);
+  if (ec) {
+    std::cerr << "error: cannot create " << options.outDir << ": " << ec.message() << "\n";
+    return 1;
+  }
+
+  const bench::BenchResults results = bench::runBench(options, bench::benchPlan(options));
+  if (!results.error.empty()) {
+    std::cerr << "error: " << results.error << "\n"
+              << (options.backend == Backend::Egl ? "hint: try --backend osmesa\n" : "");
+    return 1;
+  }
+  const std::filesystem::path dir = options.outDir;
+  const std::string markdown = bench::markdownReport(results);
+  bool ok = writeText(dir / "bench.md", markdown) &&
+            writeText(dir / "bench.csv", bench::configCsv(results)) &&
+            writeText(dir / "first_frame.csv", bench::firstFrameCsv(results));
+  if (std::string err = writePng((dir / "fps_by_level.png").string(),
+                                 bench::fpsByLevelPlot(results));
+      !err.empty()) {
+    std::cerr << "error: " << err << "\n";
+    ok = false;
+  }
+  std::cout << markdown;
+  std::cerr << "wrote bench.md, bench.csv, first_frame.csv, fps_by_level.png to "
+            << dir.string() << "\n";
+  bool failed = false;
+  for (const auto& f : results.firstFrames) failed |= !f.error.empty();
+  for (const auto& c : results.configs) failed |= !c.error.empty();
+  if (failed) std::cerr << "error: some configurations failed (see above)\n";
+  return ok && !failed ? 0 : 1;
+}
+
+}  // namespace
+
+void addBenchCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "bench", "Time the thesis' surfaces and settings headless (Tables 5.2 and 5.3)");
+  auto args = std::make_shared<BenchArgs>();
+  cmd->add_flag("--quick", args->quick,
+                "CI mode: 160x120, 3 frames, levels 0-2 at 10 intervals / epsilon 0.001");
+  cmd->add_option("--size", args->size, "frame size WIDTHxHEIGHT (default 800x600)");
+  cmd->add_option("--frames", args->frames, "timed frames per configuration (default 20)")
+      ->check(CLI::Range(1, 10000));
+  cmd->add_option("--max-level", args->maxLevel, "deepest octree level timed (default 6)")
+      ->check(CLI::Range(0, 10));
+  cmd->add_option("--out", args->out, "directory for the reports (default bench-results)");
+  cmd->add_option("--backend", args->backend, "egl (default) or osmesa")
+      ->check(CLI::IsMember({"egl", "osmesa"}));
+  cmd->callback([args] { std::exit(runBench(*args)); });
+}
+
+}  // namespace zs::app
