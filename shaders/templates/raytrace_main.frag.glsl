@@ -20,6 +20,7 @@ uniform bool rtOrtho;
 uniform int rtIntervals, rtMaxBisections, rtHits, rtSamples;
 uniform float rtEpsilon;
 uniform bool rtTangentRoots;
+uniform float rtTangentTolerance;  // 1e-5 of the domain diagonal (docs/renderer.md)
 uniform float rtAmbient;
 uniform vec3 rtDirLightDir, rtDirLight, rtPointPos, rtPointLight;  // lights: color*intensity
 uniform vec3 rtFrontColor, rtBackColor;
@@ -222,9 +223,11 @@ void main() {
             split = true; tSplit = tm; fSplit = f; dSplit = df;
           } else {
             if (sign(flo) * df < 0.0) lo = tm; else hi = tm;
-            if (hi - lo <= rtEpsilon || bisections >= rtMaxBisections) {
-              // A tangent root when F is within epsilon of zero in distance, |F|/|grad F|.
-              record = abs(f) <= rtEpsilon * length(g.xyz);
+            if (hi - lo <= rtTangentTolerance || bisections >= rtMaxBisections) {
+              // A tangent root where the distance estimate |F|/|grad F| at the extremum is
+              // below the tolerance: a ray that grazes the surface closer than that (or
+              // touches a double root, where both F and grad F vanish) hits it.
+              record = abs(f) <= rtTangentTolerance * length(g.xyz);
               mode = SAMPLE; ta = ts; fa = fs; da = ds; havePrev = true; nextSample = true;
             }
           }

@@ -44,6 +44,11 @@ void RayTracer::setUniforms(const RenderSettings& s, const Domain& domain, int w
   const double epsilon = std::isfinite(t.epsilon) && t.epsilon > 0 ? t.epsilon : 1e-6;
   glUniform1f(uniform("rtEpsilon"), float(epsilon));
   glUniform1i(uniform("rtTangentRoots"), tangentRoots_);
+  // Tangent roots are accepted within a distance far below epsilon: epsilon bounds how
+  // precisely a crossing is located, not how near a ray may pass and still count as a hit.
+  double diagonal = 0;
+  for (int a = 0; a < 3; ++a) diagonal += (domain.max[a] - domain.min[a]) * (domain.max[a] - domain.min[a]);
+  glUniform1f(uniform("rtTangentTolerance"), float(1e-5 * std::max(std::sqrt(diagonal), 1e-6)));
 
   const Lights& l = s.lights;
   glUniform1f(uniform("rtAmbient"), float(l.ambient));

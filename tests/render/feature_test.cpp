@@ -1,0 +1,248 @@
+// Each feature of chapter 4.4 changes the picture the way it should: checked against
+// what the feature means (exact blends, analytic outlines), not against stored images.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "render/camera.hpp"
+#include "render_support.hpp"
+
+namespace zs {
+namespace {
+
+constexpr int kSize = 64;
+const Vec3 kBackground{0.2, 0.25, 0.3};
+
+class Feature : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    std::string error;
+    if (!test::context(Backend::Egl, error)) return;
+    sphere_ = test::makeTracer({"x^2+y^2+z^2-1", {}, 2}, error).release();
+    torus_ = test::makeTracer({"(x^2+y^2+z^2+0.8^2-0.35^2)^2-4*0.8^2*(x^2+y^2)", {}, 3}, error).release();
+    cylinder_ = test::makeTracer({"x^2+y^2-1", {}, 2}, error).release();
+  }
+  static void TearDownTestSuite() {
+    delete sphere_;
+    delete torus_;
+    delete cylinder_;
+  }
+  void SetUp() override {
+    std::string error;
+    ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
+    ASSERT_NE(sphere_, nullptr);
+    ASSERT_NE(torus_, nullptr);
+    ASSERT_NE(cylinder_, nullptr);
+  }
+  // Defaults with a dark background (so white-ish highlights stand out), silhouette and
+  // reflection off unless a test turns them on.
+  static RenderSettings base() {
+    RenderSettings s = test::testSettings({0, 0, 3});
+    s.background = kBackground;
+    s.silhouette.enabled = false;
+    s.reflection.enabled = false;
+    return s;
+  }
+  static Image render(RayTracer* tracer, const RenderSettings& s, int size = kSize) {
+    Frame f = tracer->render(s, Domain{}, size, size);
+    EXPECT_EQ(f.error, "");
+    return f.color;
+  }
+  static std::array<double, 3> at(const Image& image, int x, int y) {
+    const std::uint8_t* p = image.pixel(x, y);
+    return {p[0] / 255.0, p[1] / 255.0, p[2] / 255.0};
+  }
+  // Distance in pixels of pixel (i, j)'s center from the image center.
+  static double radius(int i, int j, int size = kSize) {
+    return std::hypot(i + 0.5 - size / 2.0, j + 0.5 - size / 2.0);
+  }
+  static inline RayTracer *sphere_ = nullptr, *torus_ = nullptr, *cylinder_ = nullptr;
+};
+
+// Radius in pixels of the unit sphere's outline seen from distance 3 with fov 40.
+double sphereOutline(int size = kSize) {
+  return std::tan(std::asin(1.0 / 3.0)) / std::tan(20.0 * M_PI / 180.0) * size / 2.0;
+}
+
+TEST_F(Feature, SilhouetteDarkensTheOutlineOnly) {
+  RenderSettings s = base();
+  const Image off = render(sphere_, s);
+  s.silhouette.enabled = true;
+  s.silhouette.threshold = 0.3;
+  const Image on = render(sphere_, s);
+  EXPECT_EQ(test::fractionNear(off, s.silhouette.color), 0.0);
+  int outline = 0;
+  for (int j = 0; j < kSize; ++j)
+    for (int i = 0; i < kSize; ++i) {
+      if (!test::pixelNear(on, i, j, s.silhouette.color)) continue;
+      ++outline;
+      // |cos| < 0.3 only happens in the outer ring of the disk.
+      EXPECT_GT(radius(i, j), 0.8 * sphereOutline()) << i << "," << j;
+      EXPECT_LT(radius(i, j), sphereOutline() + 1.0) << i << "," << j;
+    }
+  EXPECT_GT(outline, 2 * M_PI * sphereOutline() * 0.5);
+}
+
+TEST_F(Feature, BorderMarksWhereTheSurfaceMeetsTheDomainBox) {
+  RenderSettings s = base();
+  s.camera.eye = {2.5, 3.5, 4.5};
+  s.border.enabled = false;
+  const Image off = render(cylinder_, s);
+  s.border.enabled = true;
+  s.border.threshold = 0.05;
+  const Image on = render(cylinder_, s);
+  EXPECT_EQ(test::fractionNear(off, s.border.color), 0.0);
+  EXPECT_GT(test::fractionNear(on, s.border.color), 0.01);
+  // The sphere lies inside the domain: no border anywhere.
+  EXPECT_EQ(test::fractionNear(render(sphere_, s), s.border.color), 0.0);
+}
+
+TEST_F(Feature, ReflectionBlendsPrimaryAndReflectedColor) {
+  RenderSettings s = base();
+  const Image off = render(sphere_, s);
+  s.reflection.enabled = true;
+  s.reflection.primaryWeight = 0.7;
+  const Image on = render(sphere_, s);
+  // A convex sphere's reflection rays all escape: exactly 0.7 primary + 0.3 background.
+  const auto a = at(off, kSize / 2, kSize / 2), b = at(on, kSize / 2, kSize / 2);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(b[c], 0.7 * a[c] + 0.3 * kBackground[c], 1.5 / 255);
+
+  // Inside a torus' hole reflection rays meet the torus again: the blend differs there.
+  s.camera.eye = {0, -2.2, 1.6};
+  const Image torusOn = render(torus_, s);
+  s.reflection.enabled = false;
+  const Image torusOff = render(torus_, s);
+  int seesSurface = 0;
+  for (int j = 0; j < kSize; ++j)
+    for (int i = 0; i < kSize; ++i) {
+      const auto p = at(torusOff, i, j), q = at(torusOn, i, j);
+      if (p == std::array<double, 3>{kBackground[0], kBackground[1], kBackground[2]}) continue;
+      double worst = 0;
+      for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(q[c] - (0.7 * p[c] + 0.3 * kBackground[c])));
+      seesSurface += worst > 4.0 / 255;
+    }
+  EXPECT_GT(seesSurface, 20);
+}
+
+TEST_F(Feature, OpacityBlendsFrontAndBackHitsFrontToBack) {
+  RenderSettings s = base();
+  const auto front = at(render(sphere_, s), kSize / 2, kSize / 2);
+  s.opacity = 0.5;
+  s.tracing.hits = 2;
+  const auto half = at(render(sphere_, s), kSize / 2, kSize / 2);
+  // half = 0.5 front + 0.25 back + 0.25 background, so the back hit's color is:
+  std::array<double, 3> back{};
+  for (int c = 0; c < 3; ++c) back[c] = (half[c] - 0.5 * front[c] - 0.25 * kBackground[c]) / 0.25;
+  EXPECT_GT(back[2], back[0]) << "the back face takes the blue back material";
+  EXPECT_GT(front[0], front[2]) << "the front face takes the orange front material";
+  s.tracing.hits = 1;  // only the nearest hit kept: the rest is background
+  const auto one = at(render(sphere_, s), kSize / 2, kSize / 2);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(one[c], 0.5 * front[c] + 0.5 * kBackground[c], 1.5 / 255);
+  s.opacity = 0;
+  EXPECT_DOUBLE_EQ(test::fractionNear(render(sphere_, s), kBackground, 1), 1.0);
+}
+
+TEST_F(Feature, BothLightsContributeAndAmbientAloneIsFlat) {
+  RenderSettings s = base();
+  auto brightness = [](const Image& image) {
+    double sum = 0;
+    for (std::uint8_t v : image.rgba) sum += v;
+    return sum;
+  };
+  const double both = brightness(render(sphere_, s));
+  RenderSettings noDir = s;
+  noDir.lights.directional.intensity = 0;
+  RenderSettings noPoint = s;
+  noPoint.lights.point.intensity = 0;
+  EXPECT_LT(brightness(render(sphere_, noDir)), both * 0.97);
+  EXPECT_LT(brightness(render(sphere_, noPoint)), both * 0.97);
+  s.lights.directional.intensity = 0;
+  s.lights.point.intensity = 0;
+  const Image flat = render(sphere_, s);
+  const auto c = at(flat, kSize / 2, kSize / 2);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(c[k], 0.15 * s.materials.front.color[k], 1.0 / 255);
+  const auto other = at(flat, kSize / 2 - 9, kSize / 2 + 6);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(other[k], c[k], 1.0 / 255);
+}
+
+TEST_F(Feature, SupersamplingSmoothsOnlyTheOutline) {
+  RenderSettings s = base();
+  const Image one = render(sphere_, s);
+  s.samples = 3;
+  const Image nine = render(sphere_, s);
+  int changed = 0;
+  for (int j = 0; j < kSize; ++j)
+    for (int i = 0; i < kSize; ++i) {
+      const auto a = at(one, i, j), b = at(nine, i, j);
+      double d = 0;
+      for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(a[c] - b[c]));
+      if (d <= 8.0 / 255) continue;
+      ++changed;
+      EXPECT_NEAR(radius(i, j), sphereOutline(), 1.5) << i << "," << j;
+    }
+  EXPECT_GT(changed, 20);
+}
+
+TEST_F(Feature, OrthographicShowsTheTrueRadius) {
+  RenderSettings s = base();
+  s.camera.projection = Projection::Orthographic;
+  s.camera.height = 3;
+  const Image image = render(sphere_, s);
+  const double r = 1.0 / 1.5 * kSize / 2;  // unit radius over half the height
+  for (int j = 0; j < kSize; ++j)
+    for (int i = 0; i < kSize; ++i) {
+      if (std::abs(radius(i, j) - r) < 0.75) continue;
+      const bool covered = !test::pixelNear(image, i, j, kBackground);
+      EXPECT_EQ(covered, radius(i, j) < r) << i << "," << j;
+    }
+}
+
+TEST_F(Feature, FrontAndBackFacesUseTheirMaterials) {
+  RenderSettings s = base();
+  s.lights.directional.intensity = 0;
+  s.lights.point.intensity = 0;
+  s.camera.eye = {0, 0, 0.2};  // inside the sphere: the gradient points away, a back face
+  const auto inside = at(render(sphere_, s), kSize / 2, kSize / 2);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(inside[k], 0.15 * s.materials.back.color[k], 1.0 / 255);
+}
+
+TEST_F(Feature, HitsCountOnlyInsideTheClosedDomain) {
+  RenderSettings s = base();
+  Domain box{{-0.7, -0.7, -0.7}, {0.7, 0.7, 0.7}};
+  const Frame f = sphere_->render(s, box, kSize, kSize);
+  ASSERT_EQ(f.error, "");
+  EXPECT_TRUE(std::isinf(f.depth.at(kSize / 2, kSize / 2)));  // (0,0,+-1) is outside
+  int covered = 0;
+  for (int j = 0; j < kSize; ++j)
+    for (int i = 0; i < kSize; ++i) {
+      const float t = f.depth.at(i, j);
+      if (!std::isfinite(t)) continue;
+      ++covered;
+      const Ray ray = primaryRay(s.camera, kSize, kSize, i, j);
+      for (int a = 0; a < 3; ++a) {
+        const double p = ray.origin[a] + t * ray.direction[a];
+        EXPECT_LE(std::abs(p), 0.7 + 1e-4);
+      }
+    }
+  EXPECT_GT(covered, 10);  // the patches around the diagonals
+}
+
+TEST_F(Feature, TilesProgressAndCancel) {
+  RenderSettings s = base();
+  int calls = 0, lastTotal = 0;
+  const Frame tiled = sphere_->render(s, Domain{}, 100, 70, [&](int done, int total) {
+    EXPECT_EQ(done, ++calls);
+    lastTotal = total;
+    return true;
+  }, 32);
+  ASSERT_EQ(tiled.error, "");
+  EXPECT_EQ(calls, 4 * 3);
+  EXPECT_EQ(lastTotal, 12);
+  const Frame whole = sphere_->render(s, Domain{}, 100, 70, {}, 4096);
+  EXPECT_EQ(tiled.color.rgba, whole.color.rgba);
+  const Frame cancelled = sphere_->render(s, Domain{}, 100, 70, [](int, int) { return false; }, 32);
+  EXPECT_EQ(cancelled.error, "cancelled");
+}
+
+}  // namespace
+}  // namespace zs

@@ -1,0 +1,47 @@
+#pragma once
+// Shared by the render tests: a GL context per backend (created once per process), the
+// real pipeline from formula text to a ready RayTracer (parser -> gradient -> GLSL ->
+// octree -> hierarchy), and reference-image comparison with ZS_UPDATE_REFERENCE=1 to
+// regenerate the PNGs under tests/render/reference.
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "render/gl_context.hpp"
+#include "render/image.hpp"
+#include "render/ray_tracer.hpp"
+#include "render/settings.hpp"
+
+namespace zs::test {
+
+// The context of `backend`, made current; null (with a message in `error`) when the
+// machine has none. Contexts live until the process exits.
+GlContext* context(Backend backend, std::string& error);
+
+struct SurfaceSpec {
+  std::string formula;
+  Domain domain{};
+  int octreeLevel = 3;
+  std::vector<double> params{};
+};
+
+// Builds a ray tracer for `spec` on the current context. Returns null with `error` set
+// (parse error, compile log, octree error) on failure.
+std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& error);
+
+// Small, fast settings for tests: defaults of settings.hpp with the camera at `eye`.
+RenderSettings testSettings(Vec3 eye = {0, 0, 3});
+
+// Compares `image` with tests/render/reference/<name>.png within the tolerance of
+// image.hpp; with ZS_UPDATE_REFERENCE=1 writes the reference instead. On mismatch the
+// render is written next to the test binary as <name>.actual.png. "" when it matches.
+std::string matchReference(const std::string& name, const Image& image);
+
+std::string sourceDir();
+
+// Share of pixels whose RGB is within `tolerance` (0..255) of `rgb` (0..1).
+double fractionNear(const Image& image, Vec3 rgb, int tolerance = 3);
+bool pixelNear(const Image& image, int x, int y, Vec3 rgb, int tolerance = 3);
+
+}  // namespace zs::test
