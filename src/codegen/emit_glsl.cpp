@@ -104,8 +104,14 @@ class BodyWriter {
     while ((m >> (h + 1)) != 0) ++h;
     std::string chain = base;
     if (h > 0) {
-      const std::string top = square(base, h - 1, result);
-      chain = top + " * " + top;
+      // base^(2^h) itself may already exist (x^2 before x^3): then it is one factor.
+      auto cached = squares_.find(base + "^" + std::to_string(std::int64_t{1} << h));
+      if (cached != squares_.end()) {
+        chain = cached->second;
+      } else {
+        const std::string top = square(base, h - 1, result);
+        chain = top + " * " + top;
+      }
       for (int i = 0; i < h; ++i) {
         if ((m >> i) & 1) chain += " * " + square(base, i, result);
       }

@@ -77,8 +77,8 @@ ValidationResult validateGlsl(std::string_view source, Stage stage) {
   glslang::TShader shader(language);
   const char* text = source.data();
   const int length = static_cast<int>(source.size());
-  const char* name = stage == Stage::Vertex ? "vertex" : "fragment";
-  shader.setStringsWithLengthsAndNames(&text, &length, &name, 1);
+  // Without names, so the log says "S:L" with the string number that #line sets.
+  shader.setStringsWithLengths(&text, &length, 1);
   const auto messages = static_cast<EShMessages>(EShMsgDefault | EShMsgCascadingErrors);
   const bool compiled = shader.parse(GetDefaultResources(), 330, false, messages);
   result.log = shader.getInfoLog();
