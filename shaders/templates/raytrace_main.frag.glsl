@@ -32,7 +32,7 @@ uniform vec3 rtSilhouetteColor, rtBorderColor, rtBackground;
 layout(location = 0) out vec4 rtOutColor;
 layout(location = 1) out float rtOutDepth;
 
-const int RT_SEGS = 8;         // merged leaf segments per ray; overflow widens a neighbour
+const int RT_SEGS = 8;         // leaf segments per ray; overflow widens the farthest
 const int RT_MAX_HITS = 8;     // upper bound of tracing.hits
 const int RT_MAX_EVALS = 4096; // safety bound on F evaluations per ray
 const int SAMPLE = 0, BISECT_F = 1, BISECT_D = 2;
@@ -116,11 +116,13 @@ void main() {
       vec2 dom = slab(rtDomainMin, rtDomainMax, o, inv);
       dom.x = max(dom.x, tStart);
 
-      // Gather: stackless walk (pre-order + escape), each leaf's [t0, t1] clipped to the
-      // domain and merged with the slots it overlaps. Slots are unsorted (segN = 0: free)
-      // so every access has a constant index; the march takes them nearest first.
+      // Gather: stackless walk (pre-order + escape); each leaf's [t0, t1], clipped to the
+      // domain, is insertion-sorted into RT_SEGS slots by compare-and-swap with constant
+      // indices; once all slots are taken the farthest one widens (conservative, never a
+      // miss). Overlapping slots merge when the march loads them.
+      const float INF = uintBitsToFloat(0x7F800000u);
       float segA[RT_SEGS], segB[RT_SEGS], segN[RT_SEGS];
-      for (int m = 0; m < RT_SEGS; ++m) { segA[m] = 0.0; segB[m] = 0.0; segN[m] = 0.0; }
+      for (int m = 0; m < RT_SEGS; ++m) { segA[m] = INF; segB[m] = -INF; segN[m] = 0.0; }
       int count = dom.x <= dom.y ? rtNodeCount : 0;
       for (int i = 0; i < count;) {
         uvec4 node = texelFetch(rtHierarchy, i);
@@ -131,125 +133,116 @@ void main() {
         bool hit = a <= b, leaf = (node.w & 1u) != 0u;
         i = (hit && !leaf) ? i + 1 : int(node.w >> 1u);
         if (!(hit && leaf)) continue;
-        // Slots are pairwise disjoint, so those overlapping [a, b] are all that merge.
-        float na = a, nb = b, nn = 1.0;
+        float ca = a, cb = b, cn = 1.0;
         for (int m = 0; m < RT_SEGS; ++m) {
-          if (segN[m] > 0.0 && segA[m] <= b && segB[m] >= a) {
-            na = min(na, segA[m]); nb = max(nb, segB[m]); nn += segN[m]; segN[m] = 0.0;
-          }
+          bool before = ca < segA[m];
+          float xa = segA[m], xb = segB[m], xn = segN[m];
+          segA[m] = before ? ca : xa; segB[m] = before ? cb : xb; segN[m] = before ? cn : xn;
+          ca = before ? xa : ca; cb = before ? xb : cb; cn = before ? xn : cn;
         }
-        bool placed = false;
-        float bestGap = uintBitsToFloat(0x7F800000u);
-        int best = 0;
-        for (int m = 0; m < RT_SEGS; ++m) {
-          if (!placed && segN[m] == 0.0) { segA[m] = na; segB[m] = nb; segN[m] = nn; placed = true; }
-          float gap = max(segA[m] - nb, na - segB[m]);
-          if (gap < bestGap) { bestGap = gap; best = m; }
-        }
-        // All slots taken: widen the nearest one (conservative, never a miss; nothing lies
-        // between it and [na, nb], so the slots stay disjoint).
-        for (int m = 0; m < RT_SEGS; ++m) {
-          if (!placed && m == best) {
-            segA[m] = min(segA[m], na); segB[m] = max(segB[m], nb); segN[m] += nn;
-          }
-        }
+        if (ca < INF) { segB[RT_SEGS - 1] = max(segB[RT_SEGS - 1], cb); segN[RT_SEGS - 1] += cn; }
       }
 
-      // March: sign samples (tracing.intervals per merged leaf), bisection on F (thesis
-      // Algorithm 1) and, where |F| has a local minimum between two samples, bisection on
-      // dF/dt (tangent roots and close root pairs that sign sampling misses).
-      int mode = SAMPLE, k = 0, steps = 1, bisections = 0;
+      // March, thesis Algorithm 1 extended: sign samples (tracing.intervals per leaf),
+      // bisection on F, and bisection on dF/dt where |F| has a local minimum between two
+      // samples (tangent roots and close root pairs that sign sampling misses). llvmpipe
+      // runs every branch of a loop body for every iteration (masked SIMD), so the inner
+      // loop holds only the evaluation and the root-finding state; loading segments and
+      // shading hits happen in the outer loop.
+      int mode = SAMPLE, k = 1, steps = 0, bisections = 0, next = 0, evals = 0;  // k > steps: load
       float t0 = 0.0, h = 0.0, tm = 0.0;
       float ta = 0.0, fa = 0.0, da = 0.0;  // previous sample (value, derivative along d)
       float ts = 0.0, fs = 0.0, ds = 0.0;  // the sample that opened the current bisection
       float lo = 0.0, flo = 0.0, hi = 0.0, fhi = 0.0;
       float tSplit = 0.0, fSplit = 0.0, dSplit = 0.0;  // extremum separating a root pair
-      bool havePrev = false, loadSegment = true, split = false;
-      for (int it = 0; it < RT_MAX_EVALS; ++it) {
-        if (loadSegment) {  // the nearest slot not marched yet
-          float segT0 = uintBitsToFloat(0x7F800000u), segT1 = 0.0, segCount = 0.0;
+      bool havePrev = false, split = false;
+      for (int round = 0; round < RT_SEGS + RT_MAX_HITS; ++round) {
+        if (k > steps) {  // segment finished (or none yet): load the nearest slot left
+          float na = INF, nb = -INF, nn = 0.0;
           for (int m = 0; m < RT_SEGS; ++m) {
-            if (segN[m] > 0.0 && segA[m] < segT0) { segT0 = segA[m]; segT1 = segB[m]; segCount = segN[m]; }
+            if (m == next) { na = segA[m]; nb = segB[m]; nn = segN[m]; }
+            if (m > next && segA[m] <= nb) { nb = max(nb, segB[m]); nn += segN[m]; next = m; }
           }
-          if (segCount == 0.0) break;
-          for (int m = 0; m < RT_SEGS; ++m) {
-            if (segA[m] == segT0) segN[m] = 0.0;
-          }
-          t0 = segT0;
-          steps = max(1, int(segCount) * rtIntervals);
-          h = (segT1 - t0) / float(steps);
-          k = 0; tm = t0; havePrev = false; loadSegment = false;
+          ++next;
+          if (!(na < INF)) break;
+          t0 = na; steps = max(1, int(nn) * rtIntervals); h = (nb - na) / float(steps);
+          k = 0; tm = t0; havePrev = false; mode = SAMPLE;
         }
-        vec4 g = zs_FGrad(o + tm * d);
-        float f = g.w, df = dot(g.xyz, d);
-        bool record = false, nextSample = false;
-        float tHit = tm;
-        if (zs_isUndefined(f)) {
-          // Outside F's domain: its boundary is not the surface. A bisection that runs into
-          // it is abandoned and sampling resumes after the sample that opened it.
-          havePrev = mode != SAMPLE;
-          ta = ts; fa = fs; da = ds;
-          mode = SAMPLE; split = false; nextSample = true;
-        } else if (mode == SAMPLE) {
-          if (f == 0.0) {
-            record = true; nextSample = true; havePrev = false;
-          } else if (havePrev && sign(f) != sign(fa)) {
-            mode = BISECT_F; lo = ta; flo = fa; hi = tm; fhi = f;
-          } else if (havePrev && rtTangentRoots && fa * da < 0.0 && f * df > 0.0) {
-            mode = BISECT_D; lo = ta; flo = fa; hi = tm; fhi = f;  // |F| fell, then rose
-          } else {
-            ta = tm; fa = f; da = df; havePrev = true; nextSample = true;
-          }
-          if (mode != SAMPLE) { ts = tm; fs = f; ds = df; bisections = 0; tm = 0.5 * (lo + hi); }
-        } else if (mode == BISECT_F) {  // thesis Algorithm 1, bracket [lo, hi]
-          ++bisections;
-          if (sign(f) == sign(flo)) { lo = tm; flo = f; } else { hi = tm; fhi = f; }
-          if (f == 0.0 || hi - lo <= rtEpsilon || bisections >= rtMaxBisections) {
-            // One secant step inside the final bracket: depth accurate far below epsilon.
-            tHit = f == 0.0 ? tm : clamp(lo + (hi - lo) * flo / (flo - fhi), lo, hi);
-            record = true; mode = SAMPLE; havePrev = true;
-            if (split) {  // first root of a pair: re-sample [tSplit, ts] for the second one
-              ta = tSplit; fa = fSplit; da = dSplit; tm = ts; split = false;
+        bool record = false;
+        float tHit = 0.0;
+        vec4 gHit = vec4(0.0);
+        for (; evals < RT_MAX_EVALS; ++evals) {
+          vec4 g = zs_FGrad(o + tm * d);
+          float f = g.w, df = dot(g.xyz, d);
+          bool nextSample = false;
+          tHit = tm; gHit = g;
+          if (zs_isUndefined(f)) {
+            // Outside F's domain: its boundary is not the surface. A bisection that runs
+            // into it is abandoned and sampling resumes after the sample that opened it.
+            havePrev = mode != SAMPLE;
+            ta = ts; fa = fs; da = ds;
+            mode = SAMPLE; split = false; nextSample = true;
+          } else if (mode == SAMPLE) {
+            if (f == 0.0) {
+              record = true; nextSample = true; havePrev = false;
+            } else if (havePrev && sign(f) != sign(fa)) {
+              mode = BISECT_F; lo = ta; flo = fa; hi = tm; fhi = f;
+            } else if (havePrev && rtTangentRoots && fa * da < 0.0 && f * df > 0.0) {
+              mode = BISECT_D; lo = ta; flo = fa; hi = tm; fhi = f;  // |F| fell, then rose
             } else {
-              ta = ts; fa = fs; da = ds; nextSample = true;
+              ta = tm; fa = f; da = df; havePrev = true; nextSample = true;
             }
-          } else {
-            tm = 0.5 * (lo + hi);
-          }
-        } else {  // BISECT_D: bisection on sign(F_lo) * dF/dt, negative while |F| falls
-          ++bisections;
-          if (sign(f) != sign(flo)) {  // F crossed zero: two roots; bisect the first one
-            mode = BISECT_F; hi = tm; fhi = f; bisections = 0;
-            split = true; tSplit = tm; fSplit = f; dSplit = df;
-          } else {
-            if (sign(flo) * df < 0.0) lo = tm; else hi = tm;
-            if (hi - lo <= rtTangentTolerance || bisections >= rtMaxBisections) {
-              // A tangent root where the distance estimate |F|/|grad F| at the extremum is
-              // below the tolerance: a ray that grazes the surface closer than that (or
-              // touches a double root, where both F and grad F vanish) hits it.
-              record = abs(f) <= rtTangentTolerance * length(g.xyz);
-              mode = SAMPLE; ta = ts; fa = fs; da = ds; havePrev = true; nextSample = true;
+            if (mode != SAMPLE) { ts = tm; fs = f; ds = df; bisections = 0; tm = 0.5 * (lo + hi); }
+          } else if (mode == BISECT_F) {  // bracket [lo, hi] around a sign change
+            ++bisections;
+            if (sign(f) == sign(flo)) { lo = tm; flo = f; } else { hi = tm; fhi = f; }
+            if (f == 0.0 || hi - lo <= rtEpsilon || bisections >= rtMaxBisections) {
+              // One secant step inside the final bracket: depth accurate far below epsilon.
+              tHit = f == 0.0 ? tm : clamp(lo + (hi - lo) * flo / (flo - fhi), lo, hi);
+              record = true; mode = SAMPLE; havePrev = true;
+              if (split) {  // first root of a pair: re-sample [tSplit, ts] for the second
+                ta = tSplit; fa = fSplit; da = dSplit; tm = ts; split = false;
+              } else {
+                ta = ts; fa = fs; da = ds; nextSample = true;
+              }
+            } else {
+              tm = 0.5 * (lo + hi);
             }
-          }
-          if (mode != SAMPLE) tm = 0.5 * (lo + hi);
-        }
-        if (record) {
-          vec3 p = o + tHit * d, slack = 1e-5 * (rtDomainMax - rtDomainMin);
-          if (all(greaterThanEqual(p, rtDomainMin - slack)) &&
-              all(lessThanEqual(p, rtDomainMax + slack))) {  // the closed domain box only
-            if (pass == 0 && found == 0) { firstT = tHit; firstG = g; }
-            if (colorRay) {
-              float share = (pass == 0 && found == 0) ? w : 1.0;
-              color += passScale * transmit * passAlpha * share * shade(p, g, d);
+          } else {  // BISECT_D: bisection on sign(F_lo) * dF/dt, negative while |F| falls
+            ++bisections;
+            if (sign(f) != sign(flo)) {  // F crossed zero: two roots; bisect the first one
+              mode = BISECT_F; hi = tm; fhi = f; bisections = 0;
+              split = true; tSplit = tm; fSplit = f; dSplit = df;
+            } else {
+              if (sign(flo) * df < 0.0) lo = tm; else hi = tm;
+              if (hi - lo <= rtTangentTolerance || bisections >= rtMaxBisections) {
+                // A tangent root where the distance estimate |F|/|grad F| at the extremum
+                // is below the tolerance: a ray grazing the surface closer than that, or
+                // touching a double root (where F and grad F both vanish), hits it.
+                record = abs(f) <= rtTangentTolerance * length(g.xyz);
+                mode = SAMPLE; ta = ts; fa = fs; da = ds; havePrev = true; nextSample = true;
+              }
             }
-            transmit *= 1.0 - passAlpha;
-            if (++found >= wanted) break;
+            if (mode != SAMPLE) tm = 0.5 * (lo + hi);
           }
+          if (nextSample) {
+            ++k;
+            tm = t0 + float(k) * h;
+          }
+          if (record || k > steps) break;
         }
-        if (nextSample) {
-          ++k;
-          if (k > steps) loadSegment = true; else tm = t0 + float(k) * h;
+        if (evals >= RT_MAX_EVALS) break;
+        if (!record) continue;
+        vec3 p = o + tHit * d, slack = 1e-5 * (rtDomainMax - rtDomainMin);
+        if (any(lessThan(p, rtDomainMin - slack)) || any(greaterThan(p, rtDomainMax + slack)))
+          continue;  // hits count only inside the closed domain box
+        if (pass == 0 && found == 0) { firstT = tHit; firstG = gHit; }
+        if (colorRay) {
+          float share = (pass == 0 && found == 0) ? w : 1.0;
+          color += passScale * transmit * passAlpha * share * shade(p, gHit, d);
         }
+        transmit *= 1.0 - passAlpha;
+        if (++found >= wanted) break;
       }
       color += passScale * transmit * rtBackground;  // what the kept hits let through
     }

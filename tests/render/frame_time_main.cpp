@@ -1,5 +1,5 @@
 // zs_render_frame_time FORMULA [WxH] [octree level] [frames] [--osmesa] [--no-tangent]
-//   [--png out.png]: median glFinish-timed frame time of the real pipeline at the default
+//   [--no-reflection] [--samples N] [--png out.png]: median glFinish-timed frame time of the real pipeline at the default
 // settings (camera (0,0,4), domain [-1.5,1.5]^3), plus the time to the first frame
 // (shader JIT). Not a test: the numbers in docs/renderer.md come from here.
 #include <glad/gl.h>
@@ -26,12 +26,15 @@ int main(int argc, char** argv) {
     return 2;
   }
   int w = 800, h = 600, level = 3, frames = 15;
-  bool osmesa = false, tangent = true;
+  bool osmesa = false, tangent = true, reflection = true;
+  int samples = 1;
   const char* png = nullptr;
   std::vector<const char*> positional;
   for (int i = 2; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--osmesa")) osmesa = true;
     else if (!std::strcmp(argv[i], "--no-tangent")) tangent = false;
+    else if (!std::strcmp(argv[i], "--no-reflection")) reflection = false;
+    else if (!std::strcmp(argv[i], "--samples") && i + 1 < argc) samples = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--png") && i + 1 < argc) png = argv[++i];
     else positional.push_back(argv[i]);
   }
@@ -54,6 +57,8 @@ int main(int argc, char** argv) {
   }
   tracer->setTangentRoots(tangent);
   RenderSettings settings = test::testSettings({0, 0, 4});
+  settings.reflection.enabled = reflection;
+  settings.samples = samples;
   if (std::string e = tracer->drawOffscreen(settings, spec.domain, w, h); !e.empty()) {
     std::fprintf(stderr, "%s\n", e.c_str());
     return 1;
@@ -68,8 +73,8 @@ int main(int argc, char** argv) {
     times.push_back(msSince(t));
   }
   std::sort(times.begin(), times.end());
-  std::printf("%s  %dx%d level %d tangent %s: median %.1f ms (min %.1f, max %.1f), first frame %.0f ms\n",
-              argv[1], w, h, level, tangent ? "on" : "off", times[times.size() / 2], times.front(),
+  std::printf("%s  %dx%d level %d tangent %s reflection %s samples %d: median %.1f ms (min %.1f, max %.1f), first frame %.0f ms\n",
+              argv[1], w, h, level, tangent ? "on" : "off", reflection ? "on" : "off", samples, times[times.size() / 2], times.front(),
               times.back(), first);
   if (png) {
     Frame frame = tracer->render(settings, spec.domain, w, h);
