@@ -48,6 +48,9 @@ class Parser {
 
  private:
   bool ok() const { return !error_; }
+  std::string text(std::size_t begin, std::size_t end) const {
+    return std::string(text_.substr(begin, end - begin));
+  }
   const Token& peek() const { return toks_[pos_]; }
   const Token& next() { return toks_[pos_ < toks_.size() - 1 ? pos_++ : pos_]; }
 
@@ -140,7 +143,7 @@ class Parser {
     if (e.op == Op::Const && std::nearbyint(e.value) == e.value &&
         std::fabs(e.value) > kMaxIntegerExponent) {
       fail({expBegin, toks_[pos_ - 1].span.end},
-           "integer exponent " + std::to_string(static_cast<long long>(e.value)) + " is too large",
+           "integer exponent " + text(expBegin, toks_[pos_ - 1].span.end) + " is too large",
            "exponents are limited to " + std::to_string(kMaxIntegerExponent) +
                " in magnitude; use exp(n*log(x)) for x > 0");
       return kNoNode;

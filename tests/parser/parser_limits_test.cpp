@@ -58,6 +58,10 @@ TEST(ParserLimits, ExponentLimit) {
   EXPECT_TRUE(std::holds_alternative<Formula>(parseFormula("x^-1024")));
   EXPECT_EQ(errorOf(parseFormula("x^1025")).span.begin, 2u);
   EXPECT_TRUE(std::holds_alternative<Formula>(parseFormula("x^1025.5")));  // real power: pow
+  // Exponents far beyond any integer type are reported, not converted (found by fuzzing).
+  EXPECT_EQ(errorOf(parseFormula("x^-2288230376151711744")).span.begin, 2u);
+  EXPECT_NE(errorOf(parseFormula("x^3^3^4")).message.find("3^3^4"), std::string::npos);
+  EXPECT_EQ(errorOf(parseFormula("x^1e300")).span.end, 7u);
 }
 
 TEST(ParserErrors, CaretSitsUnderTheSpan) {
