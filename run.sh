@@ -5,4 +5,5 @@ cd "$(dirname "$0")"
 scripts/install-deps.sh
 scripts/build.sh
 mkdir -p out
-build/src/app/zeroset check "x^2*y + x^2*z + y^2*x + y^2*z + z^2*y + z^2*x - (2/5)*(x*y + x*z + y*z)"
+build/src/app/zeroset render examples/thesis/2-cayley-cubic.surf -o out/cayley-cubic.png
+echo "open out/cayley-cubic.png to see the Cayley cubic; build/src/app/zeroset --help for more"
