@@ -59,8 +59,9 @@ TEST(IntervalRules, UndefinedPropagatesThroughEveryOperation) {
     const Op op = Op(i);
     if (opInfo(op).arity == 0) continue;
     EXPECT_TRUE(applyInterval(op, e, {1, 2}, 2, 0).isEmpty()) << opInfo(op).enumName;
-    if (opInfo(op).arity == 2)
+    if (opInfo(op).arity == 2) {
       EXPECT_TRUE(applyInterval(op, {1, 2}, e, 2, 0).isEmpty()) << opInfo(op).enumName;
+    }
   }
 }
 
