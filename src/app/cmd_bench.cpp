@@ -1,4 +1,5 @@
-// `zeroset bench [--quick] [--size WxH] [--frames N] [--out DIR] [--backend egl|osmesa]`:
+// `zeroset bench [--quick] [--plan full|levels] [--size WxH] [--frames N] [--max-level N]
+// [--out DIR] [--backend egl|osmesa]`:
 // reproduces the thesis' Tables 5.2 and 5.3 (and deeper octree levels) headless, and the
 // time from a typed formula to its first frame. Writes DIR/bench.md, DIR/bench.csv,
 // DIR/first_frame.csv and DIR/fps_by_level.png; progress goes to stderr. Exits 1 when any
@@ -20,6 +21,7 @@ struct BenchArgs {
   std::string size;
   int frames = 0;  // 0: the mode's default
   int maxLevel = -1;
+  std::string plan = "full";
   std::string out = "bench-results";
   std::string backend = "egl";
 };
@@ -48,6 +50,7 @@ int runBench(const BenchArgs& args) {
   }
   if (args.frames > 0) options.frames = args.frames;
   if (args.maxLevel >= 0) options.maxLevel = args.maxLevel;
+  if (args.plan == "levels") options.levelsOnly = true;
   if (!parseBackend(args.backend, options.backend)) {
     std::cerr << "error: unknown backend '" << args.backend << "'\nhint: egl or osmesa\n";
     return 1;
@@ -100,6 +103,10 @@ void addBenchCommand(CLI::App& app) {
       ->check(CLI::Range(1, 10000));
   cmd->add_option("--max-level", args->maxLevel, "deepest octree level timed (default 6)")
       ->check(CLI::Range(0, 10));
+  cmd->add_option("--plan", args->plan,
+                  "full: the thesis' Tables 5.2/5.3 grid plus deeper levels (default); levels: "
+                  "levels 0..max at 10 intervals / epsilon 0.001 only")
+      ->check(CLI::IsMember({"full", "levels"}));
   cmd->add_option("--out", args->out, "directory for the reports (default bench-results)");
   cmd->add_option("--backend", args->backend, "egl (default) or osmesa")
       ->check(CLI::IsMember({"egl", "osmesa"}));

@@ -15,14 +15,15 @@ BenchOptions quickOptions(BenchOptions base) {
   base.warmup = 1;
   base.maxLevel = 2;
   base.quick = true;
+  base.levelsOnly = true;
   return base;
 }
 
 std::vector<BenchConfig> benchPlan(const BenchOptions& options) {
   std::vector<BenchConfig> plan;
   for (const ThesisSurface& s : kThesisSurfaces) {
-    if (options.quick) {
-      for (int level = 0; level <= std::min(options.maxLevel, 2); ++level)
+    if (options.levelsOnly) {
+      for (int level = 0; level <= options.maxLevel; ++level)
         plan.push_back({s.number, level, kTable53Intervals, kTable52Epsilon});
       continue;
     }
