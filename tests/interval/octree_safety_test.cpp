@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <ostream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -26,6 +27,9 @@ struct Case {
   std::string formula;
   Box domain;
 };
+
+// Names the case in test listings instead of gtest's byte dump of the struct.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.formula; }
 
 Box cube(double lo, double hi) { return {{lo, lo, lo}, {hi, hi, hi}}; }
 
