@@ -1,10 +1,31 @@
 #version 330 core
-// Two triangles covering the viewport (thesis 4.4.2), generated from gl_VertexID so no
-// vertex buffer is needed; an empty VAO is bound when drawing. Positions pass through
-// unchanged (thesis Listing 4.1); the fragment shader derives its pixel from gl_FragCoord.
+// The geometry that starts one fragment (one ray) per pixel, generated from gl_VertexID so
+// no vertex buffer is needed (an empty VAO is bound when drawing).
+//  - Two triangles covering the viewport (thesis 4.4.2, Listing 4.1): rtProxyBox false,
+//    6 vertices; positions pass through unchanged.
+//  - The box where hits can lie (domain box clipped to the hierarchy's root box, widened
+//    by a pixel's footprint), 36 vertices, front faces culled: each pixel whose ray meets
+//    the box gets exactly one fragment; all other pixels keep the cleared background. On
+//    llvmpipe every fragment runs every branch of the shader (masked SIMD), so pixels that
+//    cannot hit anything are better never started.
+// Either way the fragment shader derives its pixel from gl_FragCoord, not from here.
+uniform bool rtProxyBox;
+uniform mat4 rtViewProj;  // world -> clip, the camera contract of docs/camera.md
+uniform vec3 rtBoxMin, rtBoxMax;
+
 const vec2 kCorners[6] = vec2[6](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(1.0, 1.0),
                                  vec2(-1.0, -1.0), vec2(1.0, 1.0), vec2(-1.0, 1.0));
+// Box corner c has x = bit 0, y = bit 1, z = bit 2; triangles wind counter-clockwise seen
+// from outside.
+const int kBox[36] = int[36](0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
+                             2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5);
 
 void main() {
-  gl_Position = vec4(kCorners[gl_VertexID], 0.0, 1.0);
+  if (!rtProxyBox) {
+    gl_Position = vec4(kCorners[gl_VertexID % 6], 0.0, 1.0);
+    return;
+  }
+  int c = kBox[gl_VertexID];
+  vec3 corner = mix(rtBoxMin, rtBoxMax, vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1));
+  gl_Position = rtViewProj * vec4(corner, 1.0);
 }

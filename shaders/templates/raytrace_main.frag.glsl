@@ -35,7 +35,7 @@ layout(location = 1) out float rtOutDepth;
 const int RT_SEGS = 8;         // leaf segments per ray; overflow widens the farthest
 const int RT_MAX_HITS = 8;     // upper bound of tracing.hits
 const int RT_MAX_EVALS = 4096; // safety bound on F evaluations per ray
-const int SAMPLE = 0, BISECT_F = 1, BISECT_D = 2;
+const int SAMPLE = 0, BISECT_F = 1, BISECT_D = 2;  // what the sampling loop found
 
 // Ray parameter interval inside the box [lo, hi]; empty when x > y.
 vec2 slab(vec3 lo, vec3 hi, vec3 ro, vec3 inv) {
@@ -110,7 +110,8 @@ void main() {
         tStart = max(4.0 * rtEpsilon, 1e-4 * length(rtDomainMax - rtDomainMin));  // leave the surface
         passAlpha = 1.0; passScale = alpha * (1.0 - w); wanted = 1;
       }
-      float transmit = 1.0;
+      float transmit = 1.0, hitT[RT_MAX_HITS];
+      vec4 hitG[RT_MAX_HITS];
       int found = 0;
       vec3 inv = 1.0 / mix(d, safeOne, equal(d, vec3(0.0)));
       vec2 dom = slab(rtDomainMin, rtDomainMax, o, inv);
@@ -123,16 +124,23 @@ void main() {
       const float INF = uintBitsToFloat(0x7F800000u);
       float segA[RT_SEGS], segB[RT_SEGS], segN[RT_SEGS];
       for (int m = 0; m < RT_SEGS; ++m) { segA[m] = INF; segB[m] = -INF; segN[m] = 0.0; }
-      int count = dom.x <= dom.y ? rtNodeCount : 0;
-      for (int i = 0; i < count;) {
-        uvec4 node = texelFetch(rtHierarchy, i);
-        vec3 qlo = vec3(node.x & 0xFFFFu, node.x >> 16u, node.y & 0xFFFFu);
-        vec3 qhi = vec3(node.y >> 16u, node.z & 0xFFFFu, node.z >> 16u);
-        vec2 tt = slab(rtRootMin + qlo * rtCell - rtPad, rtRootMin + qhi * rtCell + rtPad, o, inv);
-        float a = max(tt.x, dom.x), b = min(tt.y, dom.y);
-        bool hit = a <= b, leaf = (node.w & 1u) != 0u;
-        i = (hit && !leaf) ? i + 1 : int(node.w >> 1u);
-        if (!(hit && leaf)) continue;
+      // The walk to the next leaf hit is its own light loop (llvmpipe would otherwise run
+      // the insertion, masked, at every node visited).
+      int count = dom.x <= dom.y ? rtNodeCount : 0, i = 0;
+      while (i < count) {
+        float a = 0.0, b = 0.0;
+        bool leafHit = false;
+        while (i < count && !leafHit) {
+          uvec4 node = texelFetch(rtHierarchy, i);
+          vec3 qlo = vec3(node.x & 0xFFFFu, node.x >> 16u, node.y & 0xFFFFu);
+          vec3 qhi = vec3(node.y >> 16u, node.z & 0xFFFFu, node.z >> 16u);
+          vec2 tt = slab(rtRootMin + qlo * rtCell - rtPad, rtRootMin + qhi * rtCell + rtPad, o, inv);
+          a = max(tt.x, dom.x); b = min(tt.y, dom.y);
+          bool hit = a <= b, leaf = (node.w & 1u) != 0u;
+          i = (hit && !leaf) ? i + 1 : int(node.w >> 1u);
+          leafHit = hit && leaf;
+        }
+        if (!leafHit) break;
         float ca = a, cb = b, cn = 1.0;
         for (int m = 0; m < RT_SEGS; ++m) {
           bool before = ca < segA[m];
@@ -143,21 +151,18 @@ void main() {
         if (ca < INF) { segB[RT_SEGS - 1] = max(segB[RT_SEGS - 1], cb); segN[RT_SEGS - 1] += cn; }
       }
 
-      // March, thesis Algorithm 1 extended: sign samples (tracing.intervals per leaf),
-      // bisection on F, and bisection on dF/dt where |F| has a local minimum between two
-      // samples (tangent roots and close root pairs that sign sampling misses). llvmpipe
-      // runs every branch of a loop body for every iteration (masked SIMD), so the inner
-      // loop holds only the evaluation and the root-finding state; loading segments and
-      // shading hits happen in the outer loop.
-      int mode = SAMPLE, k = 1, steps = 0, bisections = 0, next = 0, evals = 0;  // k > steps: load
-      float t0 = 0.0, h = 0.0, tm = 0.0;
+      // March, thesis Algorithm 1 extended. llvmpipe runs both sides of every branch
+      // (masked SIMD) and every loop body at least once per entry, so the work is split
+      // into small loops: a sampling loop that walks sign samples (tracing.intervals per
+      // leaf) until F changes sign or |F| has a local minimum between two samples, then
+      // one bisection loop, on F (Algorithm 1) or on dF/dt (tangent roots and close root
+      // pairs that sign sampling misses), then shading, once per hit.
+      int k = 1, steps = 0, next = 0, evals = 0;  // k > steps: load the next segment
+      float t0 = 0.0, h = 0.0;
       float ta = 0.0, fa = 0.0, da = 0.0;  // previous sample (value, derivative along d)
-      float ts = 0.0, fs = 0.0, ds = 0.0;  // the sample that opened the current bisection
-      float lo = 0.0, flo = 0.0, hi = 0.0, fhi = 0.0;
-      float tSplit = 0.0, fSplit = 0.0, dSplit = 0.0;  // extremum separating a root pair
-      bool havePrev = false, split = false;
-      for (int round = 0; round < RT_SEGS + RT_MAX_HITS; ++round) {
-        if (k > steps) {  // segment finished (or none yet): load the nearest slot left
+      bool havePrev = false;
+      for (int round = 0; round < 64 && evals < RT_MAX_EVALS; ++round) {
+        if (k > steps) {  // the nearest slot left, merged with the slots it overlaps
           float na = INF, nb = -INF, nn = 0.0;
           for (int m = 0; m < RT_SEGS; ++m) {
             if (m == next) { na = segA[m]; nb = segB[m]; nn = segN[m]; }
@@ -166,84 +171,90 @@ void main() {
           ++next;
           if (!(na < INF)) break;
           t0 = na; steps = max(1, int(nn) * rtIntervals); h = (nb - na) / float(steps);
-          k = 0; tm = t0; havePrev = false; mode = SAMPLE;
+          k = 0; havePrev = false;
         }
-        bool record = false;
-        float tHit = 0.0;
-        vec4 gHit = vec4(0.0);
+        int mode = SAMPLE;
+        float tm = t0 + float(k) * h, ts = 0.0, fs = 0.0, ds = 0.0;
         for (; evals < RT_MAX_EVALS; ++evals) {
           vec4 g = zs_FGrad(o + tm * d);
           float f = g.w, df = dot(g.xyz, d);
-          bool nextSample = false;
-          tHit = tm; gHit = g;
           if (zs_isUndefined(f)) {
-            // Outside F's domain: its boundary is not the surface. A bisection that runs
-            // into it is abandoned and sampling resumes after the sample that opened it.
-            havePrev = mode != SAMPLE;
-            ta = ts; fa = fs; da = ds;
-            mode = SAMPLE; split = false; nextSample = true;
-          } else if (mode == SAMPLE) {
-            if (f == 0.0) {
-              record = true; nextSample = true; havePrev = false;
-            } else if (havePrev && sign(f) != sign(fa)) {
-              mode = BISECT_F; lo = ta; flo = fa; hi = tm; fhi = f;
-            } else if (havePrev && rtTangentRoots && fa * da < 0.0 && f * df > 0.0) {
-              mode = BISECT_D; lo = ta; flo = fa; hi = tm; fhi = f;  // |F| fell, then rose
-            } else {
-              ta = tm; fa = f; da = df; havePrev = true; nextSample = true;
-            }
-            if (mode != SAMPLE) { ts = tm; fs = f; ds = df; bisections = 0; tm = 0.5 * (lo + hi); }
-          } else if (mode == BISECT_F) {  // bracket [lo, hi] around a sign change
-            ++bisections;
-            if (sign(f) == sign(flo)) { lo = tm; flo = f; } else { hi = tm; fhi = f; }
-            if (f == 0.0 || hi - lo <= rtEpsilon || bisections >= rtMaxBisections) {
-              // One secant step inside the final bracket: depth accurate far below epsilon.
-              tHit = f == 0.0 ? tm : clamp(lo + (hi - lo) * flo / (flo - fhi), lo, hi);
-              record = true; mode = SAMPLE; havePrev = true;
-              if (split) {  // first root of a pair: re-sample [tSplit, ts] for the second
-                ta = tSplit; fa = fSplit; da = dSplit; tm = ts; split = false;
-              } else {
-                ta = ts; fa = fs; da = ds; nextSample = true;
-              }
-            } else {
-              tm = 0.5 * (lo + hi);
-            }
-          } else {  // BISECT_D: bisection on sign(F_lo) * dF/dt, negative while |F| falls
-            ++bisections;
-            if (sign(f) != sign(flo)) {  // F crossed zero: two roots; bisect the first one
-              mode = BISECT_F; hi = tm; fhi = f; bisections = 0;
-              split = true; tSplit = tm; fSplit = f; dSplit = df;
-            } else {
-              if (sign(flo) * df < 0.0) lo = tm; else hi = tm;
-              if (hi - lo <= rtTangentTolerance || bisections >= rtMaxBisections) {
-                // A tangent root where the distance estimate |F|/|grad F| at the extremum
-                // is below the tolerance: a ray grazing the surface closer than that, or
-                // touching a double root (where F and grad F both vanish), hits it.
-                record = abs(f) <= rtTangentTolerance * length(g.xyz);
-                mode = SAMPLE; ta = ts; fa = fs; da = ds; havePrev = true; nextSample = true;
-              }
-            }
-            if (mode != SAMPLE) tm = 0.5 * (lo + hi);
+            havePrev = false;  // F's domain boundary is not the surface
+          } else if (havePrev && sign(f) != sign(fa)) {
+            mode = BISECT_F;
+          } else if (havePrev && rtTangentRoots && fa * da < 0.0 && f * df > 0.0) {
+            mode = BISECT_D;  // |F| fell, then rose
+          } else {
+            ta = tm; fa = f; da = df; havePrev = true;
           }
-          if (nextSample) {
-            ++k;
-            tm = t0 + float(k) * h;
-          }
-          if (record || k > steps) break;
+          if (mode != SAMPLE) { ts = tm; fs = f; ds = df; break; }
+          if (++k > steps) break;
+          tm = t0 + float(k) * h;
         }
-        if (evals >= RT_MAX_EVALS) break;
+        if (mode == SAMPLE) continue;
+
+        float lo = ta, flo = fa, hi = ts, fhi = fs, tHit = 0.0, tSplit = 0.0, fSplit = 0.0, dSplit = 0.0;
+        vec4 gHit = vec4(0.0);
+        bool record = false, split = false, abandon = false;
+        for (int b = 0; b < rtMaxBisections; ++b) {
+          float tmid = 0.5 * (lo + hi);
+          vec4 g = zs_FGrad(o + tmid * d);
+          ++evals;
+          float f = g.w, df = dot(g.xyz, d);
+          tHit = tmid; gHit = g;
+          if (zs_isUndefined(f)) { abandon = true; break; }
+          if (mode == BISECT_D && sign(f) != sign(flo)) {
+            // F crossed zero at the extremum: two roots. Bisect the first on F; the
+            // second is found by re-sampling from here (below).
+            mode = BISECT_F; split = true; tSplit = tmid; fSplit = f; dSplit = df;
+          }
+          if (mode == BISECT_F) {
+            if (sign(f) == sign(flo)) { lo = tmid; flo = f; } else { hi = tmid; fhi = f; }
+            if (f == 0.0 || hi - lo <= rtEpsilon) break;
+          } else {  // sign(F_lo) * dF/dt is negative while |F| falls
+            if (sign(flo) * df < 0.0) lo = tmid; else hi = tmid;
+            if (hi - lo <= rtTangentTolerance) break;
+          }
+        }
+        if (mode == BISECT_F && !abandon) {
+          // One secant step inside the final bracket: depth accurate far below epsilon.
+          record = true;
+          if (gHit.w != 0.0) tHit = clamp(lo + (hi - lo) * flo / (flo - fhi), lo, hi);
+        } else if (!abandon) {
+          // A tangent root where the distance estimate |F|/|grad F| at the extremum is
+          // below the tolerance: a ray grazing the surface closer than that, or touching a
+          // double root (where F and grad F both vanish), hits it.
+          record = abs(gHit.w) <= rtTangentTolerance * length(gHit.xyz);
+        }
+        if (split && !abandon) {  // re-sample [tSplit, ts] for the second root of the pair
+          ta = tSplit; fa = fSplit; da = dSplit; havePrev = true;
+        } else {
+          ta = ts; fa = fs; da = ds; havePrev = !zs_isUndefined(fs); ++k;
+        }
         if (!record) continue;
         vec3 p = o + tHit * d, slack = 1e-5 * (rtDomainMax - rtDomainMin);
         if (any(lessThan(p, rtDomainMin - slack)) || any(greaterThan(p, rtDomainMax + slack)))
           continue;  // hits count only inside the closed domain box
-        if (pass == 0 && found == 0) { firstT = tHit; firstG = gHit; }
-        if (colorRay) {
-          float share = (pass == 0 && found == 0) ? w : 1.0;
-          color += passScale * transmit * passAlpha * share * shade(p, gHit, d);
+        for (int m = 0; m < RT_MAX_HITS; ++m) {  // constant indices: registers, not memory
+          if (m == found) { hitT[m] = tHit; hitG[m] = gHit; }
         }
-        transmit *= 1.0 - passAlpha;
         if (++found >= wanted) break;
       }
+      if (pass == 0 && found > 0) { firstT = hitT[0]; firstG = hitG[0]; }
+
+      // Shade the kept hits front to back, outside the march: shade() is long and every
+      // loop body runs at least once, so it runs max(found, 1) times per pass, not per round.
+      for (int j = 0; j < found && colorRay; ++j) {
+        float tj = 0.0;
+        vec4 gj = vec4(0.0);
+        for (int m = 0; m < RT_MAX_HITS; ++m) {
+          if (m == j) { tj = hitT[m]; gj = hitG[m]; }
+        }
+        float share = (pass == 0 && j == 0) ? w : 1.0;
+        color += passScale * transmit * passAlpha * share * shade(o + tj * d, gj, d);
+        transmit *= 1.0 - passAlpha;
+      }
+      if (!colorRay) transmit = found > 0 ? 0.0 : 1.0;
       color += passScale * transmit * rtBackground;  // what the kept hits let through
     }
     if (s == centerRay && firstT >= 0.0) depth = firstT;

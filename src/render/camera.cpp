@@ -67,4 +67,28 @@ Ray primaryRay(const Camera& camera, int width, int height, double i, double j) 
   return ray;
 }
 
+std::array<float, 16> viewProjection(const Camera& camera, int width, int height,
+                                     double nearDist, double farDist) {
+  const CameraBasis b = cameraBasis(camera);
+  const double s = imagePlaneHalfHeight(camera), aspect = double(width) / double(height);
+  const bool ortho = camera.projection == Projection::Orthographic;
+  auto dot = [](const Vec3& a, const Vec3& c) { return a[0] * c[0] + a[1] * c[1] + a[2] * c[2]; };
+  // Rows: x_ndc = dot(X - eye, right) / (s * aspect * w), y_ndc likewise with up' and s,
+  // w = depth along forward (perspective) or 1 (orthographic).
+  const double zA = ortho ? 2 / farDist : (farDist + nearDist) / (farDist - nearDist);
+  const double zB = ortho ? -1 : -2 * farDist * nearDist / (farDist - nearDist);
+  const std::array<std::array<double, 4>, 4> rows = {{
+      {b.right[0] / (s * aspect), b.right[1] / (s * aspect), b.right[2] / (s * aspect),
+       -dot(b.right, b.eye) / (s * aspect)},
+      {b.up[0] / s, b.up[1] / s, b.up[2] / s, -dot(b.up, b.eye) / s},
+      {zA * b.forward[0], zA * b.forward[1], zA * b.forward[2], -zA * dot(b.forward, b.eye) + zB},
+      ortho ? std::array<double, 4>{0, 0, 0, 1}
+            : std::array<double, 4>{b.forward[0], b.forward[1], b.forward[2], -dot(b.forward, b.eye)},
+  }};
+  std::array<float, 16> m{};
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) m[c * 4 + r] = float(rows[r][c]);
+  return m;
+}
+
 }  // namespace zs

@@ -2,6 +2,8 @@
 // The camera contract (docs/camera.md) on the CPU: takes a Camera and an image size, puts
 // out the orthonormal basis the shader receives and the exact ray of any pixel. The shader
 // repeats primaryRay() in float; tests use this double version as the analytic reference.
+#include <array>
+
 #include "render/settings.hpp"
 
 namespace zs {
@@ -29,5 +31,12 @@ Ray primaryRay(const Camera& camera, int width, int height, double i, double j);
 // Scale of the image plane at unit distance: tan(fov_y / 2) for perspective, height / 2
 // for orthographic. Clamped so fov_y in (0, 180) and height > 0.
 double imagePlaneHalfHeight(const Camera& camera);
+
+// World -> clip matrix (column-major, as glUniformMatrix4fv takes it) that puts any point
+// of pixel (i, j)'s ray at that pixel's center: rasterizing geometry with it starts exactly
+// the fragments whose rays meet the geometry. Depth maps [nearDist, farDist] along forward
+// (perspective) or [0, farDist] (orthographic) to [-1, 1].
+std::array<float, 16> viewProjection(const Camera& camera, int width, int height,
+                                     double nearDist, double farDist);
 
 }  // namespace zs

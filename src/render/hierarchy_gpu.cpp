@@ -26,6 +26,7 @@ std::string toGpuHierarchy(std::span<const float> packed, GpuHierarchy& out) {
     origin[a] = boxMin(0, a);
     cell[a] = (boxMax(0, a) - boxMin(0, a)) / cells;
     out.rootMin[a] = float(origin[a]);
+    out.rootMax[a] = float(boxMax(0, a));
     out.cell[a] = float(cell[a]);
     scale = std::max({scale, std::abs(boxMin(0, a)), std::abs(boxMax(0, a))});
   }

@@ -26,6 +26,7 @@ struct GpuHierarchy {
 
   std::vector<std::uint32_t> texels;  // 4 per node
   std::array<float, 3> rootMin{};     // node 0's box minimum
+  std::array<float, 3> rootMax{};     // and maximum: every leaf lies inside
   std::array<float, 3> cell{};        // root extent / 2^kGridBits per axis
   float pad = 0;                      // widens every box: closes float cracks between leaves
   int count = 0;                      // nodes

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 
 #include "render/shader_program.hpp"
 
@@ -117,30 +118,53 @@ std::string RayTracer::prepare(const RenderSettings& settings, const Domain& dom
     glDrawBuffers(2, buffers);
   }
   glUseProgram(program_);
-  setUniforms(settings, domain, width, height);
+  vertices_ = setUniforms(settings, domain, width, height);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_BUFFER, nodeTexture_);
   glBindVertexArray(vao_);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
+  // The box proxy keeps its back faces: one fragment per pixel. The two full-screen
+  // triangles are front-facing and must not be culled.
+  if (proxy_ == Proxy::Box) {
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_FRONT);
+    glFrontFace(GL_CCW);
+  } else {
+    glDisable(GL_CULL_FACE);
+  }
   glViewport(0, 0, width, height);
+  clearBackground(settings, offscreen);
   return {};
+}
+
+void RayTracer::clearBackground(const RenderSettings& settings, bool offscreen) {
+  // Pixels no ray starts in keep these: the background color and +inf depth.
+  glDisable(GL_SCISSOR_TEST);
+  const float color[4] = {float(settings.background[0]), float(settings.background[1]),
+                          float(settings.background[2]), 1.0f};
+  if (!offscreen) {
+    glClearColor(color[0], color[1], color[2], color[3]);
+    glClear(GL_COLOR_BUFFER_BIT);
+    return;
+  }
+  const float depth[4] = {std::numeric_limits<float>::infinity(), 0, 0, 0};
+  glClearBufferfv(GL_COLOR, 0, color);
+  glClearBufferfv(GL_COLOR, 1, depth);
 }
 
 std::string RayTracer::drawOffscreen(const RenderSettings& settings, const Domain& domain,
                                      int width, int height) {
   if (std::string error = prepare(settings, domain, width, height, true); !error.empty())
     return error;
-  glDisable(GL_SCISSOR_TEST);
-  glDrawArrays(GL_TRIANGLES, 0, 6);
+  if (vertices_ > 0) glDrawArrays(GL_TRIANGLES, 0, vertices_);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return {};
 }
 
 void RayTracer::draw(const RenderSettings& settings, const Domain& domain, int width, int height) {
   if (!prepare(settings, domain, width, height, false).empty()) return;
-  glDisable(GL_SCISSOR_TEST);
-  glDrawArrays(GL_TRIANGLES, 0, 6);
+  if (vertices_ > 0) glDrawArrays(GL_TRIANGLES, 0, vertices_);
 }
 
 Frame RayTracer::render(const RenderSettings& settings, const Domain& domain, int width,
@@ -157,7 +181,7 @@ Frame RayTracer::render(const RenderSettings& settings, const Domain& domain, in
   for (int ty = 0; ty < tilesY; ++ty) {
     for (int tx = 0; tx < tilesX; ++tx) {
       glScissor(tx * tileSize, ty * tileSize, tileSize, tileSize);
-      glDrawArrays(GL_TRIANGLES, 0, 6);
+      if (vertices_ > 0) glDrawArrays(GL_TRIANGLES, 0, vertices_);
       glFinish();
       if (progress && !progress(++done, tilesX * tilesY)) {
         glDisable(GL_SCISSOR_TEST);

@@ -28,6 +28,10 @@ struct Frame {
 // Called after each tile; return false to stop (the frame then reports "cancelled").
 using ProgressFn = std::function<bool(int tilesDone, int tilesTotal)>;
 
+// Which geometry starts the rays: the thesis' two full-screen triangles, or the box where
+// hits can lie, so background pixels cost nothing (same picture; docs/renderer.md).
+enum class Proxy { FullScreen, Box };
+
 class RayTracer {
  public:
   RayTracer();
@@ -61,11 +65,15 @@ class RayTracer {
   // Sampling also looks for tangent roots (local minima of |F| between sign samples, see
   // docs/renderer.md). On by default; off only to measure what the fix costs.
   void setTangentRoots(bool on) { tangentRoots_ = on; }
+  void setProxy(Proxy proxy) { proxy_ = proxy; }
 
  private:
   std::string prepare(const RenderSettings& settings, const Domain& domain, int width,
                       int height, bool offscreen);
-  void setUniforms(const RenderSettings& settings, const Domain& domain, int width, int height);
+  // Sets every uniform; returns the number of vertices to draw (0: nothing can be hit).
+  int setUniforms(const RenderSettings& settings, const Domain& domain, int width, int height);
+  int setProxyUniforms(const Camera& camera, const Domain& domain, int width, int height);
+  void clearBackground(const RenderSettings& settings, bool offscreen);
   int uniform(const char* name);
   std::string ensureTarget(int width, int height);
   void releaseTarget();
@@ -77,6 +85,8 @@ class RayTracer {
   GpuHierarchy hierarchy_;
   std::vector<float> params_;
   bool tangentRoots_ = true;
+  Proxy proxy_ = Proxy::Box;
+  int vertices_ = 6;  // of the current frame
   std::unordered_map<std::string, int> locations_;
 };
 

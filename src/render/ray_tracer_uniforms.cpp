@@ -17,7 +17,7 @@ void vec3Uniform(int location, const Vec3& v, double scale = 1) {
 
 }  // namespace
 
-void RayTracer::setUniforms(const RenderSettings& s, const Domain& domain, int width, int height) {
+int RayTracer::setUniforms(const RenderSettings& s, const Domain& domain, int width, int height) {
   glUniform1i(uniform("rtHierarchy"), 0);
   glUniform1i(uniform("rtNodeCount"), hierarchy_.count);
   glUniform3f(uniform("rtRootMin"), hierarchy_.rootMin[0], hierarchy_.rootMin[1],
@@ -80,6 +80,40 @@ void RayTracer::setUniforms(const RenderSettings& s, const Domain& domain, int w
     const int location = uniform("zs_params");
     if (location >= 0) glUniform1fv(location, GLsizei(params_.size()), params_.data());
   }
+  return setProxyUniforms(s.camera, domain, width, height);
+}
+
+int RayTracer::setProxyUniforms(const Camera& camera, const Domain& domain, int width, int height) {
+  glUniform1i(uniform("rtProxyBox"), proxy_ == Proxy::Box);
+  if (proxy_ == Proxy::FullScreen) return 6;
+  if (hierarchy_.count == 0) return 0;
+  // Hits lie in the domain and in the root box of the hierarchy.
+  Vec3 lo{}, hi{};
+  double diagonal = 0, farthest = 0;
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = std::max(domain.min[a], double(hierarchy_.rootMin[a]));
+    hi[a] = std::min(domain.max[a], double(hierarchy_.rootMax[a]));
+    if (!(lo[a] <= hi[a])) return 0;
+    diagonal += (hi[a] - lo[a]) * (hi[a] - lo[a]);
+    const double e = std::max(std::abs(lo[a] - camera.eye[a]), std::abs(hi[a] - camera.eye[a]));
+    farthest += e * e;
+  }
+  farthest = std::sqrt(farthest);
+  // Widen by two pixels' footprint at the far side (the box outline is rasterized at pixel
+  // centers; supersampling rays reach half a pixel further) plus the shader's pad.
+  const double plane = imagePlaneHalfHeight(camera) * 2 / height;
+  const double margin = 2 * plane * (camera.projection == Projection::Orthographic ? 1 : farthest) +
+                        1e-5 * std::sqrt(diagonal) + hierarchy_.pad;
+  for (int a = 0; a < 3; ++a) {
+    lo[a] -= margin;
+    hi[a] += margin;
+  }
+  vec3Uniform(uniform("rtBoxMin"), lo);
+  vec3Uniform(uniform("rtBoxMax"), hi);
+  const double farDist = 2 * farthest + 1;
+  const std::array<float, 16> m = viewProjection(camera, width, height, farDist * 1e-7, farDist);
+  glUniformMatrix4fv(uniform("rtViewProj"), 1, GL_FALSE, m.data());
+  return 36;
 }
 
 }  // namespace zs

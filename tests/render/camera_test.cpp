@@ -80,5 +80,32 @@ TEST(Camera, DegenerateInputStillGivesABasis) {
   expectOrthonormal(cameraBasis(zeroUp));
 }
 
+// The box proxy is rasterized with this matrix: a point on pixel (i, j)'s ray must land
+// on that pixel's center in normalized device coordinates.
+TEST(Camera, ViewProjectionPutsRayPointsOnTheirPixelCenters) {
+  for (Projection projection : {Projection::Perspective, Projection::Orthographic}) {
+    Camera c;
+    c.eye = {1.5, -2, 3};
+    c.target = {0.2, 0.1, -0.3};
+    c.projection = projection;
+    const int w = 64, h = 48;
+    const auto m = viewProjection(c, w, h, 1e-3, 50);
+    for (auto [i, j] : {std::pair{0, 0}, {63, 47}, {20, 30}}) {
+      const Ray r = primaryRay(c, w, h, i, j);
+      for (double t : {0.5, 2.0, 7.0}) {
+        double x[4] = {r.origin[0] + t * r.direction[0], r.origin[1] + t * r.direction[1],
+                       r.origin[2] + t * r.direction[2], 1};
+        double clip[4] = {};
+        for (int row = 0; row < 4; ++row)
+          for (int col = 0; col < 4; ++col) clip[row] += m[col * 4 + row] * x[col];
+        EXPECT_NEAR(clip[0] / clip[3], 2 * (i + 0.5) / w - 1, 1e-5);
+        EXPECT_NEAR(clip[1] / clip[3], 1 - 2 * (j + 0.5) / h, 1e-5);  // NDC y points up
+        EXPECT_GT(clip[2] / clip[3], -1);
+        EXPECT_LT(clip[2] / clip[3], 1);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace zs

@@ -227,6 +227,23 @@ TEST_F(Feature, HitsCountOnlyInsideTheClosedDomain) {
   EXPECT_GT(covered, 10);  // the patches around the diagonals
 }
 
+TEST_F(Feature, BoxProxyAndFullScreenTrianglesGiveTheSamePicture) {
+  RenderSettings s = base();
+  s.camera.eye = {1.0, 3.2, 3.9};
+  s.samples = 2;  // subsample rays reach past the pixel centers the box is rasterized at
+  s.reflection.enabled = true;
+  for (RayTracer* tracer : {sphere_, torus_, cylinder_}) {
+    tracer->setProxy(Proxy::FullScreen);
+    const Frame full = tracer->render(s, Domain{}, kSize, kSize);
+    tracer->setProxy(Proxy::Box);
+    const Frame box = tracer->render(s, Domain{}, kSize, kSize);
+    ASSERT_EQ(full.error, "");
+    EXPECT_EQ(full.color.rgba, box.color.rgba);
+    for (std::size_t p = 0; p < full.depth.values.size(); ++p)
+      EXPECT_EQ(full.depth.values[p], box.depth.values[p]);
+  }
+}
+
 TEST_F(Feature, TilesProgressAndCancel) {
   RenderSettings s = base();
   int calls = 0, lastTotal = 0;

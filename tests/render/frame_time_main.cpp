@@ -3,6 +3,7 @@
 // settings (camera (0,0,4), domain [-1.5,1.5]^3), plus the time to the first frame
 // (shader JIT). Not a test: the numbers in docs/renderer.md come from here.
 #include <glad/gl.h>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
@@ -15,6 +16,14 @@
 
 using namespace zs;
 using Clock = std::chrono::steady_clock;
+
+// CPU time of the whole process (all llvmpipe threads): on a machine shared with other
+// jobs wall time inflates, CPU time much less; CPU / threads estimates an idle machine.
+static double cpuMs() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return (u.ru_utime.tv_sec + u.ru_stime.tv_sec) * 1e3 + (u.ru_utime.tv_usec + u.ru_stime.tv_usec) / 1e3;
+}
 
 static double msSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -66,16 +75,18 @@ int main(int argc, char** argv) {
   glFinish();
   const double first = msSince(start);
   std::vector<double> times;
+  const double cpuStart = cpuMs();
   for (int f = 0; f < frames; ++f) {
     const auto t = Clock::now();
     tracer->drawOffscreen(settings, spec.domain, w, h);
     glFinish();
     times.push_back(msSince(t));
   }
+  const double cpuPerFrame = (cpuMs() - cpuStart) / frames;
   std::sort(times.begin(), times.end());
-  std::printf("%s  %dx%d level %d tangent %s reflection %s samples %d: median %.1f ms (min %.1f, max %.1f), first frame %.0f ms\n",
+  std::printf("%s  %dx%d level %d tangent %s reflection %s samples %d: median %.1f ms (min %.1f, max %.1f), CPU %.1f ms/frame, first frame %.0f ms\n",
               argv[1], w, h, level, tangent ? "on" : "off", reflection ? "on" : "off", samples, times[times.size() / 2], times.front(),
-              times.back(), first);
+              times.back(), cpuPerFrame, first);
   if (png) {
     Frame frame = tracer->render(settings, spec.domain, w, h);
     if (!frame.error.empty() || !writePng(png, frame.color).empty()) return 1;
