@@ -1,9 +1,9 @@
 // ---- raytrace_main.frag.glsl (render stage): follows the prelude and the generated
 // formula block, which define zs_FGrad(p) = (grad F, F). docs/renderer.md explains the
-// design; docs/camera.md the camera contract. zs_FGrad has exactly ONE call site (the
-// march loop) and shade() one: every call site is inlined and multiplies llvmpipe's JIT
-// time. No array is indexed by a run-time value: llvmpipe keeps constant-indexed arrays
-// in registers but spills dynamically indexed ones to memory, and memory is what costs.
+// design; docs/camera.md the camera contract. zs_FGrad has two call sites (the sampling
+// loop and the bisection loop), zs_F none and shade() one: every call site is inlined and
+// multiplies llvmpipe's JIT time. No array is indexed by a run-time value: llvmpipe keeps
+// constant-indexed arrays in registers but spills dynamically indexed ones to memory.
 
 // Hierarchy: one uvec4 per node (render/hierarchy_gpu.hpp repacks the 12-float layout):
 // the box as 16-bit corners on a 2^14 grid over the root box, w = escape << 1 | isLeaf.
@@ -97,7 +97,7 @@ void main() {
 
     // Pass 0: the primary ray, its hits blended front to back with the opacity (the first
     // hit weighted w when reflecting). Pass 1: one opaque reflection ray off the first hit,
-    // weighted alpha * (1 - w). One loop, so the march and zs_FGrad are inlined once.
+    // weighted alpha * (1 - w). One loop, so the march and zs_FGrad are inlined once each.
     for (int pass = 0; pass < 2; ++pass) {
       vec3 o = ro, d = rd;
       float tStart = 0.0, passAlpha = alpha, passScale = 1.0;
