@@ -9,8 +9,8 @@
 // the box as 16-bit corners on a 2^14 grid over the root box, w = escape << 1 | isLeaf.
 // One fetch per visited node: on llvmpipe fetches, not arithmetic, bound the traversal.
 uniform usamplerBuffer rtHierarchy;
-uniform int rtNodeCount;
-uniform vec3 rtRootMin, rtCell;  // grid origin and cell size
+uniform int rtNodeCount, rtFirstNode;
+uniform vec3 rtRootMin, rtRootMax, rtCell;  // root box = grid extent; cell size
 uniform float rtPad;
 uniform vec3 rtDomainMin, rtDomainMax;
 uniform vec2 rtResolution;  // full image size in pixels (tiles only restrict the scissor)
@@ -115,7 +115,10 @@ void main() {
       int found = 0;
       vec3 inv = 1.0 / mix(d, safeOne, equal(d, vec3(0.0)));
       vec2 dom = slab(rtDomainMin, rtDomainMax, o, inv);
-      dom.x = max(dom.x, tStart);
+      // The root box holds every leaf: clipping to it here makes fetching the root (node 0)
+      // unnecessary when it is an inner node (rtFirstNode = 1).
+      vec2 root = slab(rtRootMin - rtPad, rtRootMax + rtPad, o, inv);
+      dom = vec2(max(max(dom.x, root.x), tStart), min(dom.y, root.y));
 
       // Gather: stackless walk (pre-order + escape); each leaf's [t0, t1], clipped to the
       // domain, is insertion-sorted into RT_SEGS slots by compare-and-swap with constant
@@ -126,7 +129,7 @@ void main() {
       for (int m = 0; m < RT_SEGS; ++m) { segA[m] = INF; segB[m] = -INF; segN[m] = 0.0; }
       // The walk to the next leaf hit is its own light loop (llvmpipe would otherwise run
       // the insertion, masked, at every node visited).
-      int count = dom.x <= dom.y ? rtNodeCount : 0, i = 0;
+      int count = dom.x <= dom.y ? rtNodeCount : 0, i = rtFirstNode;
       while (i < count) {
         float a = 0.0, b = 0.0;
         bool leafHit = false;

@@ -35,6 +35,7 @@ std::string toGpuHierarchy(std::span<const float> packed, GpuHierarchy& out) {
   // it (float resolves about 6e-8 relative).
   out.pad = float(1e-6 * std::max(scale, 1e-30));
   out.count = int(count);
+  out.rootIsLeaf = packed[11] != 0;
   out.texels.resize(count * 4);
 
   // Grid coordinate of x, rounded outward, clamped to the root grid.

@@ -30,6 +30,7 @@ struct GpuHierarchy {
   std::array<float, 3> cell{};        // root extent / 2^kGridBits per axis
   float pad = 0;                      // widens every box: closes float cracks between leaves
   int count = 0;                      // nodes
+  bool rootIsLeaf = false;            // else the walk may start at node 1 (root box pre-clipped)
 };
 
 // Validates and converts. Returns "" on success, else what is wrong with the input (wrong

@@ -20,8 +20,11 @@ void vec3Uniform(int location, const Vec3& v, double scale = 1) {
 int RayTracer::setUniforms(const RenderSettings& s, const Domain& domain, int width, int height) {
   glUniform1i(uniform("rtHierarchy"), 0);
   glUniform1i(uniform("rtNodeCount"), hierarchy_.count);
+  glUniform1i(uniform("rtFirstNode"), hierarchy_.rootIsLeaf ? 0 : 1);
   glUniform3f(uniform("rtRootMin"), hierarchy_.rootMin[0], hierarchy_.rootMin[1],
               hierarchy_.rootMin[2]);
+  glUniform3f(uniform("rtRootMax"), hierarchy_.rootMax[0], hierarchy_.rootMax[1],
+              hierarchy_.rootMax[2]);
   glUniform3f(uniform("rtCell"), hierarchy_.cell[0], hierarchy_.cell[1], hierarchy_.cell[2]);
   glUniform1f(uniform("rtPad"), hierarchy_.pad);
   vec3Uniform(uniform("rtDomainMin"), domain.min);
