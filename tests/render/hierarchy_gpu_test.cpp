@@ -41,6 +41,8 @@ TEST(HierarchyGpu, PacksOctreeCellsExactly) {
   EXPECT_EQ(gpu.texels[11], 3u << 1 | 1u);
   EXPECT_EQ(gpu.texels[3], 3u << 1);  // root: inner node
   EXPECT_GT(gpu.pad, 0.0f);
+  EXPECT_FALSE(gpu.rootIsLeaf);  // the walk may skip node 0
+  EXPECT_EQ(gpu.rootMax, (std::array<float, 3>{2, 1, 4}));
   for (std::uint32_t word : gpu.texels) EXPECT_LT(word, 1u << 31);  // see hierarchy_gpu.hpp
 }
 
@@ -64,6 +66,8 @@ TEST(HierarchyGpu, EmptyIsValidAndMalformedInputIsRejected) {
 
   std::vector<float> good;
   addNode(good, {0, 0, 0}, {1, 1, 1}, 1, true);
+  ASSERT_EQ(toGpuHierarchy(good, gpu), "");
+  EXPECT_TRUE(gpu.rootIsLeaf);  // a lone leaf must still be fetched
   std::vector<float> bad = good;
   bad.pop_back();
   EXPECT_NE(toGpuHierarchy(bad, gpu), "");  // not 12 per node
