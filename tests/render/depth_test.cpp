@@ -24,10 +24,11 @@ double sphereDistance(const Ray& r, double& clearance) {
   return disc < 0 ? std::nan("") : -b - std::sqrt(disc);
 }
 
-void checkSphereDepth(Backend backend, const RenderSettings& settings, int size) {
+void checkSphereDepth(Backend backend, const RenderSettings& settings, int size,
+                      int level = 3, Criteria criteria = Criteria::Thesis) {
   std::string error;
   ASSERT_NE(test::context(backend, error), nullptr) << error;
-  test::SurfaceSpec spec{"x^2+y^2+z^2-1"};
+  test::SurfaceSpec spec{"x^2+y^2+z^2-1", {}, level, {}, criteria};
   auto tracer = test::makeTracer(spec, error);
   ASSERT_NE(tracer, nullptr) << error;
   const Frame frame = tracer->render(settings, spec.domain, size, size);
@@ -71,6 +72,11 @@ TEST(Depth, OrthographicAndOffAxisCamera) {
   s.camera.projection = Projection::Orthographic;
   s.camera.height = 2.6;
   checkSphereDepth(Backend::Egl, s, 64);
+}
+
+// Many small leaves per ray (more than the shader's 8 segment slots): no holes, no misses.
+TEST(Depth, DeepUniformOctreeLosesNoPixel) {
+  checkSphereDepth(Backend::Egl, test::testSettings({0.4, 0.9, 2.8}), 64, 5, Criteria::Uniform);
 }
 
 TEST(Depth, SupersamplingKeepsThePixelCenterDepth) {

@@ -36,6 +36,7 @@ std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& erro
   Box box{spec.domain.min, spec.domain.max};
   OctreeSettings octree;
   octree.level = spec.octreeLevel;
+  octree.criteria = spec.criteria;
   OctreeResult tree = buildOctree(formula, spec.params, box, octree);
   if (auto* e = std::get_if<OctreeError>(&tree)) {
     error = e->message;

@@ -12,6 +12,7 @@
 #include "render/image.hpp"
 #include "render/ray_tracer.hpp"
 #include "render/settings.hpp"
+#include "interval/octree_settings.hpp"
 
 namespace zs::test {
 
@@ -24,6 +25,7 @@ struct SurfaceSpec {
   Domain domain{};
   int octreeLevel = 3;
   std::vector<double> params{};
+  Criteria criteria = Criteria::Thesis;
 };
 
 // Builds a ray tracer for `spec` on the current context. Returns null with `error` set
