@@ -1,5 +1,5 @@
 // zs_render_frame_time FORMULA [WxH] [octree level] [frames] [--osmesa] [--no-tangent]
-//   [--no-reflection] [--samples N] [--png out.png]: median glFinish-timed frame time of the real pipeline at the default
+//   [--no-reflection] [--samples N] [--intervals N] [--epsilon E] [--png out.png]: median glFinish-timed frame time of the real pipeline at the default
 // settings (camera (0,0,4), domain [-1.5,1.5]^3), plus the time to the first frame
 // (shader JIT). Not a test: the numbers in docs/renderer.md come from here.
 #include <glad/gl.h>
@@ -36,7 +36,8 @@ int main(int argc, char** argv) {
   }
   int w = 800, h = 600, level = 3, frames = 15;
   bool osmesa = false, tangent = true, reflection = true;
-  int samples = 1;
+  int samples = 1, intervals = 10;
+  double epsilon = 0.001;
   const char* png = nullptr;
   std::vector<const char*> positional;
   for (int i = 2; i < argc; ++i) {
@@ -44,6 +45,8 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--no-tangent")) tangent = false;
     else if (!std::strcmp(argv[i], "--no-reflection")) reflection = false;
     else if (!std::strcmp(argv[i], "--samples") && i + 1 < argc) samples = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--intervals") && i + 1 < argc) intervals = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--epsilon") && i + 1 < argc) epsilon = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--png") && i + 1 < argc) png = argv[++i];
     else positional.push_back(argv[i]);
   }
@@ -68,6 +71,8 @@ int main(int argc, char** argv) {
   RenderSettings settings = test::testSettings({0, 0, 4});
   settings.reflection.enabled = reflection;
   settings.samples = samples;
+  settings.tracing.intervals = intervals;
+  settings.tracing.epsilon = epsilon;
   if (std::string e = tracer->drawOffscreen(settings, spec.domain, w, h); !e.empty()) {
     std::fprintf(stderr, "%s\n", e.c_str());
     return 1;
@@ -84,8 +89,8 @@ int main(int argc, char** argv) {
   }
   const double cpuPerFrame = (cpuMs() - cpuStart) / frames;
   std::sort(times.begin(), times.end());
-  std::printf("%s  %dx%d level %d tangent %s reflection %s samples %d: median %.1f ms (min %.1f, max %.1f), CPU %.1f ms/frame, first frame %.0f ms\n",
-              argv[1], w, h, level, tangent ? "on" : "off", reflection ? "on" : "off", samples, times[times.size() / 2], times.front(),
+  std::printf("%s  %dx%d level %d tangent %s reflection %s samples %d intervals %d epsilon %g: median %.1f ms (min %.1f, max %.1f), CPU %.1f ms/frame, first frame %.0f ms\n",
+              argv[1], w, h, level, tangent ? "on" : "off", reflection ? "on" : "off", samples, intervals, epsilon, times[times.size() / 2], times.front(),
               times.back(), cpuPerFrame, first);
   if (png) {
     Frame frame = tracer->render(settings, spec.domain, w, h);
