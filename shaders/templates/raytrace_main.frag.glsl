@@ -124,7 +124,7 @@ void main() {
       // domain, is insertion-sorted into RT_SEGS slots by compare-and-swap with constant
       // indices; once all slots are taken the farthest one widens (conservative, never a
       // miss). Overlapping slots merge when the march loads them.
-      const float INF = uintBitsToFloat(0x7F800000u);
+      float INF = uintBitsToFloat(0x7F800000u);  // not const: GLSL 3.30 has no constant calls
       float segA[RT_SEGS], segB[RT_SEGS], segN[RT_SEGS];
       for (int m = 0; m < RT_SEGS; ++m) { segA[m] = INF; segB[m] = -INF; segN[m] = 0.0; }
       // The walk to the next leaf hit is its own light loop (llvmpipe would otherwise run
