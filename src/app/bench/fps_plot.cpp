@@ -45,9 +45,9 @@ Image fpsByLevelPlot(const BenchResults& results, int width, int height) {
     all.push_back(series(results, s.number));
     for (const Point& p : all.back()) lo = std::min(lo, p.fps), hi = std::max(hi, p.fps);
   }
-  // Log scale: fps spans orders of magnitude between level 0 and deep levels. The range is
-  // widened to whole decades so the 1-2-5 ticks below always have a place.
-  const double logLo = std::floor(std::log10(lo)), logHi = std::ceil(std::log10(hi * 1.05));
+  // Log scale: fps spans orders of magnitude between level 0 and deep levels. The bottom
+  // is a whole decade so the 1-2-5 ticks always have a place; the top leaves 30% headroom.
+  const double logLo = std::floor(std::log10(lo)), logHi = std::log10(hi * 1.3);
   const int left = 64, right = width - 110, top = 24, bottom = height - 56;
   const int maxLevel = std::max(1, results.options.maxLevel);
   const auto px = [&](double level) {
