@@ -102,8 +102,8 @@ void octreeAndDomain(Scene& scene) {
 }  // namespace
 
 void drawSettings(Scene& scene) {
-  if (ImGui::CollapsingHeader("tracing", ImGuiTreeNodeFlags_DefaultOpen)) tracing(scene);
-  if (ImGui::CollapsingHeader("octree and domain", ImGuiTreeNodeFlags_DefaultOpen))
+  if (ImGui::CollapsingHeader("tracing")) tracing(scene);
+  if (ImGui::CollapsingHeader("octree and domain"))
     octreeAndDomain(scene);
   if (ImGui::CollapsingHeader("highlights")) {
     highlight("silhouette", scene.render.silhouette);

@@ -13,18 +13,11 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "app/repl/scene_edit.hpp"
-#include "parser/parser.hpp"
 
 namespace zs::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-bool needsBuild(const Scene& a, const Scene& b) {
-  return a.formula != b.formula || a.params != b.params || a.domain != b.domain ||
-         a.octree != b.octree;
-}
 
 }  // namespace
 
@@ -72,6 +65,16 @@ Viewer::~Viewer() {
 
 void Viewer::run() {
   while (!window_->shouldClose()) frame();
+  if (options_.log) {
+    for (int reduced = 0; reduced < 2; ++reduced) {
+      if (traces_[reduced] == 0) continue;
+      const double mean = traceMsTotal_[reduced] / traces_[reduced];
+      std::printf("traces %s: %d, mean %.1f ms (%.1f fps) at %dx%d\n",
+                  reduced ? "reduced" : "full", traces_[reduced], mean, 1000.0 / mean,
+                  stats_.width / (reduced ? lastScale_ : 1), stats_.height / (reduced ? lastScale_ : 1));
+    }
+    std::fflush(stdout);
+  }
   std::lock_guard lock(mutex_);
   closed_ = true;
   for (Pending& p : pending_) p.reply.set_value("error: the window was closed\n");
@@ -80,106 +83,6 @@ void Viewer::run() {
     if (w.reply) w.reply->set_value("error: the window was closed\n");
   }
   waiting_.clear();
-}
-
-void Viewer::setScene(const Scene& scene, const std::string& exampleName) {
-  scene_ = scene;
-  loaded_ = scene;
-  panel_.formula = scene.formula;
-  panel_.formulaError.clear();
-  stats_.example = exampleName;
-  requestBuild();
-  dirty_ = true;
-}
-
-void Viewer::applyTypedFormula() {
-  buildAt_.reset();
-  if (!panel_.formulaError.empty() || panel_.formula == scene_.formula) return;
-  const Scene prior = scene_;
-  scene_.formula = panel_.formula;
-  onSceneEdited(prior);
-}
-
-void Viewer::requestBuild() {
-  buildAt_.reset();
-  worker_->submit(scene_);
-  stats_.building = true;
-}
-
-std::string Viewer::onSceneEdited(const Scene& before) {
-  if (std::string err = checkScene(scene_); !err.empty()) {
-    scene_ = before;  // refused: keep the last scene that saves and loads
-    stats_.status = err;
-    return err;
-  }
-  if (needsBuild(before, scene_)) {
-    // A new parameter value shows at once through the uniforms; the hierarchy built for
-    // the old value follows from the worker.
-    if (before.formula == scene_.formula && before.params != scene_.params) {
-      std::vector<float> values;
-      for (const std::string& name : panel_.paramNames) {
-        double v = kDefaultParamValue;
-        for (const auto& [key, value] : scene_.params) {
-          if (key == name) v = value;
-        }
-        values.push_back(float(v));
-      }
-      view_->setParams(values);
-    }
-    requestBuild();
-  }
-  dirty_ = true;
-  return {};
-}
-
-void Viewer::takeBuild() {
-  std::optional<SurfaceWorker::Result> result = worker_->take();
-  if (!result) return;
-  stats_.building = worker_->busy();
-  const bool latest = result->id == worker_->lastSubmitted();
-  std::string error;
-  if (auto* err = std::get_if<std::string>(&result->surface)) {
-    error = *err;
-  } else {
-    const PreparedSurface& surface = std::get<PreparedSurface>(result->surface);
-    error = view_->upload(surface);
-    if (error.empty()) {
-      built_ = result->scene;
-      hasSurface_ = true;
-      dirty_ = true;
-      const std::vector<std::string>& names = surface.formula.graph.params();
-      if (names != panel_.paramNames) {
-        panel_.paramNames = names;
-        panel_.paramRanges.clear();
-        for (double v : surface.params) panel_.paramRanges.push_back(paramRange(v));
-      }
-      // Every parameter gets an entry, so the sliders edit it and a save records it.
-      for (std::size_t i = 0; i < names.size(); ++i) {
-        const bool present = std::any_of(scene_.params.begin(), scene_.params.end(),
-                                         [&](const auto& p) { return p.first == names[i]; });
-        if (!present) scene_.params.emplace_back(names[i], surface.params[i]);
-      }
-      if (latest) built_.params = scene_.params;
-      stats_.buildMs = result->wallMs;
-      stats_.leaves = surface.octree.leaves.size();
-      stats_.spheres = surface.hierarchy.nodes.size();
-      if (latest && panel_.formula == built_.formula) panel_.formulaError.clear();
-    }
-  }
-  if (latest) lastBuildError_ = error;
-  if (!error.empty() && latest) {
-    // The last good surface stays on screen, and the scene goes back to it.
-    scene_.formula = built_.formula;
-    scene_.params = built_.params;
-    scene_.domain = built_.domain;
-    scene_.octree = built_.octree;
-    panel_.formulaError = error;
-    stats_.status = "build failed; showing the last good surface";
-  }
-  if (options_.log) {
-    std::printf(error.empty() ? "built %s\n" : "build failed %s\n", result->scene.formula.c_str());
-    std::fflush(stdout);
-  }
 }
 
 bool Viewer::interacting() const {
@@ -214,6 +117,9 @@ void Viewer::traceIfNeeded(int width, int height) {
   msPerPixel_ = ms / (double(width / scale) * double(height / scale) * samples);
   stats_.traceMs = ms;
   stats_.traceScale = scale;
+  ++traces_[scale > 1];
+  traceMsTotal_[scale > 1] += ms;
+  if (scale > 1) lastScale_ = scale;
   dirty_ = false;
   refine_ = scale > 1;
 }
@@ -238,6 +144,8 @@ void Viewer::frame() {
   if (width <= 0 || height <= 0) return;  // minimized
 
   const auto frameStart = Clock::now();
+  // The F key that asks for the formula box also queued an 'f' character: drop it.
+  if (panel_.focusFormula) ImGui::GetIO().InputQueueCharacters.resize(0);
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
@@ -258,6 +166,7 @@ void Viewer::frame() {
   traceIfNeeded(width, height);
   view_->present(width, height);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  if (windowShot_ && !worker_->busy()) captureWindow(width, height);
   window_->swapBuffers();
   answerWaiting();
 

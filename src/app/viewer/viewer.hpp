@@ -66,16 +66,18 @@ class Viewer {
 
   // viewer.cpp: the loop and its pieces
   void frame();
+  void traceIfNeeded(int width, int height);
+  bool interacting() const;
+  int reducedScale(int width, int height) const;
+
+  // viewer_build.cpp: scene edits and builds
   void takeBuild();
   void requestBuild();
-  void traceIfNeeded(int width, int height);
   // Checks the edited scene_ (reverting to `before` when it would not load back), then
   // starts a build or marks a redraw. "" or the refusal.
   std::string onSceneEdited(const Scene& before);
   void applyTypedFormula();
   void setScene(const Scene& scene, const std::string& exampleName);
-  bool interacting() const;
-  int reducedScale(int width, int height) const;
 
   // viewer_input.cpp: GLFW callbacks and key actions
   void installCallbacks();
@@ -92,6 +94,7 @@ class Viewer {
   std::string runOutput(const PromptCommand& command);
   std::string screenshot(const std::filesystem::path& path);
   std::string save(const std::filesystem::path& path);
+  void captureWindow(int width, int height);  // the back buffer, panel included
 
   ViewerOptions options_;
   std::unique_ptr<GlfwWindowContext> window_;
@@ -128,11 +131,17 @@ class Viewer {
   std::chrono::steady_clock::time_point fpsStart_ = std::chrono::steady_clock::now();
   int fpsFrames_ = 0;
   double fps_ = 0;
+  // Trace counts and total milliseconds at full [0] and reduced [1] resolution, for the
+  // summary --log prints at exit.
+  int traces_[2] = {0, 0};
+  double traceMsTotal_[2] = {0, 0};
+  int lastScale_ = 1;
 
   std::mutex mutex_;  // guards pending_ and closed_
   std::deque<Pending> pending_;
   bool closed_ = false;
   std::vector<Waiting> waiting_;  // main thread only
+  bool windowShot_ = false;        // Shift+C: capture before the next swap
   std::string lastBuildError_;    // of the latest build request, "" when it is on screen
 };
 

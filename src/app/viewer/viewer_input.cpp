@@ -87,6 +87,7 @@ void Viewer::showExample(int delta) {
   setScene(std::get<Scene>(loaded), example.name);
   stats_.status = "example " + std::to_string(exampleIndex_ + 1) + " of " + std::to_string(n) +
                   ": " + example.name;
+  if (options_.log) std::printf("%s\n", stats_.status.c_str());
 }
 
 void Viewer::runAction(Action action) {
@@ -95,6 +96,7 @@ void Viewer::runAction(Action action) {
     case Action::NextExample: showExample(1); break;
     case Action::PrevExample: showExample(-1); break;
     case Action::Screenshot: waiting_.push_back({{PromptCommand::Kind::Png, {}}, std::nullopt}); break;
+    case Action::WindowShot: windowShot_ = true; break;
     case Action::SaveScene: waiting_.push_back({{PromptCommand::Kind::Save, {}}, std::nullopt}); break;
     case Action::FocusFormula:
       panelVisible_ = true;

@@ -1,8 +1,10 @@
 // What leaves the viewer: screenshots, saved scenes and the replies to prompt commands.
 // All of them wait until no build is queued or running, so they show what was asked for.
 #include <GLFW/glfw3.h>
+#include <glad/gl.h>
 
 #include <cstdio>
+#include <cstring>
 
 #include "app/repl/scene_edit.hpp"
 #include "app/viewer/viewer.hpp"
@@ -115,6 +117,24 @@ std::string Viewer::screenshot(const std::filesystem::path& path) {
   }
   stats_.status = text;
   return text;
+}
+
+void Viewer::captureWindow(int width, int height) {
+  windowShot_ = false;
+  Image image{width, height, std::vector<std::uint8_t>(std::size_t(width) * height * 4)};
+  std::vector<std::uint8_t> rows(image.rgba.size());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+  const std::size_t stride = std::size_t(width) * 4;
+  for (int y = 0; y < height; ++y)  // GL rows come bottom-up
+    std::memcpy(&image.rgba[std::size_t(y) * stride], &rows[std::size_t(height - 1 - y) * stride], stride);
+  const std::filesystem::path path = nextFreePath(options_.outputDir, "zeroset-window", ".png");
+  const std::string err = writePng(path.string(), image);
+  stats_.status = err.empty() ? "window: " + path.string() : "error: " + err;
+  std::printf("%s\n", stats_.status.c_str());
+  std::fflush(stdout);
 }
 
 std::string Viewer::save(const std::filesystem::path& path) {

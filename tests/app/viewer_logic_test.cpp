@@ -1,0 +1,151 @@
+// The viewer's pure pieces, no window: arcball math, the key table and its scene edits,
+// prompt line parsing, scene checks, example discovery.
+#include <gtest/gtest.h>
+
+#include <GLFW/glfw3.h>
+
+#include <cmath>
+#include <set>
+#include <variant>
+
+#include "app/repl/command.hpp"
+#include "app/repl/scene_edit.hpp"
+#include "app/viewer/arcball.hpp"
+#include "app/viewer/examples.hpp"
+#include "app/viewer/key_bindings.hpp"
+#include "process.hpp"
+#include "render/camera.hpp"
+
+namespace zs::app {
+namespace {
+
+double length(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+TEST(Arcball, HorizontalDragOrbitsAboutTheUpAxisAndKeepsTheDistance) {
+  const Camera start;  // eye (0, 0, 4) looking at the origin
+  const Camera turned = orbitCamera(start, {400, 300, 500, 300, 800, 600});
+  EXPECT_NEAR(length(turned.eye), 4.0, 1e-12);
+  EXPECT_NEAR(turned.eye[1], 0.0, 1e-12) << "a horizontal drag keeps the eye's height";
+  EXPECT_LT(turned.eye[0], -0.5) << "dragging right turns the surface right: the eye goes left";
+  const CameraBasis b = cameraBasis(turned);
+  EXPECT_NEAR(b.up[1], 1.0, 1e-12);
+}
+
+TEST(Arcball, DragBackReturnsAndDegenerateInputIsANoOp) {
+  const Camera start;
+  const Camera there = orbitCamera(start, {400, 300, 470, 200, 800, 600});
+  const Camera back = orbitCamera(start, {400, 300, 400, 300, 800, 600});
+  EXPECT_EQ(back, start);
+  EXPECT_NE(there, start);
+  EXPECT_EQ(orbitCamera(start, {1, 2, 3, 4, 0, 0}), start);
+}
+
+TEST(Arcball, LightFollowsTheDragAndZoomMovesTowardsTheTarget) {
+  const Camera view;
+  const Vec3 light = orbitPoint(view, {3, 0, 0}, {400, 300, 300, 300, 800, 600});
+  EXPECT_NEAR(length(light), 3.0, 1e-12);
+  EXPECT_GT(light[2], 0.5) << "dragging left swings a light on the right towards the viewer";
+  const Camera closer = zoomCamera(view, 1);
+  EXPECT_NEAR(length(closer.eye), 4 * 0.85, 1e-12);
+  EXPECT_NEAR(length(zoomCamera(view, -1000).eye), 1e4, 1e-6) << "clamped";
+}
+
+TEST(KeyBindings, EveryKeyIsBoundOnceAndDescribed) {
+  std::set<std::pair<int, int>> seen;
+  for (const KeyBinding& b : keyBindings()) {
+    EXPECT_TRUE(seen.insert({b.key, b.mods}).second) << b.keyName;
+    EXPECT_NE(std::string(b.description), "");
+    EXPECT_EQ(findBinding(b.key, b.mods | GLFW_MOD_CAPS_LOCK), &b) << "Caps Lock is ignored";
+  }
+  EXPECT_EQ(findBinding(GLFW_KEY_S, GLFW_MOD_CONTROL)->action, Action::SaveScene);
+  EXPECT_EQ(findBinding(GLFW_KEY_Z, 0), nullptr);
+}
+
+TEST(KeyBindings, EditsStayInsideTheSceneRanges) {
+  Scene s;
+  std::string message;
+  s.render.lights.point.intensity = 0.05;
+  EXPECT_EQ(applyAction(Action::PointLightDown, s, message), Effect::Redraw);
+  EXPECT_EQ(s.render.lights.point.intensity, 0.0);
+  s.render.tracing.epsilon = 0.5;
+  applyAction(Action::EpsilonUp, s, message);
+  EXPECT_EQ(s.render.tracing.epsilon, 1.0);
+  EXPECT_EQ(message, "epsilon 1");
+  s.render.tracing.intervals = 1;
+  applyAction(Action::IntervalsDown, s, message);
+  EXPECT_EQ(s.render.tracing.intervals, 1);
+  s.octree.level = 0;
+  EXPECT_EQ(applyAction(Action::LevelDown, s, message), Effect::None);
+  EXPECT_EQ(applyAction(Action::LevelUp, s, message), Effect::Rebuild);
+  s.octree.level = kMaxKeyLevel;
+  EXPECT_EQ(applyAction(Action::LevelUp, s, message), Effect::None);
+  const bool on = s.render.silhouette.enabled;
+  applyAction(Action::ToggleSilhouette, s, message);
+  EXPECT_NE(s.render.silhouette.enabled, on);
+  EXPECT_EQ(checkScene(s), "");
+}
+
+TEST(PromptCommands, LinesParseToCommandsOrUsageErrors) {
+  using K = PromptCommand::Kind;
+  struct Case {
+    const char* line;
+    K kind;
+    const char* arg;
+  };
+  for (const Case& c : {Case{"  x^2 - y ", K::Formula, "x^2 - y"}, Case{":load a b.surf", K::Load, "a b.surf"},
+                        Case{":save  s.surf", K::Save, "s.surf"}, Case{":set tracing.hits=2", K::Set, "tracing.hits=2"},
+                        Case{":png o.png", K::Png, "o.png"}, Case{":help", K::Help, ""},
+                        Case{":quit", K::Quit, ""}, Case{"   ", K::Empty, ""}}) {
+    auto parsed = parsePromptLine(c.line);
+    ASSERT_TRUE(std::holds_alternative<PromptCommand>(parsed)) << c.line;
+    EXPECT_EQ(std::get<PromptCommand>(parsed).kind, c.kind) << c.line;
+    EXPECT_EQ(std::get<PromptCommand>(parsed).arg, c.arg) << c.line;
+  }
+  for (const char* bad : {":load", ":quit now", ":frobnicate", ":"}) {
+    auto parsed = parsePromptLine(bad);
+    ASSERT_TRUE(std::holds_alternative<std::string>(parsed)) << bad;
+    EXPECT_EQ(std::get<std::string>(parsed).rfind("error: ", 0), 0u) << bad;
+  }
+}
+
+TEST(SceneEdit, BadEditsLeaveTheSceneAlone) {
+  Scene s;
+  const Scene before = s;
+  EXPECT_NE(applyToScene({PromptCommand::Kind::Formula, "x^^2"}, s), "");
+  EXPECT_NE(applyToScene({PromptCommand::Kind::Set, "tracing.hits=99"}, s), "");
+  EXPECT_NE(applyToScene({PromptCommand::Kind::Load, "/nonexistent/a.surf"}, s), "");
+  EXPECT_EQ(s, before);
+  s.render.tracing.epsilon = -1;  // what a bad panel edit would do
+  EXPECT_NE(checkScene(s), "");
+  const auto dir = test::freshDir("next-free");
+  EXPECT_EQ(nextFreePath(dir, "zeroset", ".png").filename(), "zeroset-0001.png");
+  test::shell("touch " + (dir / "zeroset-0001.png").string());
+  EXPECT_EQ(nextFreePath(dir, "zeroset", ".png").filename(), "zeroset-0002.png");
+}
+
+TEST(Examples, WithoutFilesTheThesisSurfacesAreBuiltIn) {
+  const std::vector<Example> builtIn = listExamples({});
+  ASSERT_EQ(builtIn.size(), 7u);
+  for (const Example& e : builtIn) {
+    auto scene = loadExample(e);
+    ASSERT_TRUE(std::holds_alternative<Scene>(scene)) << e.name;
+    EXPECT_EQ(std::get<Scene>(scene).render.tracing.intervals, 10);
+    EXPECT_EQ(applyToScene({PromptCommand::Kind::Formula, e.formula}, std::get<Scene>(scene)), "");
+  }
+  const auto dir = test::freshDir("examples");
+  std::filesystem::create_directories(dir / "thesis");
+  test::shell("echo 'formula = \"x^2 - y\"' > " + (dir / "thesis" / "b.surf").string());
+  test::shell("echo 'formula = \"x - 1\"' > " + (dir / "a.surf").string());
+  test::shell("echo 'formula = \"x^^\"' > " + (dir / "broken.surf").string());
+  const std::vector<Example> files = listExamples(dir);
+  ASSERT_EQ(files.size(), 3u);
+  EXPECT_EQ(files[0].name, "thesis/b") << "thesis surfaces first";
+  EXPECT_EQ(files[1].name, "a");
+  EXPECT_TRUE(std::holds_alternative<Scene>(loadExample(files[0])));
+  auto broken = loadExample(files[2]);
+  ASSERT_TRUE(std::holds_alternative<std::string>(broken));
+  EXPECT_NE(std::get<std::string>(broken).find("broken.surf:1:"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace zs::app

@@ -1,0 +1,165 @@
+// The viewer in a real window (ctest runs this binary under xvfb-run): each test drives
+// `zeroset view` with xdotool and checks what the screenshots and saved scenes show.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <variant>
+
+#include "scene/scene_io.hpp"
+#include "viewer_session.hpp"
+
+namespace zs::test {
+namespace {
+
+// Fraction of pixels that moved by more than a little: "the picture changed".
+double changed(const Image& a, const Image& b) { return compareImages(a, b, 24).fractionOver; }
+
+Scene loadSaved(const std::filesystem::path& path) {
+  SceneResult loaded = loadScene(path);
+  if (auto* err = std::get_if<SceneError>(&loaded)) {
+    ADD_FAILURE() << formatSceneError(*err);
+    return {};
+  }
+  return std::get<Scene>(loaded);
+}
+
+double distance(const Vec3& a, const Vec3& b) {
+  return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+}
+
+#define START(session) \
+  ASSERT_TRUE(session.ok()) << session.error()
+
+TEST(Viewer, DragRotatesTheCameraAroundTheTarget) {
+  ViewerSession v("drag", {"x^4 + y^4 + z^4 - 1", "--set", "octree.level=2"});
+  START(v);
+  const Image before = v.screenshot();
+  ASSERT_GT(before.width, 0);
+  v.drag(1, 560, 300, 700, 380);
+  const Image after = v.screenshot();
+  EXPECT_GT(changed(before, after), 0.05) << "a drag must turn the surface";
+  const Scene saved = loadSaved(v.save());
+  EXPECT_GT(distance(saved.render.camera.eye, {0, 0, 4}), 0.5) << "the eye moved";
+  EXPECT_NEAR(distance(saved.render.camera.eye, saved.render.camera.target), 4.0, 1e-9)
+      << "an arcball orbit keeps the distance to the target";
+}
+
+TEST(Viewer, SilhouetteKeyRemovesTheDarkOutline) {
+  ViewerSession v("silhouette", {"x^4 + y^4 + z^4 - 1"});
+  START(v);
+  // The outline is a dark neutral gray (its color (0.05, 0.05, 0.05) blended with the
+  // shading at the rim); the orange surface and the white background have none of it.
+  const int outlined = countPixels(v.screenshot(), 30, 150, 8);
+  v.key("s");
+  ASSERT_FALSE(v.waitLog("silhouette off").empty());
+  const int plain = countPixels(v.screenshot(), 30, 150, 8);
+  EXPECT_GT(outlined, 300);
+  EXPECT_LT(plain, outlined / 10);
+}
+
+TEST(Viewer, BorderKeyTogglesTheDomainBorderHighlight) {
+  // A hyperboloid leaves the domain box, so its cut edges carry the (0.9, 0.9, 0.9) border.
+  ViewerSession v("border", {"x^2 + y^2 - z^2 - 0.3", "--set", "camera.eye=[2.5,2,3]"});
+  START(v);
+  const int highlighted = countPixels(v.screenshot(), 215, 240);
+  v.key("b");
+  ASSERT_FALSE(v.waitLog("border highlight off").empty());
+  const int plain = countPixels(v.screenshot(), 215, 240);
+  EXPECT_GT(highlighted, 200);
+  EXPECT_LT(plain, highlighted / 3);
+}
+
+TEST(Viewer, LevelKeysRebuildTheOctreeAndKeepThePicture) {
+  ViewerSession v("level", {"x^2*y^2 + y^2*z^2 + z^2*x^2 - 1"});
+  START(v);
+  const Image before = v.screenshot();
+  v.key("o o");
+  ASSERT_FALSE(v.waitLog("octree level 3").empty());
+  ASSERT_FALSE(v.waitLog("built ").empty()) << "the level change rebuilds on the worker";
+  const Image deeper = v.screenshot();
+  // Tighter spheres bound the same surface: the picture must not change.
+  EXPECT_LT(changed(before, deeper), 0.01);
+  EXPECT_EQ(loadSaved(v.save()).octree.level, 3);
+  v.key("shift+o");
+  ASSERT_FALSE(v.waitLog("octree level 2").empty());
+}
+
+TEST(Viewer, FormulaTypedInThePanelReplacesTheSurface) {
+  ViewerSession v("formula", {"x^2 + y^2 + z^2 - 1"});
+  START(v);
+  const Image sphere = v.screenshot();
+  v.key("f");
+  v.key("ctrl+a");
+  v.type("x^2 + y^2 - z^2 - 0.3");
+  v.key("Return");
+  ASSERT_FALSE(v.waitLog("built x^2 + y^2 - z^2 - 0.3").empty()) << v.log();
+  const Image hyperboloid = v.screenshot();
+  EXPECT_GT(changed(sphere, hyperboloid), 0.05);
+
+  // A typo: the caret message shows in red in the panel, the last good surface stays.
+  // (Enter left the box, so F first.)
+  v.key("f");
+  v.key("ctrl+a");
+  v.type("* x^2 + y");  // no prefix of it parses, so no pause in typing can build it
+  // Clicking the panel's title bar leaves the box with the text kept, so keys reach the
+  // viewer again (while the box has focus, C is just a letter).
+  v.click(200, 16);
+  const Image panel = v.windowShot();
+  ASSERT_GT(panel.width, 0);
+  int red = 0;
+  for (int y = 0; y < panel.height; ++y) {
+    for (int x = 0; x < std::min(panel.width, 380); ++x) {
+      const auto* p = panel.pixel(x, y);
+      red += p[0] > 200 && p[1] > 80 && p[1] < 150 && p[2] > 70 && p[2] < 140;
+    }
+  }
+  EXPECT_GT(red, 30) << "the parse error is shown under the formula";
+  EXPECT_LT(changed(hyperboloid, v.screenshot()), 0.001);
+  EXPECT_EQ(loadSaved(v.save()).formula, "x^2 + y^2 - z^2 - 0.3");
+}
+
+TEST(Viewer, SavedViewRendersLikeTheWindow) {
+  ViewerSession v("save", {"x^3*y + y^3*z + z^3*x", "--set", "octree.level=2"});
+  START(v);
+  v.drag(1, 600, 300, 520, 200);
+  v.wheel(2);
+  v.drag(3, 600, 300, 700, 300);  // the point light
+  v.key("d d shift+l");
+  ASSERT_FALSE(v.waitLog("point light").empty());
+  const Image shown = v.screenshot();
+  const std::filesystem::path saved = v.save();
+  ASSERT_FALSE(saved.empty());
+  const Scene scene = loadSaved(saved);
+  EXPECT_NEAR(scene.render.lights.directional.intensity, 1.0, 1e-9);
+  EXPECT_NEAR(scene.render.lights.point.intensity, 0.5, 1e-9);
+  EXPECT_LT(distance(scene.render.camera.eye, scene.render.camera.target), 4.0) << "zoomed in";
+
+  const auto rendered = v.dir() / "rendered.png";
+  ASSERT_EQ(shell(std::string(ZS_ZEROSET_EXE) + " render " + saved.string() + " -o " +
+                  rendered.string() + " > /dev/null"),
+            0);
+  const ImageDiff diff = compareImages(shown, loadPng(rendered));
+  EXPECT_TRUE(withinTolerance(diff)) << "fraction " << diff.fractionOver << " rmse " << diff.rmse;
+}
+
+TEST(Viewer, ExampleKeysCycleThroughTheThesisSurfaces) {
+  // An examples folder with no files: the seven built-in surfaces of thesis Table 5.1.
+  const auto empty = freshDir("no-examples");
+  std::filesystem::create_directories(empty / "examples");
+  ViewerSession v("examples", {"x^2 + y^2 + z^2 - 1"}, {{"ZS_SOURCE_DIR", empty.string()}});
+  START(v);
+  const Image sphere = v.screenshot();
+  v.key("n");
+  ASSERT_FALSE(v.waitLog("example 1 of 7: 1 cross channel").empty()) << v.log();
+  ASSERT_FALSE(v.waitLog("built x^2 + z^2 - y").empty());
+  EXPECT_GT(changed(sphere, v.screenshot()), 0.05);
+  v.key("p p");
+  ASSERT_FALSE(v.waitLog("example 6 of 7").empty());
+  const Scene saved = loadSaved(v.save());
+  EXPECT_EQ(saved.formula, "x^4 - z^4 - y");
+  EXPECT_EQ(saved.render.tracing.intervals, 10);
+  EXPECT_DOUBLE_EQ(saved.render.tracing.epsilon, 0.01);
+}
+
+}  // namespace
+}  // namespace zs::test
