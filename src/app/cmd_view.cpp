@@ -31,6 +31,7 @@ int runView(const ViewArgs& args) {
     }
     options.scene = std::get<Scene>(first);
     options.title = "zeroset - " + examples.front().name;
+    options.exampleIndex = 0;
   } else {
     std::optional<Scene> scene = loadSceneArgs(args.scene);
     if (!scene) return 1;

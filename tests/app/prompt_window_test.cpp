@@ -42,3 +42,34 @@ TEST(PromptWindow, PipedLinesDriveTheWindow) {
 
 }  // namespace
 }  // namespace zs::test
+
+namespace zs::test {
+namespace {
+
+// The prompt on a terminal next to the window: libedit reads on its own thread while the
+// window runs on the main thread. Closing the window ends the prompt too.
+TEST(PromptWindow, TerminalPromptBesideTheWindowEndsWithIt) {
+  const auto dir = freshDir("prompt-window-pty");
+  Child c({ZS_ZEROSET_EXE}, {{"HOME", dir.string()}, {"ZS_OUTPUT_DIR", dir.string()}},
+          Stdio::Pty);
+  ASSERT_TRUE(c.readUntil("F(x,y,z) = ", 30)) << c.output();
+  const auto png = dir / "saddle.png";
+  c.write("x^4 - z^4 - y\r:png " + png.string() + "\r");
+  ASSERT_TRUE(c.readUntil("screenshot: ", 60)) << c.output();
+  Image image;
+  EXPECT_EQ(readPng(png.string(), image), "");
+
+  // Ctrl+Q in the window while the prompt waits for a line.
+  const auto idFile = dir / "window.id";
+  shell("xdotool search --sync --onlyvisible --pid " + std::to_string(c.pid()) + " > " +
+        idFile.string());
+  std::string window = readText(idFile);
+  window = window.substr(0, window.find('\n'));
+  ASSERT_FALSE(window.empty());
+  shell("xdotool windowfocus --sync " + window + " mousemove --window " + window +
+        " 600 300 key ctrl+q");
+  EXPECT_EQ(c.wait(30), 0) << c.output();
+}
+
+}  // namespace
+}  // namespace zs::test

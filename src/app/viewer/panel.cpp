@@ -66,8 +66,9 @@ void drawStats(const PanelStats& s) {
               s.height / std::max(1, s.traceScale), s.traceScale > 1 ? " (reduced)" : "");
   ImGui::Text("build %.0f ms: %zu leaves, %zu spheres%s", s.buildMs, s.leaves, s.spheres,
               s.building ? " (building...)" : "");
-  if (!s.example.empty()) ImGui::Text("example: %s", s.example.c_str());
-  if (!s.status.empty()) ImGui::TextWrapped("%s", s.status.c_str());
+  if (!s.example.empty()) ImGui::Text("example %s", s.example.c_str());
+  if (!s.status.empty() && s.status.rfind("example ", 0) != 0)
+    ImGui::TextWrapped("%s", s.status.c_str());
 }
 
 void drawKeys() {
@@ -96,9 +97,11 @@ void checkFormulaText(PanelState& state) {
 PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats) {
   PanelResult result;
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
+  // Grows with the open sections up to the window's height, then scrolls.
+  const float maxHeight = ImGui::GetIO().DisplaySize.y - 16;
+  ImGui::SetNextWindowSizeConstraints(ImVec2(360, 0), ImVec2(360, std::max(100.0f, maxHeight)));
   ImGui::SetNextWindowBgAlpha(0.85f);
-  if (ImGui::Begin("zeroset")) {
+  if (ImGui::Begin("zeroset", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     drawFormula(state, result);
     drawParams(scene, state);
     drawStats(stats);

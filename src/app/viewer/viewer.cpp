@@ -49,6 +49,12 @@ std::unique_ptr<Viewer> Viewer::open(const ViewerOptions& options, std::string& 
   v->examples_ = listExamples(findExamplesDir());
   v->worker_ = std::make_unique<SurfaceWorker>([] { glfwPostEmptyEvent(); });
   v->setScene(options.scene, {});
+  if (options.exampleIndex >= 0 && std::size_t(options.exampleIndex) < v->examples_.size()) {
+    v->exampleIndex_ = options.exampleIndex;
+    v->stats_.example = std::to_string(options.exampleIndex + 1) + " of " +
+                        std::to_string(v->examples_.size()) + ": " +
+                        v->examples_[std::size_t(options.exampleIndex)].name;
+  }
   return v;
 }
 
@@ -117,8 +123,11 @@ void Viewer::traceIfNeeded(int width, int height) {
   msPerPixel_ = ms / (double(width / scale) * double(height / scale) * samples);
   stats_.traceMs = ms;
   stats_.traceScale = scale;
-  ++traces_[scale > 1];
-  traceMsTotal_[scale > 1] += ms;
+  if (!uncounted_) {
+    ++traces_[scale > 1];
+    traceMsTotal_[scale > 1] += ms;
+  }
+  uncounted_ = false;
   if (scale > 1) lastScale_ = scale;
   dirty_ = false;
   refine_ = scale > 1;

@@ -29,6 +29,7 @@ struct ViewerOptions {
   Scene scene;
   std::string title = "zeroset";
   std::filesystem::path outputDir = ".";  // screenshots and saved scenes
+  int exampleIndex = -1;  // the scene is this entry of listExamples() (N/P go on from it)
   int dragScale = 0;  // fixed resolution divisor while dragging; 0 = adapt to hold ~30 fps
   // Print events on stdout: "ready WxH" once the first surface is on screen at full
   // resolution, "built FORMULA", and each key action's message (scripts and tests).
@@ -136,6 +137,7 @@ class Viewer {
   int traces_[2] = {0, 0};
   double traceMsTotal_[2] = {0, 0};
   int lastScale_ = 1;
+  bool uncounted_ = false;  // the next trace compiles the new shader (JIT): not counted
 
   std::mutex mutex_;  // guards pending_ and closed_
   std::deque<Pending> pending_;

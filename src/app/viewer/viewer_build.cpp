@@ -84,6 +84,7 @@ void Viewer::takeBuild() {
       built_ = result->scene;
       hasSurface_ = true;
       dirty_ = true;
+      uncounted_ = true;
       const std::vector<std::string>& names = surface.formula.graph.params();
       if (names != panel_.paramNames) {
         panel_.paramNames = names;

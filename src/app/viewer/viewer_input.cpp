@@ -84,9 +84,10 @@ void Viewer::showExample(int delta) {
     stats_.status = *err;
     return;
   }
-  setScene(std::get<Scene>(loaded), example.name);
-  stats_.status = "example " + std::to_string(exampleIndex_ + 1) + " of " + std::to_string(n) +
-                  ": " + example.name;
+  const std::string label = std::to_string(exampleIndex_ + 1) + " of " + std::to_string(n) +
+                            ": " + example.name;
+  setScene(std::get<Scene>(loaded), label);
+  stats_.status = "example " + label;
   if (options_.log) std::printf("%s\n", stats_.status.c_str());
 }
 
