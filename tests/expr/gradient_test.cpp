@@ -8,16 +8,13 @@
 
 #include "expr/derivative.hpp"
 #include "expr/tape.hpp"
+#include "parsed.hpp"
 #include "parser/parser.hpp"
 
 namespace zs {
 namespace {
 
-Formula parsed(const std::string& text) {
-  ParseResult r = parseFormula(text);
-  EXPECT_TRUE(std::holds_alternative<Formula>(r)) << text;
-  return std::get<Formula>(std::move(r));
-}
+using test::parsed;
 
 const char* const kFormulas[] = {
     "x^2 + z^2 - y",

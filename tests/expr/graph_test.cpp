@@ -5,16 +5,13 @@
 
 #include "expr/degree.hpp"
 #include "expr/tape.hpp"
+#include "parsed.hpp"
 #include "parser/parser.hpp"
 
 namespace zs {
 namespace {
 
-Formula parsed(const std::string& text) {
-  ParseResult r = parseFormula(text);
-  EXPECT_TRUE(std::holds_alternative<Formula>(r)) << text;
-  return std::get<Formula>(std::move(r));
-}
+using test::parsed;
 
 TEST(Graph, SharedSubexpressionIsStoredOnce) {
   Formula f = parsed("sin(x*y) + cos(x*y) + (x*y)^2");
