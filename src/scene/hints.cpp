@@ -1,9 +1,9 @@
 #include "scene/hints.hpp"
 
 #include <algorithm>
-#include <numeric>
 #include <vector>
 
+#include "parser/suggest.hpp"
 #include "scene/schema.hpp"
 
 namespace zs::scene_detail {
@@ -42,22 +42,12 @@ std::string quoteList(const std::vector<std::string>& items) {
   return out;
 }
 
-}  // namespace
-
-int editDistance(std::string_view a, std::string_view b) {
-  std::vector<int> row(b.size() + 1);
-  std::iota(row.begin(), row.end(), 0);
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    int diagonal = row[0];
-    row[0] = static_cast<int>(i);
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const int substitute = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
-      diagonal = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitute});
-    }
-  }
-  return row[b.size()];
+// The formula parser's distance, so a key typo and a function typo are judged alike.
+int distance(std::string_view a, std::string_view b) {
+  return static_cast<int>(zs::editDistance(a, b));
 }
+
+}  // namespace
 
 std::string unknownKeyHint(std::string_view dottedName) {
   const std::string_view parent = parentOf(dottedName);
@@ -68,8 +58,8 @@ std::string unknownKeyHint(std::string_view dottedName) {
     // A key typed in the right table with a typo, or the right word in the wrong table
     // (fov_y at the top level instead of in [camera]): score both, prefer the same table.
     const bool sameTable = parentOf(candidate) == parent;
-    const int byLeaf = editDistance(leaf, leafOf(candidate)) + (sameTable ? 0 : 1);
-    const int byFull = editDistance(dottedName, candidate);
+    const int byLeaf = distance(leaf, leafOf(candidate)) + (sameTable ? 0 : 1);
+    const int byFull = distance(dottedName, candidate);
     const int score = std::min(byLeaf, byFull);
     if (score < bestScore) {
       bestScore = score;
@@ -96,7 +86,7 @@ std::string choiceHint(std::string_view word, std::span<const std::string_view> 
   for (std::string_view c : choices) {
     all.emplace_back("\"" + std::string(c) + "\"");
     // An abbreviation ("persp", "ortho") is as clear a slip as a typo.
-    const int d = !word.empty() && c.starts_with(word) ? 0 : editDistance(word, c);
+    const int d = !word.empty() && c.starts_with(word) ? 0 : distance(word, c);
     if (d < bestDistance) {
       bestDistance = d;
       best = c;

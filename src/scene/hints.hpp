@@ -8,9 +8,6 @@
 
 namespace zs::scene_detail {
 
-// Levenshtein distance (insert, delete, substitute; each costs 1).
-int editDistance(std::string_view a, std::string_view b);
-
 // Hint for an unknown dotted key: `did you mean "fov_y"?` (the sibling's short name when it
 // lives in the same table, the full dotted name otherwise), or the keys valid in the table.
 std::string unknownKeyHint(std::string_view dottedName);
