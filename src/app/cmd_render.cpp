@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "app/commands.hpp"
+#include "app/load_surface.hpp"
 #include "app/pipeline.hpp"
 #include "app/scene_args.hpp"
 #include "render/gl_context.hpp"
@@ -58,16 +59,10 @@ int runRender(const RenderArgs& args) {
     return 1;
   }
   RayTracer tracer;
-  std::string log;
-  if (!tracer.build(surface.vertexShader, surface.fragmentShader, log)) {
-    std::cerr << log;
+  if (std::string err = loadSurface(tracer, surface); !err.empty()) {
+    std::cerr << err;
     return 1;
   }
-  if (std::string err = tracer.setHierarchy(surface.hierarchy.packed()); !err.empty()) {
-    std::cerr << "error: " << err << "\n";
-    return 1;
-  }
-  tracer.setParams(surface.paramsAsFloats());
 
   const bool showProgress = isatty(STDERR_FILENO);
   const auto start = std::chrono::steady_clock::now();

@@ -24,10 +24,15 @@ RayTracer::~RayTracer() {
 
 bool RayTracer::build(std::string_view vertexSource, std::string_view fragmentSource,
                       std::string& log) {
+  // The same text again (a parameter or level change) keeps the program: llvmpipe's JIT of
+  // a new one costs a visible pause.
+  if (program_ && vertexSource == vertexSource_ && fragmentSource == fragmentSource_) return true;
   const unsigned program = compileProgram(vertexSource, fragmentSource, log);
   if (!program) return false;
   if (program_) glDeleteProgram(program_);
   program_ = program;
+  vertexSource_ = vertexSource;
+  fragmentSource_ = fragmentSource;
   locations_.clear();
   return true;
 }

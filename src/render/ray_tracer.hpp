@@ -40,7 +40,8 @@ class RayTracer {
   RayTracer& operator=(const RayTracer&) = delete;
 
   // Compiles and links; on failure returns false and `log` holds the driver log plus the
-  // numbered source. A failed build keeps the previous program, if any.
+  // numbered source. A failed build keeps the previous program, if any; the same sources as
+  // the current program's are not compiled again.
   bool build(std::string_view vertexSource, std::string_view fragmentSource, std::string& log);
   bool ready() const { return program_ != 0; }
 
@@ -79,6 +80,7 @@ class RayTracer {
   void releaseTarget();
 
   unsigned program_ = 0, vao_ = 0;
+  std::string vertexSource_, fragmentSource_;  // what program_ was built from
   unsigned nodeBuffer_ = 0, nodeTexture_ = 0;
   unsigned fbo_ = 0, colorTex_ = 0, depthTex_ = 0;
   int targetWidth_ = 0, targetHeight_ = 0;

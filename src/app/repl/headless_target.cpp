@@ -2,6 +2,7 @@
 
 #include <variant>
 
+#include "app/load_surface.hpp"
 #include "app/repl/scene_edit.hpp"
 #include "render/image.hpp"
 
@@ -36,14 +37,7 @@ std::string HeadlessTarget::render(const std::filesystem::path& path) {
     context_ = std::move(ctx.context);
     tracer_ = std::make_unique<RayTracer>();
   }
-  if (builtShader_ != surface_->fragmentShader) {
-    std::string log;
-    if (!tracer_->build(surface_->vertexShader, surface_->fragmentShader, log)) return log;
-    builtShader_ = surface_->fragmentShader;
-  }
-  if (std::string err = tracer_->setHierarchy(surface_->hierarchy.packed()); !err.empty())
-    return "error: " + err + "\n";
-  tracer_->setParams(surface_->paramsAsFloats());
+  if (std::string err = loadSurface(*tracer_, *surface_); !err.empty()) return err;
   Frame frame = tracer_->render(scene_.render, scene_.domain, scene_.width, scene_.height);
   if (!frame.error.empty()) return "error: " + frame.error + "\n";
   if (std::string err = writePng(path.string(), frame.color); !err.empty())

@@ -33,7 +33,6 @@ class HeadlessTarget final : public PromptTarget {
   std::optional<PreparedSurface> surface_;
   std::unique_ptr<GlContext> context_;  // created at the first render
   std::unique_ptr<RayTracer> tracer_;
-  std::string builtShader_;
 };
 
 }  // namespace zs::app

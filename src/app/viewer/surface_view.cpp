@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "app/load_surface.hpp"
+
 namespace zs::app {
 
 SurfaceView::~SurfaceView() {
@@ -15,17 +17,7 @@ SurfaceView::~SurfaceView() {
 }
 
 std::string SurfaceView::upload(const PreparedSurface& surface) {
-  if (!tracer_.ready() || surface.vertexShader != vertexShader_ ||
-      surface.fragmentShader != fragmentShader_) {
-    std::string log;
-    if (!tracer_.build(surface.vertexShader, surface.fragmentShader, log)) return log;
-    vertexShader_ = surface.vertexShader;
-    fragmentShader_ = surface.fragmentShader;
-  }
-  if (std::string err = tracer_.setHierarchy(surface.hierarchy.packed()); !err.empty())
-    return err;
-  tracer_.setParams(surface.paramsAsFloats());
-  return {};
+  return loadSurface(tracer_, surface);
 }
 
 void SurfaceView::release(Target& t) {

@@ -49,7 +49,6 @@ class SurfaceView {
   static void release(Target& target);
 
   RayTracer tracer_;
-  std::string vertexShader_, fragmentShader_;  // what tracer_'s program was built from
   Target full_, reduced_;
   int lastScale_ = 0;  // which target holds the latest image; 0 = none yet
 };
