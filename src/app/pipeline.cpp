@@ -22,6 +22,24 @@ double msSince(std::chrono::steady_clock::time_point start) {
 
 Box toBox(const Domain& domain) { return Box{domain.min, domain.max}; }
 
+TracingMethod resolveMethod(TracingMethod asked, const Formula& formula, std::string& warning) {
+  warning.clear();
+  if (asked == TracingMethod::Sampling) return TracingMethod::Sampling;
+  const std::optional<int> degree = rayPolynomialDegree(formula.graph, formula.root);
+  if (degree && *degree <= kMaxBernsteinDegree) return TracingMethod::Bernstein;
+  if (degree) {
+    warning = "warning: degree " + std::to_string(*degree) + " is above " +
+              std::to_string(kMaxBernsteinDegree) +
+              ", the highest the exact Bernstein method handles in float; using sign sampling "
+              "(tracing.method = \"sampling\", which can miss thin features: raise "
+              "tracing.intervals if parts look missing)\n";
+  } else if (asked == TracingMethod::Bernstein) {
+    warning = "warning: tracing.method = \"bernstein\" needs a polynomial in x, y, z; this "
+              "formula is not one, so it is sign-sampled (tracing.method = \"sampling\")\n";
+  }
+  return TracingMethod::Sampling;
+}
+
 std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bool validate) {
   PreparedSurface s;
   auto t = std::chrono::steady_clock::now();
@@ -37,11 +55,18 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bo
   if (auto* err = std::get_if<OctreeError>(&tree)) return "error: " + err->message + "\n";
   s.octree = std::get<Octree>(std::move(tree));
   s.hierarchy = buildSphereHierarchy(s.octree);
+  s.octreeNodes = buildOctreeNodes(s.octree);
   s.times.octreeMs = msSince(t);
 
   t = std::chrono::steady_clock::now();
   s.glsl = emitFormulaGlsl(s.formula.graph, s.formula.root, s.gradient);
-  s.fragmentShader = assembleFragmentShader(s.glsl);
+  s.method = resolveMethod(scene.render.tracing.method, s.formula, s.methodWarning);
+  if (s.method == TracingMethod::Bernstein) {
+    s.rayPolynomial = emitRayPolynomialGlsl(s.formula.graph, s.formula.root);
+    s.fragmentShader = assembleFragmentShader(s.glsl, *s.rayPolynomial);
+  } else {
+    s.fragmentShader = assembleFragmentShader(s.glsl);
+  }
   s.vertexShader = std::string(vertexShaderSource());
   s.times.codegenMs = msSince(t);
 

@@ -3,13 +3,16 @@
 // (the packed sphere hierarchy, the parameter values, the shader text validated by glslang)
 // with the time each stage took. Used by every command that shows a surface; no GL here.
 #include <array>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
 #include "codegen/emit_glsl.hpp"
+#include "codegen/emit_ray_polynomial.hpp"
 #include "interval/hierarchy.hpp"
 #include "interval/octree.hpp"
+#include "interval/octree_nodes.hpp"
 #include "scene/scene.hpp"
 
 namespace zs::app {
@@ -23,8 +26,12 @@ struct PreparedSurface {
   std::array<NodeId, 3> gradient{};
   std::vector<double> params;  // graph.params() order
   Octree octree;
-  SphereHierarchy hierarchy;
+  SphereHierarchy hierarchy;  // walked by the sampling method
+  OctreeNodes octreeNodes;    // walked by the Bernstein method
+  TracingMethod method = TracingMethod::Sampling;  // resolved: never Auto
+  std::string methodWarning;  // why the method asked for could not be used ("" if it was)
   GlslFormula glsl;
+  std::optional<RayPolynomialGlsl> rayPolynomial;  // Bernstein only
   std::string vertexShader, fragmentShader;
   StageTimes times;
 
@@ -32,6 +39,11 @@ struct PreparedSurface {
 };
 
 Box toBox(const Domain& domain);
+
+// The method `asked` resolves to for this formula: Bernstein for a polynomial of degree up
+// to kMaxBernsteinDegree (Auto or Bernstein asked), sampling otherwise. `warning` explains a
+// fallback from an explicit "bernstein" or from a polynomial above the degree limit.
+TracingMethod resolveMethod(TracingMethod asked, const Formula& formula, std::string& warning);
 
 // Error text is ready to print (caret formatting, octree budget messages, or an internal
 // shader error that names itself a bug). `validate` runs glslang on the assembled shaders.

@@ -48,18 +48,34 @@ std::string_view shaderTemplate(std::string_view fileName) {
                          std::string(fileName) + "' was embedded (embedded: " + known + ")");
 }
 
-std::string assembleFragmentShader(const GlslFormula& formula) {
+namespace {
+
+std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly) {
   const std::string_view prelude = shaderTemplate(kPreludeTemplate);
   const std::string_view raytrace = shaderTemplate(kRaytraceTemplate);
-  if (!mentionsIdentifier(raytrace, "zs_F") && !mentionsIdentifier(raytrace, "zs_FGrad")) {
-    throw std::logic_error(
-        "internal error in zeroset: shaders/templates/raytrace_main.frag.glsl calls neither "
-        "zs_F nor zs_FGrad, so the generated formula would be unused");
+  const std::string_view march = shaderTemplate(poly ? kBernsteinTemplate : kSamplingTemplate);
+  if (!mentionsIdentifier(march, "zs_F") && !mentionsIdentifier(march, "zs_FGrad")) {
+    throw std::logic_error("internal error in zeroset: shaders/templates/" + std::string(poly ? kBernsteinTemplate : kSamplingTemplate) +
+                           " calls neither zs_F nor zs_FGrad, so the generated formula would be unused");
   }
   std::string out(prelude);  // starts with #version, which must come first
-  appendPiece(out, "generated formula block (src/codegen/emit_glsl.cpp)", 1, formula.source);
-  appendPiece(out, "shaders/templates/raytrace_main.frag.glsl", 2, raytrace);
+  int string = 1;
+  appendPiece(out, "generated formula block (src/codegen/emit_glsl.cpp)", string++, formula.source);
+  if (poly) {
+    appendPiece(out, "generated ray polynomial (src/codegen/emit_ray_polynomial.cpp)", string++,
+                poly->source);
+  }
+  appendPiece(out, "shaders/templates/" + std::string(kRaytraceTemplate), string++, raytrace);
+  appendPiece(out, "shaders/templates/" + std::string(poly ? kBernsteinTemplate : kSamplingTemplate), string, march);
   return out;
+}
+
+}  // namespace
+
+std::string assembleFragmentShader(const GlslFormula& formula) { return assemble(formula, nullptr); }
+
+std::string assembleFragmentShader(const GlslFormula& formula, const RayPolynomialGlsl& poly) {
+  return assemble(formula, &poly);
 }
 
 std::string_view vertexShaderSource() { return shaderTemplate(kVertexTemplate); }

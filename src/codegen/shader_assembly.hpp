@@ -5,7 +5,9 @@
 //
 //   raytrace_prelude.frag.glsl  (#version, zs_F / zs_FGrad prototypes, helpers)   string 0
 //   generated formula block     (zs_params, zs_F, zs_FGrad)                       string 1
-//   raytrace_main.frag.glsl     (uniforms, traversal, tracing, shading, main)     string 2
+//   [ray polynomial block       (zs_FPoly, Bernstein kernels; Bernstein only)]    string 2
+//   raytrace_main.frag.glsl     (rays, passes, shading, main; rtMarch prototype)
+//   raytrace_sampling.frag.glsl or raytrace_bernstein.frag.glsl  (rtMarch)
 //
 // A comment naming its origin and `#line 1 <string>` precede pieces 2 and 3, so compiler
 // logs ("0:12", "1:7", "2:40") point into the right piece at the right line.
@@ -13,20 +15,28 @@
 #include <string_view>
 
 #include "codegen/emit_glsl.hpp"
+#include "codegen/emit_ray_polynomial.hpp"
 
 namespace zs {
 
 inline constexpr std::string_view kPreludeTemplate = "raytrace_prelude.frag.glsl";
 inline constexpr std::string_view kRaytraceTemplate = "raytrace_main.frag.glsl";
+inline constexpr std::string_view kSamplingTemplate = "raytrace_sampling.frag.glsl";
+inline constexpr std::string_view kBernsteinTemplate = "raytrace_bernstein.frag.glsl";
 inline constexpr std::string_view kVertexTemplate = "fullscreen.vert.glsl";
 
 // The embedded text of shaders/templates/<fileName>. An unknown name is a bug in zeroset:
 // throws std::logic_error naming the templates that exist.
 std::string_view shaderTemplate(std::string_view fileName);
 
-// Prelude + formula block + ray tracer. Throws std::logic_error if the ray tracer never
-// calls zs_F or zs_FGrad (the formula block would be an unused piece).
+// Prelude + formula block + ray tracer with the thesis' sampling march. Throws
+// std::logic_error if the ray tracer never calls zs_F or zs_FGrad (the formula block would
+// be an unused piece).
 std::string assembleFragmentShader(const GlslFormula& formula);
+
+// The same with the exact Bernstein march: the ray polynomial block (emit_ray_polynomial.hpp)
+// follows the formula block.
+std::string assembleFragmentShader(const GlslFormula& formula, const RayPolynomialGlsl& poly);
 
 std::string_view vertexShaderSource();
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <vector>
 
@@ -56,9 +57,11 @@ std::optional<double> constantOf(const Poly& p) {
   return std::nullopt;
 }
 
-// Upper bound from the structure alone (max over sums, sum over products): the answer when
-// the exact expansion would be too large to hold.
-std::optional<int> structuralDegree(const Graph& g, NodeId root) {
+}  // namespace
+
+std::vector<int> structuralDegrees(const Graph& g, NodeId root) {
+  // Nested powers ((x^1000)^1000)^1000 would overflow: any degree past this is "huge".
+  const auto saturate = [](std::int64_t d) { return int(std::min<std::int64_t>(d, 1 << 24)); };
   std::vector<int> deg(g.size(), -1);  // -1: not a polynomial
   for (NodeId id : reachable(g, {root})) {
     const Node& n = g[id];
@@ -73,15 +76,23 @@ std::optional<int> structuralDegree(const Graph& g, NodeId root) {
     } else if ((n.op == Op::Add || n.op == Op::Sub) && at(n.a) >= 0 && at(n.b) >= 0) {
       r = std::max(at(n.a), at(n.b));
     } else if (n.op == Op::Mul && at(n.a) >= 0 && at(n.b) >= 0) {
-      r = at(n.a) + at(n.b);
+      r = saturate(std::int64_t{at(n.a)} + at(n.b));
     } else if (n.op == Op::Div && at(n.a) >= 0 && g.isSpatiallyConstant(n.b)) {
       r = at(n.a);
     } else if (n.op == Op::PowI && n.ival >= 0 && at(n.a) >= 0) {
-      r = at(n.a) * n.ival;
+      r = saturate(std::int64_t{at(n.a)} * n.ival);
     }
     deg[static_cast<std::size_t>(id)] = r;
   }
-  const int d = deg[static_cast<std::size_t>(root)];
+  return deg;
+}
+
+namespace {
+
+// Upper bound from the structure alone (max over sums, sum over products): the answer when
+// the exact expansion would be too large to hold.
+std::optional<int> structuralDegree(const Graph& g, NodeId root) {
+  const int d = structuralDegrees(g, root)[static_cast<std::size_t>(root)];
   return d >= 0 ? std::optional<int>(d) : std::nullopt;
 }
 

@@ -67,10 +67,18 @@ struct Materials {
   bool operator==(const Materials&) const = default;
 };
 
+// How rays find the surface (docs/renderer.md). Auto: Bernstein for polynomials up to
+// kMaxBernsteinDegree, sampling otherwise.
+enum class TracingMethod { Auto, Bernstein, Sampling };
+
+// Highest degree the Bernstein method takes in float (measured in docs/renderer.md).
+inline constexpr int kMaxBernsteinDegree = 20;
+
 struct Tracing {
-  int intervals = 10;       // sign samples per leaf segment (thesis: "intervalos")
-  double epsilon = 0.001;   // bisection stops when the bracket or |F| is below this
-  int maxBisections = 40;   // safety bound on bisection steps
+  TracingMethod method = TracingMethod::Auto;
+  int intervals = 10;       // sampling: sign samples per leaf segment (thesis: "intervalos")
+  double epsilon = 0.001;   // root refinement stops when the bracket is below this
+  int maxBisections = 40;   // safety bound on refinement steps (both methods)
   int hits = 4;             // n nearest hits kept per ray
 
   bool operator==(const Tracing&) const = default;

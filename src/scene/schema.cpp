@@ -17,6 +17,8 @@ constexpr Range kUnit{0, 1};
 
 constexpr std::array<std::string_view, 2> kProjections{"perspective", "orthographic"};
 constexpr std::array<std::string_view, 2> kCriteria{"thesis", "uniform"};
+// Order of TracingMethod (render/settings.hpp).
+constexpr std::array<std::string_view, 3> kMethods{"auto", "bernstein", "sampling"};
 
 // A reference to one Scene member, as a plain function pointer the schema can hold.
 #define ZS_FIELD(member) +[](Scene& s) -> decltype(auto) { return (s.member); }
@@ -27,6 +29,9 @@ const EnumRef kProjectionRef{
 const EnumRef kCriteriaRef{[](const Scene& s) { return static_cast<int>(s.octree.criteria); },
                            [](Scene& s, int v) { s.octree.criteria = static_cast<Criteria>(v); },
                            kCriteria};
+const EnumRef kMethodRef{
+    [](const Scene& s) { return static_cast<int>(s.render.tracing.method); },
+    [](Scene& s, int v) { s.render.tracing.method = static_cast<TracingMethod>(v); }, kMethods};
 
 // File order: top-level keys first (TOML puts them before any [table]), then each table's
 // keys together, so the writer can emit a header whenever the prefix changes.
@@ -47,6 +52,7 @@ const KeySpec kKeys[] = {
     {"octree.level", ZS_FIELD(octree.level), {0, 12}},
     {"octree.criteria", kCriteriaRef, kAny},
     {"octree.node_budget", ZS_FIELD(octree.nodeBudget), {1, 1e9}},
+    {"tracing.method", kMethodRef, kAny},
     {"tracing.intervals", ZS_FIELD(render.tracing.intervals), {1, 1000}},
     {"tracing.epsilon", ZS_FIELD(render.tracing.epsilon), kPositive},
     {"tracing.hits", ZS_FIELD(render.tracing.hits), {1, 16}},

@@ -1,5 +1,7 @@
 // zs_render_frame_time FORMULA [WxH] [octree level] [frames] [--osmesa] [--no-tangent]
-//   [--no-reflection] [--samples N] [--intervals N] [--epsilon E] [--png out.png]: median glFinish-timed frame time of the real pipeline at the default
+//   [--no-reflection] [--samples N] [--intervals N] [--epsilon E] [--sampling] [--png out.png]:
+// median glFinish-timed frame time of the real pipeline at the default (method: Bernstein for
+// polynomials, --sampling for the thesis' method)
 // settings (camera (0,0,4), domain [-1.5,1.5]^3), plus the time to the first frame
 // (shader JIT). Not a test: the numbers in docs/renderer.md come from here.
 #include <glad/gl.h>
@@ -39,6 +41,7 @@ int main(int argc, char** argv) {
   int samples = 1, intervals = 10;
   double epsilon = 0.001;
   const char* png = nullptr;
+  bool sampling = false;
   std::vector<const char*> positional;
   for (int i = 2; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--osmesa")) osmesa = true;
@@ -48,6 +51,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--intervals") && i + 1 < argc) intervals = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--epsilon") && i + 1 < argc) epsilon = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--png") && i + 1 < argc) png = argv[++i];
+    else if (!std::strcmp(argv[i], "--sampling")) sampling = true;
     else positional.push_back(argv[i]);
   }
   if (positional.size() > 0) std::sscanf(positional[0], "%dx%d", &w, &h);
@@ -61,6 +65,7 @@ int main(int argc, char** argv) {
   }
   test::SurfaceSpec spec{argv[1]};
   spec.octreeLevel = level;
+  if (sampling) spec.method = TracingMethod::Sampling;
   const auto start = Clock::now();
   auto tracer = test::makeTracer(spec, error);
   if (!tracer) {
@@ -89,8 +94,8 @@ int main(int argc, char** argv) {
   }
   const double cpuPerFrame = (cpuMs() - cpuStart) / frames;
   std::sort(times.begin(), times.end());
-  std::printf("%s  %dx%d level %d tangent %s reflection %s samples %d intervals %d epsilon %g: median %.1f ms (min %.1f, max %.1f), CPU %.1f ms/frame, first frame %.0f ms\n",
-              argv[1], w, h, level, tangent ? "on" : "off", reflection ? "on" : "off", samples, intervals, epsilon, times[times.size() / 2], times.front(),
+  std::printf("%s  %s  %dx%d level %d tangent %s reflection %s samples %d intervals %d epsilon %g: median %.1f ms (min %.1f, max %.1f), CPU %.1f ms/frame, first frame %.0f ms\n",
+              argv[1], sampling ? "sampling" : "default method", w, h, level, tangent ? "on" : "off", reflection ? "on" : "off", samples, intervals, epsilon, times[times.size() / 2], times.front(),
               times.back(), cpuPerFrame, first);
   if (png) {
     Frame frame = tracer->render(settings, spec.domain, w, h);

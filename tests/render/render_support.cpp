@@ -8,6 +8,7 @@
 #include "codegen/emit_glsl.hpp"
 #include "codegen/shader_assembly.hpp"
 #include "interval/octree.hpp"
+#include "interval/octree_nodes.hpp"
 #include "interval/sphere_builder.hpp"
 #include "parser/parser.hpp"
 
@@ -42,11 +43,21 @@ std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& erro
     error = e->message;
     return nullptr;
   }
-  const std::vector<float> packed = buildSphereHierarchy(std::get<Octree>(tree)).packed();
+  const Octree& octreeBuilt = std::get<Octree>(tree);
+  const std::vector<float> packed = buildSphereHierarchy(octreeBuilt).packed();
+  const OctreeNodes nodes = buildOctreeNodes(octreeBuilt);
   const GlslFormula glsl = emitFormulaGlsl(formula);
+  // The method the app would pick (app/pipeline.cpp resolveMethod), without its warnings.
+  const std::optional<int> degree = rayPolynomialDegree(formula.graph, formula.root);
+  const bool bernstein = spec.method != TracingMethod::Sampling && degree && *degree <= kMaxBernsteinDegree;
+  const std::string fragment =
+      bernstein ? assembleFragmentShader(glsl, *emitRayPolynomialGlsl(formula.graph, formula.root))
+                : assembleFragmentShader(glsl);
   auto tracer = std::make_unique<RayTracer>();
-  if (!tracer->build(vertexShaderSource(), assembleFragmentShader(glsl), error)) return nullptr;
+  if (!tracer->build(vertexShaderSource(), fragment, error)) return nullptr;
   if (error = tracer->setHierarchy(packed); !error.empty()) return nullptr;
+  if (error = tracer->setOctree(nodes.words, nodes.box.min, nodes.box.max, nodes.rootLeaf); !error.empty())
+    return nullptr;
   std::vector<float> params(spec.params.begin(), spec.params.end());
   tracer->setParams(params);
   return tracer;

@@ -26,6 +26,7 @@ struct SurfaceSpec {
   int octreeLevel = 3;
   std::vector<double> params{};
   Criteria criteria = Criteria::Thesis;
+  TracingMethod method = TracingMethod::Auto;  // Auto: Bernstein for polynomials, as the app
 };
 
 // Builds a ray tracer for `spec` on the current context. Returns null with `error` set

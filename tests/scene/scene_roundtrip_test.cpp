@@ -29,7 +29,7 @@ Scene everyKeyChanged() {
   r.lights.point = {{-3, 2, 1e-5}, 0.45, {0.1, 0.2, 0.3}};
   r.materials.front = {{0.2, 0.3, 0.4}, 0.11, 12.5};
   r.materials.back = {{0.6, 0.7, 0.8}, 0.22, 99};
-  r.tracing = {17, 1e-7 / 3, 77, 9};
+  r.tracing = {TracingMethod::Sampling, 17, 1e-7 / 3, 77, 9};
   r.silhouette = {false, 0.33, {0.5, 0.25, 0.125}};
   r.border = {false, 0.0625, {0.2, 0.1, 0.05}};
   r.reflection = {false, 0.55};

@@ -1,0 +1,158 @@
+// ---- raytrace_sampling.frag.glsl (render stage): the thesis' method (tracing.method =
+// "sampling"), Algorithm 1 of chapter 4.4 extended: the bounding-box hierarchy is walked
+// without a stack, every leaf segment is sign-sampled tracing.intervals times, sign changes
+// are bisected on F and local minima of |F| on dF/dt (tangent roots). Works for every
+// formula; follows raytrace_main.frag.glsl and defines its rtMarch(). zs_FGrad has two call
+// sites here (the sampling loop and the bisection loop): every call site is inlined and
+// multiplies llvmpipe's JIT time.
+
+// Hierarchy: one uvec4 per node (render/hierarchy_gpu.hpp repacks the 12-float layout):
+// the box as 16-bit corners on a 2^14 grid over the root box, w = escape << 1 | isLeaf.
+// One fetch per visited node: on llvmpipe fetches, not arithmetic, bound the traversal.
+uniform usamplerBuffer rtHierarchy;
+uniform int rtNodeCount, rtFirstNode;
+uniform vec3 rtRootMin, rtRootMax, rtCell;  // root box = grid extent; cell size
+uniform float rtPad;
+uniform int rtIntervals;
+uniform bool rtTangentRoots;
+
+const int RT_SEGS = 8;         // leaf segments per ray; overflow widens the farthest
+const int RT_MAX_EVALS = 4096; // safety bound on F evaluations per ray
+const int SAMPLE = 0, BISECT_F = 1, BISECT_D = 2;  // what the sampling loop found
+
+int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS],
+            out vec4 hitG[RT_MAX_HITS]) {
+  int found = 0;
+  for (int m = 0; m < RT_MAX_HITS; ++m) { hitT[m] = 0.0; hitG[m] = vec4(0.0); }
+  vec3 inv = safeInverse(d);
+  vec2 dom = slab(rtDomainMin, rtDomainMax, o, inv);
+  // The root box holds every leaf: clipping to it here makes fetching the root (node 0)
+  // unnecessary when it is an inner node (rtFirstNode = 1).
+  vec2 root = slab(rtRootMin - rtPad, rtRootMax + rtPad, o, inv);
+  dom = vec2(max(max(dom.x, root.x), tStart), min(dom.y, root.y));
+
+  // Gather: stackless walk (pre-order + escape); each leaf's [t0, t1], clipped to the
+  // domain, is insertion-sorted into RT_SEGS slots by compare-and-swap with constant
+  // indices; once all slots are taken the farthest one widens (conservative, never a
+  // miss). Overlapping slots merge when the march loads them.
+  float INF = uintBitsToFloat(0x7F800000u);  // not const: GLSL 3.30 has no constant calls
+  float segA[RT_SEGS], segB[RT_SEGS], segN[RT_SEGS];
+  for (int m = 0; m < RT_SEGS; ++m) { segA[m] = INF; segB[m] = -INF; segN[m] = 0.0; }
+  // The walk to the next leaf hit is its own light loop (llvmpipe would otherwise run
+  // the insertion, masked, at every node visited).
+  int count = dom.x <= dom.y ? rtNodeCount : 0, i = rtFirstNode;
+  while (i < count) {
+    float a = 0.0, b = 0.0;
+    bool leafHit = false;
+    while (i < count && !leafHit) {
+      uvec4 node = texelFetch(rtHierarchy, i);
+      vec3 qlo = vec3(node.x & 0xFFFFu, node.x >> 16u, node.y & 0xFFFFu);
+      vec3 qhi = vec3(node.y >> 16u, node.z & 0xFFFFu, node.z >> 16u);
+      vec2 tt = slab(rtRootMin + qlo * rtCell - rtPad, rtRootMin + qhi * rtCell + rtPad, o, inv);
+      a = max(tt.x, dom.x); b = min(tt.y, dom.y);
+      bool hit = a <= b, leaf = (node.w & 1u) != 0u;
+      i = (hit && !leaf) ? i + 1 : int(node.w >> 1u);
+      leafHit = hit && leaf;
+    }
+    if (!leafHit) break;
+    float ca = a, cb = b, cn = 1.0;
+    for (int m = 0; m < RT_SEGS; ++m) {
+      bool before = ca < segA[m];
+      float xa = segA[m], xb = segB[m], xn = segN[m];
+      segA[m] = before ? ca : xa; segB[m] = before ? cb : xb; segN[m] = before ? cn : xn;
+      ca = before ? xa : ca; cb = before ? xb : cb; cn = before ? xn : cn;
+    }
+    if (ca < INF) { segB[RT_SEGS - 1] = max(segB[RT_SEGS - 1], cb); segN[RT_SEGS - 1] += cn; }
+  }
+
+  // March, thesis Algorithm 1 extended. llvmpipe runs both sides of every branch
+  // (masked SIMD) and every loop body at least once per entry, so the work is split
+  // into small loops: a sampling loop that walks sign samples (tracing.intervals per
+  // leaf) until F changes sign or |F| has a local minimum between two samples, then
+  // one bisection loop, on F (Algorithm 1) or on dF/dt (tangent roots and close root
+  // pairs that sign sampling misses), then shading, once per hit.
+  int k = 1, steps = 0, next = 0, evals = 0;  // k > steps: load the next segment
+  float t0 = 0.0, h = 0.0;
+  float ta = 0.0, fa = 0.0, da = 0.0;  // previous sample (value, derivative along d)
+  bool havePrev = false;
+  for (int round = 0; round < 64 && evals < RT_MAX_EVALS; ++round) {
+    if (k > steps) {  // the nearest slot left, merged with the slots it overlaps
+      float na = INF, nb = -INF, nn = 0.0;
+      for (int m = 0; m < RT_SEGS; ++m) {
+        if (m == next) { na = segA[m]; nb = segB[m]; nn = segN[m]; }
+        if (m > next && segA[m] <= nb) { nb = max(nb, segB[m]); nn += segN[m]; next = m; }
+      }
+      ++next;
+      if (!(na < INF)) break;
+      t0 = na; steps = max(1, int(nn) * rtIntervals); h = (nb - na) / float(steps);
+      k = 0; havePrev = false;
+    }
+    int mode = SAMPLE;
+    float tm = t0 + float(k) * h, ts = 0.0, fs = 0.0, ds = 0.0;
+    for (; evals < RT_MAX_EVALS; ++evals) {
+      vec4 g = zs_FGrad(o + tm * d);
+      float f = g.w, df = dot(g.xyz, d);
+      if (zs_isUndefined(f)) {
+        havePrev = false;  // F's domain boundary is not the surface
+      } else if (havePrev && sign(f) != sign(fa)) {
+        mode = BISECT_F;
+      } else if (havePrev && rtTangentRoots && fa * da < 0.0 && f * df > 0.0) {
+        mode = BISECT_D;  // |F| fell, then rose
+      } else {
+        ta = tm; fa = f; da = df; havePrev = true;
+      }
+      if (mode != SAMPLE) { ts = tm; fs = f; ds = df; break; }
+      if (++k > steps) break;
+      tm = t0 + float(k) * h;
+    }
+    if (mode == SAMPLE) continue;
+
+    float lo = ta, flo = fa, hi = ts, fhi = fs, tHit = 0.0, tSplit = 0.0, fSplit = 0.0, dSplit = 0.0;
+    vec4 gHit = vec4(0.0);
+    bool record = false, split = false, abandon = false;
+    for (int b = 0; b < rtMaxBisections; ++b) {
+      float tmid = 0.5 * (lo + hi);
+      vec4 g = zs_FGrad(o + tmid * d);
+      ++evals;
+      float f = g.w, df = dot(g.xyz, d);
+      tHit = tmid; gHit = g;
+      if (zs_isUndefined(f)) { abandon = true; break; }
+      if (mode == BISECT_D && sign(f) != sign(flo)) {
+        // F crossed zero at the extremum: two roots. Bisect the first on F; the
+        // second is found by re-sampling from here (below).
+        mode = BISECT_F; split = true; tSplit = tmid; fSplit = f; dSplit = df;
+      }
+      if (mode == BISECT_F) {
+        if (sign(f) == sign(flo)) { lo = tmid; flo = f; } else { hi = tmid; fhi = f; }
+        if (f == 0.0 || hi - lo <= rtEpsilon) break;
+      } else {  // sign(F_lo) * dF/dt is negative while |F| falls
+        if (sign(flo) * df < 0.0) lo = tmid; else hi = tmid;
+        if (hi - lo <= rtTangentTolerance) break;
+      }
+    }
+    if (mode == BISECT_F && !abandon) {
+      // One secant step inside the final bracket: depth accurate far below epsilon.
+      record = true;
+      if (gHit.w != 0.0) tHit = clamp(lo + (hi - lo) * flo / (flo - fhi), lo, hi);
+    } else if (!abandon) {
+      // A tangent root where the distance estimate |F|/|grad F| at the extremum is
+      // below the tolerance: a ray grazing the surface closer than that, or touching a
+      // double root (where F and grad F both vanish), hits it.
+      record = abs(gHit.w) <= rtTangentTolerance * length(gHit.xyz);
+    }
+    if (split && !abandon) {  // re-sample [tSplit, ts] for the second root of the pair
+      ta = tSplit; fa = fSplit; da = dSplit; havePrev = true;
+    } else {
+      ta = ts; fa = fs; da = ds; havePrev = !zs_isUndefined(fs); ++k;
+    }
+    if (!record) continue;
+    vec3 p = o + tHit * d, slack = 1e-5 * (rtDomainMax - rtDomainMin);
+    if (any(lessThan(p, rtDomainMin - slack)) || any(greaterThan(p, rtDomainMax + slack)))
+      continue;  // hits count only inside the closed domain box
+    for (int m = 0; m < RT_MAX_HITS; ++m) {  // constant indices: registers, not memory
+      if (m == found) { hitT[m] = tHit; hitG[m] = gHit; }
+    }
+    if (++found >= wanted) break;
+  }
+  return found;
+}

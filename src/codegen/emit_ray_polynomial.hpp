@@ -1,0 +1,43 @@
+#pragma once
+// The ray polynomial of a polynomial formula: takes the graph and the root of F, puts out
+// GLSL that computes, for a ray segment p + s v (s in [0, 1]), the coefficients of the
+// univariate polynomial f(s) = F(p + s v), plus the Bernstein kernels of that degree which
+// raytrace_bernstein.frag.glsl isolates roots with:
+//
+//   const int zs_DEGREE = D;  const int zs_N = D + 1;
+//   bool zs_FPoly(vec3 p, vec3 v, out float c[zs_N]);        // power basis, c[k] of s^k
+//   void zs_toBernstein(float c[zs_N], out float b[zs_N]);   // Bernstein basis on [0, 1]
+//   void zs_restrict(float b[zs_N], float u, float w, out float r[zs_N]);  // to [u, w]
+//   float zs_bernsteinAt(float b[zs_N], float r);            // de Casteljau
+//   vec4 zs_classify(float b[zs_N]);  // (min, max, sign changes of b, of its derivative)
+//
+// zs_FPoly is truncated Taylor arithmetic: every node carries the coefficients of its own
+// polynomial in s, up to its structural degree (expr/degree.hpp) and at most D, so products
+// are convolutions with constant indices and nothing is ever dropped that could survive to
+// F. Subexpressions free of x, y, z (parameters, sqrt(5), ...) are plain scalars. Every loop
+// over coefficients is unrolled here because D is known: the shader indexes no array with a
+// run-time value (llvmpipe would spill it to memory).
+#include <optional>
+#include <string>
+
+#include "expr/graph.hpp"
+
+namespace zs {
+
+struct RayPolynomialGlsl {
+  std::string source;  // the block, ending with a newline
+  int degree = 0;      // D
+};
+
+// Degree of f(s) the block would have: the structural degree of F, or nothing when F is not
+// a polynomial in x, y, z (parameters are coefficients).
+std::optional<int> rayPolynomialDegree(const Graph& g, NodeId f);
+
+// Nothing when F is not a polynomial. The formula block (emit_glsl.hpp) must precede it: it
+// declares zs_params.
+std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f);
+
+// The Bernstein kernels alone for degree d (part of the block above); exposed for tests.
+std::string emitBernsteinKernelsGlsl(int d);
+
+}  // namespace zs
