@@ -14,21 +14,32 @@ uniform vec2 rtResolution;  // full image size in pixels (tiles only restrict th
 uniform vec3 rtEye, rtForward, rtRight, rtUp;
 uniform float rtPlaneHalf;  // tan(fov_y/2), or height/2 when orthographic
 uniform bool rtOrtho;
-uniform int rtHits, rtSamples, rtMaxBisections;
+uniform int rtMaxBisections;
 uniform float rtEpsilon;
 uniform float rtTangentTolerance;  // 1e-5 of the domain diagonal (docs/renderer.md)
 uniform float rtAmbient;
 uniform vec3 rtDirLightDir, rtDirLight, rtPointPos, rtPointLight;  // lights: color*intensity
 uniform vec3 rtFrontColor, rtBackColor;
 uniform vec2 rtFrontPhong, rtBackPhong;  // (specular, shininess)
-uniform bool rtSilhouetteOn, rtBorderOn, rtReflectionOn;
+uniform bool rtSilhouetteOn, rtBorderOn;
 uniform float rtSilhouetteThreshold, rtBorderThreshold, rtPrimaryWeight, rtOpacity;
 uniform vec3 rtSilhouetteColor, rtBorderColor, rtBackground;
 
 layout(location = 0) out vec4 rtOutColor;
 layout(location = 1) out float rtOutDepth;
 
-const int RT_MAX_HITS = 8;  // upper bound of tracing.hits
+// The program variant (render/ray_tracer.cpp defines these after #version): features that
+// are off are absent, not masked. llvmpipe runs every branch and every loop at least once
+// for each group of pixels, so a masked-off feature costs nearly as much as a used one.
+#ifndef RT_SAMPLES
+#define RT_SAMPLES 1     // N: N x N rays per pixel
+#endif
+#ifndef RT_MAX_HITS
+#define RT_MAX_HITS 1    // hits kept per primary ray: 1 when opaque, tracing.hits otherwise
+#endif
+#ifndef RT_REFLECTION
+#define RT_REFLECTION 1  // one reflection ray off the first hit
+#endif
 
 // The hits of the ray o + t d with t >= tStart inside the domain, nearest first, at most
 // `wanted` (<= RT_MAX_HITS): their t and (grad F, F) there. Returns how many were found.
@@ -74,16 +85,19 @@ vec3 shade(vec3 p, vec4 g, vec3 rd) {
 void main() {
   // Pixel (i, j) from the top-left of the full image (docs/camera.md).
   vec2 pixel = vec2(gl_FragCoord.x - 0.5, rtResolution.y - gl_FragCoord.y - 0.5);
-  int n = max(rtSamples, 1), grid = n * n;
+  const int n = RT_SAMPLES, grid = n * n;
   // Depth comes from the pixel-center ray; an even N x N grid has none, so one more ray
   // (depth only) is traced there.
-  int rays = grid + (n % 2 == 0 ? 1 : 0), centerRay = n % 2 == 0 ? grid : grid / 2;
-  float alpha = clamp(rtOpacity, 0.0, 1.0), w = rtReflectionOn ? rtPrimaryWeight : 1.0;
-  int hitsWanted = alpha < 1.0 ? clamp(rtHits, 1, RT_MAX_HITS) : 1;
+  const int rays = grid + (n % 2 == 0 ? 1 : 0), centerRay = n % 2 == 0 ? grid : grid / 2;
+  const int passes = RT_REFLECTION != 0 ? 2 : 1;
+  float alpha = clamp(rtOpacity, 0.0, 1.0), w = RT_REFLECTION != 0 ? rtPrimaryWeight : 1.0;
   float depth = uintBitsToFloat(0x7F800000u);  // +inf: no hit
   vec3 sum = vec3(0.0);
 
-  for (int s = 0; s < rays; ++s) {
+  // do-while, not for: llvmpipe tests a loop's exit only at the end of its body, so a for
+  // loop runs its (large) body once more, masked off, after its last real iteration.
+  int s = 0;
+  do {
     vec2 offset = s < grid ? (vec2(s % n, s / n) + 0.5) / float(n) - 0.5 : vec2(0.0);
     vec2 q = pixel + offset + 0.5;
     vec2 uv = vec2((2.0 * q.x / rtResolution.x - 1.0) * rtResolution.x / rtResolution.y,
@@ -98,12 +112,12 @@ void main() {
     // Pass 0: the primary ray, its hits blended front to back with the opacity (the first
     // hit weighted w when reflecting). Pass 1: one opaque reflection ray off the first hit,
     // weighted alpha * (1 - w). One loop, so rtMarch and its calls of F are inlined once.
-    for (int pass = 0; pass < 2; ++pass) {
+    int pass = 0;
+    do {
       vec3 o = ro, d = rd;
       float tStart = 0.0, passAlpha = alpha, passScale = 1.0;
-      int wanted = hitsWanted;
+      int wanted = RT_MAX_HITS;
       if (pass == 1) {
-        if (!(rtReflectionOn && colorRay && firstT >= 0.0)) break;
         vec3 nrm = length(firstG.xyz) > 0.0 ? normalize(firstG.xyz) : -rd;
         o = ro + firstT * rd;
         d = reflect(rd, dot(nrm, rd) < 0.0 ? nrm : -nrm);
@@ -115,9 +129,17 @@ void main() {
       int found = rtMarch(o, d, tStart, wanted, hitT, hitG);
       if (pass == 0 && found > 0) { firstT = hitT[0]; firstG = hitG[0]; }
 
+      float transmit = 1.0;
+#if RT_MAX_HITS == 1
+      // One hit at most: shade it unconditionally (a loop would run its body twice).
+      vec3 lit = shade(o + hitT[0] * d, hitG[0], d);
+      if (found > 0 && colorRay) {
+        color += passScale * passAlpha * ((pass == 0) ? w : 1.0) * lit;
+        transmit = 1.0 - passAlpha;
+      }
+#else
       // Shade the kept hits front to back, outside the march: shade() is long and every
       // loop body runs at least once, so it runs max(found, 1) times per pass, not per step.
-      float transmit = 1.0;
       for (int j = 0; j < found && colorRay; ++j) {
         float tj = 0.0;
         vec4 gj = vec4(0.0);
@@ -128,12 +150,12 @@ void main() {
         color += passScale * transmit * passAlpha * share * shade(o + tj * d, gj, d);
         transmit *= 1.0 - passAlpha;
       }
-      if (!colorRay) transmit = found > 0 ? 0.0 : 1.0;
+#endif
       color += passScale * transmit * rtBackground;  // what the kept hits let through
-    }
+    } while (++pass < passes && colorRay && firstT >= 0.0);
     if (s == centerRay && firstT >= 0.0) depth = firstT;
     if (colorRay) sum += color;
-  }
+  } while (++s < rays);
   rtOutColor = vec4(sum / float(grid), 1.0);
   rtOutDepth = depth;
 }

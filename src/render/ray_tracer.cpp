@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <utility>
 #include <limits>
 
 #include "render/shader_program.hpp"
@@ -16,7 +17,7 @@ RayTracer::RayTracer() { glGenVertexArrays(1, &vao_); }
 
 RayTracer::~RayTracer() {
   releaseTarget();
-  if (program_) glDeleteProgram(program_);
+  deletePrograms();
   if (nodeTexture_) glDeleteTextures(1, &nodeTexture_);
   if (nodeBuffer_) glDeleteBuffers(1, &nodeBuffer_);
   if (octreeTexture_) glDeleteTextures(1, &octreeTexture_);
@@ -26,17 +27,55 @@ RayTracer::~RayTracer() {
 
 bool RayTracer::build(std::string_view vertexSource, std::string_view fragmentSource,
                       std::string& log) {
-  // The same text again (a parameter or level change) keeps the program: llvmpipe's JIT of
+  // The same text again (a parameter or level change) keeps the programs: llvmpipe's JIT of
   // a new one costs a visible pause.
   if (program_ && vertexSource == vertexSource_ && fragmentSource == fragmentSource_) return true;
-  const unsigned program = compileProgram(vertexSource, fragmentSource, log);
-  if (!program) return false;
-  if (program_) glDeleteProgram(program_);
-  program_ = program;
-  vertexSource_ = vertexSource;
-  fragmentSource_ = fragmentSource;
+  // The default variant is compiled now, so a broken shader is reported here, not mid-frame.
+  std::map<Variant, unsigned> previous;
+  std::swap(previous, programs_);
+  const std::string oldVertex = std::exchange(vertexSource_, std::string(vertexSource));
+  const std::string oldFragment = std::exchange(fragmentSource_, std::string(fragmentSource));
+  const unsigned first = program(variantFor(RenderSettings{}), log);
+  if (!first) {  // keep what worked before
+    deletePrograms();
+    programs_ = std::move(previous);
+    vertexSource_ = oldVertex;
+    fragmentSource_ = oldFragment;
+    return false;
+  }
+  for (auto& [variant, old] : previous) glDeleteProgram(old);
+  program_ = first;
   locations_.clear();
   return true;
+}
+
+RayTracer::Variant RayTracer::variantFor(const RenderSettings& s) {
+  Variant v;
+  v.samples = std::clamp(s.samples, 1, 16);
+  v.maxHits = s.opacity < 1.0 ? std::clamp(s.tracing.hits, 1, 8) : 1;
+  v.reflection = s.reflection.enabled;
+  return v;
+}
+
+unsigned RayTracer::program(const Variant& v, std::string& log) {
+  if (auto it = programs_.find(v); it != programs_.end()) return it->second;
+  // The defines go right after #version, which must stay the first line.
+  std::string source = fragmentSource_;
+  const std::size_t eol = source.find('\n');
+  const std::string defines = "#define RT_SAMPLES " + std::to_string(v.samples) +
+                              "\n#define RT_MAX_HITS " + std::to_string(v.maxHits) +
+                              "\n#define RT_REFLECTION " + (v.reflection ? "1" : "0") + "\n#line 2 0\n";
+  source.insert(eol == std::string::npos ? source.size() : eol + 1, defines);
+  const unsigned p = compileProgram(vertexSource_, source, log);
+  if (p) programs_.emplace(v, p);
+  return p;
+}
+
+void RayTracer::deletePrograms() {
+  for (auto& [variant, p] : programs_) glDeleteProgram(p);
+  programs_.clear();
+  program_ = 0;
+  locations_.clear();
 }
 
 int RayTracer::uniform(const char* name) {
@@ -147,6 +186,13 @@ std::string RayTracer::prepare(const RenderSettings& settings, const Domain& dom
                                int height, bool offscreen) {
   if (!program_) return "the ray tracer has no shader program (build() first)";
   if (width <= 0 || height <= 0) return "image size must be positive";
+  std::string log;
+  const unsigned variant = program(variantFor(settings), log);
+  if (!variant) return "the shader variant for these settings does not compile:\n" + log;
+  if (variant != program_) {
+    program_ = variant;
+    locations_.clear();
+  }
   if (offscreen) {
     if (std::string error = ensureTarget(width, height); !error.empty()) return error;
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);

@@ -9,6 +9,8 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <map>
+#include <tuple>
 #include <span>
 #include <string>
 #include <string_view>
@@ -85,8 +87,23 @@ class RayTracer {
   std::string ensureTarget(int width, int height);
   void releaseTarget();
 
-  unsigned program_ = 0, vao_ = 0;
-  std::string vertexSource_, fragmentSource_;  // what program_ was built from
+  // One program per feature variant (supersampling, kept hits, reflection: compile-time in
+  // the shader, see raytrace_main.frag.glsl), compiled when a frame first needs it.
+  struct Variant {
+    int samples = 1, maxHits = 1;
+    bool reflection = true;
+    bool operator<(const Variant& o) const {
+      return std::tie(samples, maxHits, reflection) < std::tie(o.samples, o.maxHits, o.reflection);
+    }
+  };
+  static Variant variantFor(const RenderSettings& settings);
+  // The program of `v`, compiling it if needed; 0 with `log` set when it does not compile.
+  unsigned program(const Variant& v, std::string& log);
+  void deletePrograms();
+
+  std::map<Variant, unsigned> programs_;
+  unsigned program_ = 0, vao_ = 0;  // program_: the one in use
+  std::string vertexSource_, fragmentSource_;  // what the programs are built from
   unsigned nodeBuffer_ = 0, nodeTexture_ = 0;
   unsigned octreeBuffer_ = 0, octreeTexture_ = 0;
   std::array<std::uint32_t, 2> octreeRoot_{};

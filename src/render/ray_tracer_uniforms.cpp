@@ -48,8 +48,6 @@ int RayTracer::setUniforms(const RenderSettings& s, const Domain& domain, int wi
   const Tracing& t = s.tracing;
   glUniform1i(uniform("rtIntervals"), std::clamp(t.intervals, 1, 4096));
   glUniform1i(uniform("rtMaxBisections"), std::clamp(t.maxBisections, 1, 200));
-  glUniform1i(uniform("rtHits"), std::clamp(t.hits, 1, 8));
-  glUniform1i(uniform("rtSamples"), std::clamp(s.samples, 1, 16));
   const double epsilon = std::isfinite(t.epsilon) && t.epsilon > 0 ? t.epsilon : 1e-6;
   glUniform1f(uniform("rtEpsilon"), float(epsilon));
   glUniform1i(uniform("rtTangentRoots"), tangentRoots_);
@@ -80,7 +78,6 @@ int RayTracer::setUniforms(const RenderSettings& s, const Domain& domain, int wi
   glUniform1i(uniform("rtBorderOn"), s.border.enabled);
   glUniform1f(uniform("rtBorderThreshold"), float(s.border.threshold));
   vec3Uniform(uniform("rtBorderColor"), s.border.color);
-  glUniform1i(uniform("rtReflectionOn"), s.reflection.enabled);
   glUniform1f(uniform("rtPrimaryWeight"), float(std::clamp(s.reflection.primaryWeight, 0.0, 1.0)));
   glUniform1f(uniform("rtOpacity"), float(std::clamp(s.opacity, 0.0, 1.0)));
   vec3Uniform(uniform("rtBackground"), s.background);
