@@ -2,141 +2,91 @@
 // (tracing.method = "bernstein", docs/renderer.md). Follows raytrace_main.frag.glsl and the
 // generated ray polynomial block (zs_FPoly and the Bernstein kernels of degree zs_DEGREE)
 // and defines rtMarch():
-//  1. The octree's cells are visited front to back without a stack: the cell holding the
-//     ray just after t is found by descending from the root, choosing each child by
-//     comparing t with the ray parameters of the parent's mid-planes, so a cell boundary is
-//     decided by the very same float comparison on both of its sides (no gaps, no repeats).
-//     Empty cells are skipped whole; the walk stops at the first leaf holding a root.
-//  2. In a leaf segment [ta, tb], f(s) = F(o + (ta + s (tb - ta)) d) comes from one call of
-//     zs_FPoly, in the Bernstein basis on [0, 1]. Its coefficients bound f (convex hull) and
-//     their sign changes V bound the number of roots (Descartes): V = 1, or a monotone f
-//     (no sign change among the derivative's coefficients) with a sign change, isolates
-//     exactly one root; no coefficient of one sign proves there is none. Otherwise the
-//     interval is halved, walking the implicit binary tree of subintervals [k, k+1] 2^-level
-//     left to right without a stack: each visited node's coefficients are restricted from
-//     the segment's by de Casteljau, so nothing is kept per level.
-//  3. An isolated root is refined by regula falsi with the Illinois modification, which
-//     keeps a bracket, to tracing.epsilon, then one secant step inside the final bracket.
+//  1. The ray is clipped to the domain and to the box of the octree's leaves. On that
+//     segment f(s) = F(o + t(s) d), s in [0, 1], comes from ONE call of zs_FPoly (a Taylor
+//     expansion about the segment's midpoint), in the Bernstein basis.
+//  2. The Bernstein coefficients bound f on an interval (convex hull) and their sign changes
+//     V bound its number of roots (Descartes): V = 1, or a monotone f (no sign change among
+//     the derivative's coefficients) with a sign change, isolates exactly one root; no
+//     coefficient of the other sign proves there is none. Otherwise the interval is halved,
+//     walking the implicit binary tree of intervals [k, k+1] 2^-level left to right with no
+//     stack: every visited interval is restricted from the segment's coefficients by de
+//     Casteljau, so nothing is kept per level. The first interval that holds a root holds
+//     the nearest one.
+//  3. The isolated root is refined by Newton steps safeguarded by bisection inside its
+//     bracket (f and f' at x come from the same restriction, to [x, hi]) until a step is
+//     below tracing.epsilon / 64.
 //  4. An interval narrower than the tangent tolerance (1e-5 of the domain diagonal) that
 //     still cannot be decided holds a root of even multiplicity, a cluster of roots, or a
 //     ray passing closer than that to the surface: it is a hit (a ray touching a sphere,
-//     the squared sphere (x^2+y^2+z^2-1)^2). Nothing is ever skipped that may hold a root.
+//     the squared sphere (x^2+y^2+z^2-1)^2). Nothing that may hold a root is skipped.
+// llvmpipe runs every branch of a loop body for each group of pixels, so isolation and
+// refinement share ONE loop whose body makes exactly one zs_restrict call, and loops are
+// do-while (a for loop runs its body once more, masked, after its last iteration).
 
-// The octree (render/octree_gpu.hpp): inner nodes, two words each:
-//   x = existing children (bit k for octant k = x | y << 1 | z << 2) | leaf children << 8,
-//   y = index of the first inner child; the inner children follow in octant order.
-uniform usamplerBuffer rtOctree;
-uniform uvec2 rtOctreeRoot;     // node 0, so the first level costs no fetch
-uniform bool rtOctreeRootLeaf;  // the whole box is one leaf
-uniform vec3 rtOctreeMin, rtOctreeExtent;
+uniform vec3 rtRootMin, rtRootMax;  // box of the octree's leaves (hierarchy root)
+uniform float rtPad;                // widens it by the float slack of the hierarchy
 
-const int RT_MAX_LEVEL = 20;       // the octree's deepest level (interval/octree.hpp)
-const int RT_MAX_CELLS = 4096;     // safety bound on cells visited per ray
-const int RT_MAX_ISOLATION = 160;  // safety bound on subintervals visited per segment
+const int RT_MAX_STEPS = 160;  // safety bound on isolation + refinement steps per segment
 
-uint rtPopcount8(uint x) {
-  x = x - ((x >> 1u) & 0x55u);
-  x = (x & 0x33u) + ((x >> 2u) & 0x33u);
-  return (x + (x >> 4u)) & 0x0Fu;
-}
-
-// The cell holding the ray o + t' d for t' just above t: returns the ray parameter where it
-// leaves that cell; `leaf` tells a leaf (may hold the surface) from an empty cell. Planes
-// are min + k 2^-level extent, a single rounding of the same real wherever a plane is met,
-// so the exit of one cell is exactly the entry the next descent compares against.
-float rtCellExit(vec3 o, vec3 inv, float t, out bool leaf) {
-  leaf = rtOctreeRootLeaf;
-  if (leaf) return uintBitsToFloat(0x7F800000u);
-  uvec2 node = rtOctreeRoot;
-  uvec3 cell = uvec3(0u);
-  bvec3 forward = greaterThan(inv, vec3(0.0));
-  float tExit = t;
-  for (int level = 1; level <= RT_MAX_LEVEL; ++level) {
-    vec3 size = rtOctreeExtent * exp2(-float(level));
-    vec3 tMid = (rtOctreeMin + vec3(2u * cell + 1u) * size - o) * inv;
-    // Upper half along an axis: beyond the mid-plane going forward, before it going back.
-    bvec3 upper = equal(greaterThanEqual(vec3(t), tMid), forward);
-    uvec3 child = 2u * cell + uvec3(upper);
-    vec3 tFar = (rtOctreeMin + vec3(child + uvec3(forward)) * size - o) * inv;
-    tExit = min(min(tFar.x, tFar.y), tFar.z);
-    uint bit = 1u << (uint(upper.x) | uint(upper.y) << 1u | uint(upper.z) << 2u);
-    leaf = (node.x & (bit << 8u)) != 0u;
-    if ((node.x & bit) == 0u || leaf) break;
-    uint inner = node.x & ~(node.x >> 8u) & 0xFFu;
-    node = texelFetch(rtOctree, int(node.y + rtPopcount8(inner & (bit - 1u)))).xy;
-    cell = child;
-  }
-  return tExit;
-}
-
-// The first root of F on the ray o + t d with t in [ta, tb] (item 2-4 above). On success
-// tHit is the root and tAfter the end of its bracket: no other root lies in (tHit, tAfter].
 bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float tAfter) {
-  tHit = ta;
-  tAfter = tb;
   float len = tb - ta;
   float c[zs_N], b0[zs_N], b[zs_N];
-  if (!(len > 0.0) || !zs_FPoly(o + ta * d, len * d, c)) return false;
+  bool defined = zs_FPoly(o + (0.5 * (ta + tb)) * d, (0.5 * len) * d, c);
   zs_toBernstein(c, b0);
 
   float tolerance = rtTangentTolerance / len;  // in units of s
-  int level = 0, index = 0, outcome = 0;       // outcome: 0 none, 1 bracket, 2 cluster
-  float u = 0.0, w = 1.0;
-  for (int it = 0; it < RT_MAX_ISOLATION; ++it) {
-    float size = exp2(-float(level));
-    u = float(index) * size;
-    w = float(index + 1) * size;
-    zs_restrict(b0, u, w, b);
-    vec4 k = zs_classify(b);  // (min, max, V, V of the derivative)
-    bool none = !(k.x <= 0.0 && k.y >= 0.0);  // also NaN (overflow): nothing to find
-    bool monotone = k.w == 0.0;
-    if (!none && monotone && (b[0] > 0.0) == (b[zs_DEGREE] > 0.0) && b[0] != 0.0 &&
-        b[zs_DEGREE] != 0.0)
-      none = true;  // monotone without a sign change
-    if (!none && (k.z == 1.0 || monotone)) { outcome = 1; break; }
-    if (!none && size <= tolerance) { outcome = 2; break; }
-    if (!none) {  // descend to the left half
-      ++level;
-      index *= 2;
-      continue;
-    }
-    // Next interval to the right: climb while a right child, then step to the sibling.
-    int next = index + 1;
-    int climb = (floatBitsToInt(float(next & -next)) >> 23) - 127;  // trailing zeros
-    level -= climb;
-    index = next >> climb;
-    if (level <= 0) break;
-  }
-  if (outcome == 0) return false;
-
-  float lo = 0.0, hi = 1.0, sHit = 0.5;
-  if (outcome == 1) {
-    float flo = b[0], fhi = b[zs_DEGREE];  // true values at the bracket's ends
-    float wlo = flo, whi = fhi;            // Illinois-weighted values
-    float stop = rtEpsilon / (len * (w - u));
-    int side = 0;
-    for (int it = 0; it < rtMaxBisections && hi - lo > stop; ++it) {
-      float r = (lo * whi - hi * wlo) / (whi - wlo);
-      if (!(r > lo && r < hi)) r = 0.5 * (lo + hi);
-      float fr = zs_bernsteinAt(b, r);
-      if (fr == 0.0) { lo = r; hi = r; flo = 0.0; fhi = 0.0; break; }
-      if ((fr > 0.0) == (flo > 0.0)) {
-        lo = r; flo = fr; wlo = fr;
-        if (side < 0) whi *= 0.5;
-        side = -1;
-      } else {
-        hi = r; fhi = fr; whi = fr;
-        if (side > 0) wlo *= 0.5;
-        side = 1;
+  float stop = rtEpsilon / (64.0 * len);
+  int level = 0, index = 0, step = 0;
+  bool refining = false, done = !defined || !(len > 0.0), found = false;
+  float u = 0.0, w = 1.0;              // the tree interval being classified
+  float lo = 0.0, hi = 1.0, flo = 0.0;  // refinement bracket and f(lo)
+  float x = 0.5;                        // refinement point
+  do {
+    zs_restrict(b0, refining ? x : u, refining ? hi : w, b);
+    if (refining) {
+      float fx = b[0];
+      float slope = float(zs_DEGREE) * (b[1] - b[0]) / max(hi - x, 1e-30);
+      if ((fx > 0.0) == (flo > 0.0) && fx != 0.0) { lo = x; flo = fx; } else { hi = x; }
+      float next = x - fx / slope;
+      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      done = fx == 0.0 || abs(next - x) <= stop || hi - lo <= stop;
+      x = fx == 0.0 ? x : next;
+      found = done;
+    } else {
+      vec4 k = zs_classify(b);  // (min, max, V, V of the derivative)
+      bool none = !(k.x <= 0.0 && k.y >= 0.0);  // also NaN (overflow): nothing to find
+      bool monotone = k.w == 0.0;
+      bool ends = (b[0] > 0.0) != (b[zs_DEGREE] > 0.0) || b[0] == 0.0 || b[zs_DEGREE] == 0.0;
+      none = none || (monotone && !ends);  // monotone without a sign change
+      float size = w - u;
+      if (!none && (k.z == 1.0 || monotone)) {  // exactly one root in [u, w]
+        refining = true;
+        lo = u; hi = w; flo = b[0];
+        float fhi = b[zs_DEGREE];
+        x = fhi != flo ? clamp((u * fhi - w * flo) / (fhi - flo), u, w) : u;
+        if (b[0] == 0.0) { x = u; done = true; found = true; }
+      } else if (!none && size <= tolerance) {  // undecidable at the tolerance: a hit
+        x = 0.5 * (u + w); hi = w;
+        done = true; found = true;
+      } else if (!none) {  // descend to the left half
+        ++level;
+        index *= 2;
+      } else {  // next interval to the right: climb while a right child, then the sibling
+        int next = index + 1;
+        int climb = (floatBitsToInt(float(next & -next)) >> 23) - 127;  // trailing zeros
+        level -= climb;
+        index = next >> climb;
+        done = level <= 0;
       }
+      float scale = exp2(-float(level));
+      u = float(index) * scale;
+      w = float(index + 1) * scale;
     }
-    sHit = fhi != flo ? clamp((lo * fhi - hi * flo) / (fhi - flo), lo, hi) : lo;
-  } else {
-    hi = 1.0;
-  }
-  tHit = ta + len * (u + (w - u) * sHit);
-  tAfter = ta + len * (u + (w - u) * hi);
-  return true;
+  } while (!done && ++step < RT_MAX_STEPS);
+  tHit = ta + len * x;
+  tAfter = ta + len * hi;
+  return found;
 }
 
 int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS],
@@ -144,22 +94,28 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
   for (int m = 0; m < RT_MAX_HITS; ++m) { hitT[m] = 0.0; hitG[m] = vec4(0.0); }
   vec3 inv = safeInverse(d);
   vec2 dom = slab(rtDomainMin, rtDomainMax, o, inv);
-  vec2 box = slab(rtOctreeMin, rtOctreeMin + rtOctreeExtent, o, inv);
+  vec2 box = slab(rtRootMin - rtPad, rtRootMax + rtPad, o, inv);
   float t = max(max(dom.x, box.x), tStart), tEnd = min(dom.y, box.y);
   int found = 0;
-  for (int step = 0; step < RT_MAX_CELLS && t < tEnd; ++step) {
-    bool leaf;
-    float tExit = min(rtCellExit(o, inv, t, leaf), tEnd);
-    float tHit, tAfter;
-    if (leaf && rtFirstRoot(o, d, t, tExit, tHit, tAfter)) {
-      vec4 g = zs_FGrad(o + tHit * d);
-      for (int m = 0; m < RT_MAX_HITS; ++m) {  // constant indices: registers, not memory
-        if (m == found) { hitT[m] = tHit; hitG[m] = g; }
-      }
-      if (++found >= wanted) break;
-      tExit = tAfter;  // the next root lies beyond the bracket of this one
-    }
-    t = tExit > t ? tExit : t + 1e-6 * (tEnd - t);  // always advance, even on a degenerate cell
+#if RT_MAX_HITS == 1
+  float tHit, tAfter;
+  if (rtFirstRoot(o, d, t, tEnd, tHit, tAfter) && t < tEnd) {
+    found = 1;
+    hitT[0] = tHit;
   }
+  hitG[0] = zs_FGrad(o + hitT[0] * d);
+#else
+  // Further hits: the segment restarts past the bracket of the last root (it holds no other).
+  for (int k = 0; k < RT_MAX_HITS && k < wanted && t < tEnd; ++k) {
+    float tHit, tAfter;
+    if (!rtFirstRoot(o, d, t, tEnd, tHit, tAfter)) break;
+    vec4 g = zs_FGrad(o + tHit * d);
+    for (int m = 0; m < RT_MAX_HITS; ++m) {  // constant indices: registers, not memory
+      if (m == found) { hitT[m] = tHit; hitG[m] = g; }
+    }
+    ++found;
+    t = tAfter > t ? tAfter : t + 1e-6 * (tEnd - t);
+  }
+#endif
   return found;
 }

@@ -174,15 +174,24 @@ std::string emitBernsteinKernelsGlsl(int d) {
   s += "const int zs_DEGREE = " + std::to_string(d) + ";\n";
   s += "const int zs_N = " + std::to_string(d + 1) + ";\n";
 
-  // b_i = sum_{j <= i} C(i, j) / C(d, j) c_j: positive weights, no cancellation added.
+  // c holds f in the power basis of s' = 2s - 1 in [-1, 1] (the expansion about the
+  // segment's midpoint, whose coefficients stay far smaller than about an end). The
+  // Bernstein coefficients of s'^j on [0, 1] are averages of +-1, so |b| <= sum |c|:
+  //   b_i = sum_j c_j sum_k (-1)^(j-k) C(j, k) C(d-j, i-k) / C(d, i).
   s += "\nvoid zs_toBernstein(" + arrayParam("c") + ", out " + arrayParam("b") + ") {\n";
   for (int i = 0; i <= d; ++i) {
     std::string sum;
-    for (int j = 0; j <= i; ++j) {
-      const double w = binomial(i, j) / binomial(d, j);
-      sum += (sum.empty() ? "" : " + ") + (w == 1.0 ? idx("c", j) : literal(w) + " * " + idx("c", j));
+    for (int j = 0; j <= d; ++j) {
+      double m = 0;
+      for (int k = std::max(0, i - (d - j)); k <= std::min(i, j); ++k) {
+        m += ((j - k) % 2 ? -1.0 : 1.0) * binomial(j, k) * binomial(d - j, i - k);
+      }
+      m /= binomial(d, i);
+      if (m == 0) continue;
+      const std::string term = m == 1.0 ? idx("c", j) : literal(m) + " * " + idx("c", j);
+      sum += (sum.empty() ? "" : " + ") + term;
     }
-    s += "  " + idx("b", i) + " = " + sum + ";\n";
+    s += "  " + idx("b", i) + " = " + (sum.empty() ? "0.0" : sum) + ";\n";
   }
   s += "}\n";
 

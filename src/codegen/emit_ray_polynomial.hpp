@@ -1,12 +1,13 @@
 #pragma once
 // The ray polynomial of a polynomial formula: takes the graph and the root of F, puts out
-// GLSL that computes, for a ray segment p + s v (s in [0, 1]), the coefficients of the
-// univariate polynomial f(s) = F(p + s v), plus the Bernstein kernels of that degree which
+// GLSL that computes, for a ray segment p + s v (s in [-1, 1]: p is the segment's midpoint,
+// v half of it), the coefficients of the univariate polynomial f(s) = F(p + s v), plus the
+// Bernstein kernels of that degree (on [0, 1], the same segment) which
 // raytrace_bernstein.frag.glsl isolates roots with:
 //
 //   const int zs_DEGREE = D;  const int zs_N = D + 1;
 //   bool zs_FPoly(vec3 p, vec3 v, out float c[zs_N]);        // power basis, c[k] of s^k
-//   void zs_toBernstein(float c[zs_N], out float b[zs_N]);   // Bernstein basis on [0, 1]
+//   void zs_toBernstein(float c[zs_N], out float b[zs_N]);   // Bernstein on [0, 1], s' = (s+1)/2
 //   void zs_restrict(float b[zs_N], float u, float w, out float r[zs_N]);  // to [u, w]
 //   float zs_bernsteinAt(float b[zs_N], float r);            // de Casteljau
 //   vec4 zs_classify(float b[zs_N]);  // (min, max, sign changes of b, of its derivative)
