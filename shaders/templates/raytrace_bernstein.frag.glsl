@@ -15,7 +15,7 @@
 //     the nearest one.
 //  3. The isolated root is refined by Newton steps safeguarded by bisection inside its
 //     bracket (f and f' at x come from the same restriction, to [x, hi]) until a step is
-//     below tracing.epsilon / 64.
+//     below tracing.epsilon / 16.
 //  4. An interval narrower than the tangent tolerance (1e-5 of the domain diagonal) that
 //     still cannot be decided holds a root of even multiplicity, a cluster of roots, or a
 //     ray passing closer than that to the surface: it is a hit (a ray touching a sphere,
@@ -36,7 +36,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   zs_toBernstein(c, b0);
 
   float tolerance = rtTangentTolerance / len;  // in units of s
-  float stop = rtEpsilon / (64.0 * len);
+  float stop = rtEpsilon / (16.0 * len);
   int level = 0, index = 0, step = 0;
   bool refining = false, done = !defined || !(len > 0.0), found = false;
   float u = 0.0, w = 1.0;              // the tree interval being classified

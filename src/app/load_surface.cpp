@@ -8,11 +8,6 @@ std::string loadSurface(RayTracer& tracer, const PreparedSurface& surface) {
   if (std::string err = tracer.setHierarchy(surface.hierarchy.packed()); !err.empty()) {
     return "error: " + err + "\n";
   }
-  const OctreeNodes& nodes = surface.octreeNodes;
-  if (std::string err = tracer.setOctree(nodes.words, nodes.box.min, nodes.box.max, nodes.rootLeaf);
-      !err.empty()) {
-    return "error: " + err + "\n";
-  }
   tracer.setParams(surface.paramsAsFloats());
   return {};
 }

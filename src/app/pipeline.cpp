@@ -55,7 +55,6 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bo
   if (auto* err = std::get_if<OctreeError>(&tree)) return "error: " + err->message + "\n";
   s.octree = std::get<Octree>(std::move(tree));
   s.hierarchy = buildSphereHierarchy(s.octree);
-  s.octreeNodes = buildOctreeNodes(s.octree);
   s.times.octreeMs = msSince(t);
 
   t = std::chrono::steady_clock::now();

@@ -12,7 +12,6 @@
 #include "codegen/emit_ray_polynomial.hpp"
 #include "interval/hierarchy.hpp"
 #include "interval/octree.hpp"
-#include "interval/octree_nodes.hpp"
 #include "scene/scene.hpp"
 
 namespace zs::app {
@@ -26,8 +25,7 @@ struct PreparedSurface {
   std::array<NodeId, 3> gradient{};
   std::vector<double> params;  // graph.params() order
   Octree octree;
-  SphereHierarchy hierarchy;  // walked by the sampling method
-  OctreeNodes octreeNodes;    // walked by the Bernstein method
+  SphereHierarchy hierarchy;
   TracingMethod method = TracingMethod::Sampling;  // resolved: never Auto
   std::string methodWarning;  // why the method asked for could not be used ("" if it was)
   GlslFormula glsl;

@@ -20,8 +20,6 @@ RayTracer::~RayTracer() {
   deletePrograms();
   if (nodeTexture_) glDeleteTextures(1, &nodeTexture_);
   if (nodeBuffer_) glDeleteBuffers(1, &nodeBuffer_);
-  if (octreeTexture_) glDeleteTextures(1, &octreeTexture_);
-  if (octreeBuffer_) glDeleteBuffers(1, &octreeBuffer_);
   glDeleteVertexArrays(1, &vao_);
 }
 
@@ -107,35 +105,6 @@ std::string RayTracer::setHierarchy(std::span<const float> packed) {
   return {};
 }
 
-std::string RayTracer::setOctree(std::span<const std::uint32_t> words, const Vec3& min,
-                                 const Vec3& max, bool rootLeaf) {
-  if (words.size() % 2 != 0) return "octree: the node words come in pairs";
-  const std::size_t nodes = words.size() / 2;
-  for (std::size_t i = 0; i < words.size(); ++i) {
-    // Mesa 22.3 llvmpipe clamps texel words with the top bit set (hierarchy_gpu.hpp).
-    if (words[i] >= (1u << 31)) return "octree: node word " + std::to_string(i) + " too large";
-    if (i % 2 == 1 && words[i] > nodes) return "octree: child index out of range";
-  }
-  GLint maxTexels = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
-  if (nodes > std::size_t(maxTexels))
-    return "octree: " + std::to_string(nodes) + " nodes exceed GL_MAX_TEXTURE_BUFFER_SIZE";
-  if (!octreeBuffer_) glGenBuffers(1, &octreeBuffer_);
-  if (!octreeTexture_) glGenTextures(1, &octreeTexture_);
-  glBindBuffer(GL_TEXTURE_BUFFER, octreeBuffer_);
-  static const std::uint32_t dummy[2] = {};
-  glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(std::max<std::size_t>(words.size(), 2) * 4),
-               words.empty() ? dummy : words.data(), GL_STATIC_DRAW);
-  glBindTexture(GL_TEXTURE_BUFFER, octreeTexture_);
-  glTexBuffer(GL_TEXTURE_BUFFER, GL_RG32UI, octreeBuffer_);
-  glBindBuffer(GL_TEXTURE_BUFFER, 0);
-  octreeRoot_ = words.empty() ? std::array<std::uint32_t, 2>{} : std::array{words[0], words[1]};
-  octreeMin_ = min;
-  octreeMax_ = max;
-  octreeRootLeaf_ = rootLeaf;
-  return {};
-}
-
 void RayTracer::setParams(std::span<const float> params) {
   params_.assign(params.begin(), params.end());
 }
@@ -203,9 +172,6 @@ std::string RayTracer::prepare(const RenderSettings& settings, const Domain& dom
   vertices_ = setUniforms(settings, domain, width, height);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_BUFFER, nodeTexture_);
-  glActiveTexture(GL_TEXTURE1);
-  glBindTexture(GL_TEXTURE_BUFFER, octreeTexture_);
-  glActiveTexture(GL_TEXTURE0);
   glBindVertexArray(vao_);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);

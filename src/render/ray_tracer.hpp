@@ -52,10 +52,6 @@ class RayTracer {
   // The 12-float-per-node hierarchy; "" on success, else why it was rejected (the previous
   // hierarchy stays). Nothing is hit until a hierarchy is set.
   std::string setHierarchy(std::span<const float> packed);
-  // The octree the Bernstein method walks (interval/octree_nodes.hpp: two words per inner
-  // node) over the box [min, max]; "" on success, else why it was rejected.
-  std::string setOctree(std::span<const std::uint32_t> words, const Vec3& min, const Vec3& max,
-                        bool rootLeaf);
   // Values of `uniform float zs_params[K]`, in declaration order; ignored when the formula
   // has no parameters (the driver then reports no such uniform).
   void setParams(std::span<const float> params);
@@ -105,10 +101,6 @@ class RayTracer {
   unsigned program_ = 0, vao_ = 0;  // program_: the one in use
   std::string vertexSource_, fragmentSource_;  // what the programs are built from
   unsigned nodeBuffer_ = 0, nodeTexture_ = 0;
-  unsigned octreeBuffer_ = 0, octreeTexture_ = 0;
-  std::array<std::uint32_t, 2> octreeRoot_{};
-  Vec3 octreeMin_{}, octreeMax_{};
-  bool octreeRootLeaf_ = false;
   unsigned fbo_ = 0, colorTex_ = 0, depthTex_ = 0;
   int targetWidth_ = 0, targetHeight_ = 0;
   GpuHierarchy hierarchy_;

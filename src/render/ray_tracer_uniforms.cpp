@@ -27,12 +27,6 @@ int RayTracer::setUniforms(const RenderSettings& s, const Domain& domain, int wi
               hierarchy_.rootMax[2]);
   glUniform3f(uniform("rtCell"), hierarchy_.cell[0], hierarchy_.cell[1], hierarchy_.cell[2]);
   glUniform1f(uniform("rtPad"), hierarchy_.pad);
-  glUniform1i(uniform("rtOctree"), 1);
-  glUniform2ui(uniform("rtOctreeRoot"), octreeRoot_[0], octreeRoot_[1]);
-  glUniform1i(uniform("rtOctreeRootLeaf"), octreeRootLeaf_);
-  vec3Uniform(uniform("rtOctreeMin"), octreeMin_);
-  vec3Uniform(uniform("rtOctreeExtent"),
-              {octreeMax_[0] - octreeMin_[0], octreeMax_[1] - octreeMin_[1], octreeMax_[2] - octreeMin_[2]});
   vec3Uniform(uniform("rtDomainMin"), domain.min);
   vec3Uniform(uniform("rtDomainMax"), domain.max);
   glUniform2f(uniform("rtResolution"), float(width), float(height));

@@ -8,7 +8,6 @@
 #include "codegen/emit_glsl.hpp"
 #include "codegen/shader_assembly.hpp"
 #include "interval/octree.hpp"
-#include "interval/octree_nodes.hpp"
 #include "interval/sphere_builder.hpp"
 #include "parser/parser.hpp"
 
@@ -43,9 +42,7 @@ std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& erro
     error = e->message;
     return nullptr;
   }
-  const Octree& octreeBuilt = std::get<Octree>(tree);
-  const std::vector<float> packed = buildSphereHierarchy(octreeBuilt).packed();
-  const OctreeNodes nodes = buildOctreeNodes(octreeBuilt);
+  const std::vector<float> packed = buildSphereHierarchy(std::get<Octree>(tree)).packed();
   const GlslFormula glsl = emitFormulaGlsl(formula);
   // The method the app would pick (app/pipeline.cpp resolveMethod), without its warnings.
   const std::optional<int> degree = rayPolynomialDegree(formula.graph, formula.root);
@@ -56,8 +53,7 @@ std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& erro
   auto tracer = std::make_unique<RayTracer>();
   if (!tracer->build(vertexShaderSource(), fragment, error)) return nullptr;
   if (error = tracer->setHierarchy(packed); !error.empty()) return nullptr;
-  if (error = tracer->setOctree(nodes.words, nodes.box.min, nodes.box.max, nodes.rootLeaf); !error.empty())
-    return nullptr;
+
   std::vector<float> params(spec.params.begin(), spec.params.end());
   tracer->setParams(params);
   return tracer;
