@@ -40,6 +40,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   int level = 0, index = 0, step = 0;
   bool refining = false, done = !defined || !(len > 0.0), found = false;
   float u = 0.0, w = 1.0;              // the tree interval being classified
+  float noise = 0.0;                    // rounding bound of the coefficients (step 0)
   float lo = 0.0, hi = 1.0, flo = 0.0;  // refinement bracket and f(lo)
   float x = 0.5;                        // refinement point
   do {
@@ -55,10 +56,18 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
       found = done;
     } else {
       vec4 k = zs_classify(b);  // (min, max, V, V of the derivative)
-      bool none = !(k.x <= 0.0 && k.y >= 0.0);  // also NaN (overflow): nothing to find
+      // Float rounding of the coefficients: values within `noise` of 0 are undecided.
+      if (step == 0) noise = float(8 * zs_DEGREE) * 1.2e-7 * max(abs(k.x), abs(k.y));
+      bool none = !(k.x <= noise && k.y >= -noise);  // also NaN (overflow): nothing to find
       bool monotone = k.w == 0.0;
       bool ends = (b[0] > 0.0) != (b[zs_DEGREE] > 0.0) || b[0] == 0.0 || b[zs_DEGREE] == 0.0;
-      none = none || (monotone && !ends);  // monotone without a sign change
+      bool oneSign = k.x > 0.0 || k.y < 0.0;  // within the noise of 0, but no sign change
+      // Monotone without a sign change: no root, and no touching either (the least |f| is
+      // at an end, which the neighbouring interval holds).
+      none = none || (monotone && !ends);
+      // One sign and not monotone: a minimum of |f| near 0 inside, i.e. f' has a root there
+      // (a tangency or a double root): subdivided like an undecided interval.
+      if (oneSign && !none) monotone = false;
       float size = w - u;
       if (!none && (k.z == 1.0 || monotone)) {  // exactly one root in [u, w]
         refining = true;
@@ -114,7 +123,8 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
       if (m == found) { hitT[m] = tHit; hitG[m] = g; }
     }
     ++found;
-    t = tAfter > t ? tAfter : t + 1e-6 * (tEnd - t);
+    // Past the tolerance too: a restart right at a root could find that root again.
+    t = max(max(tAfter, tHit + rtTangentTolerance), t + 1e-6 * (tEnd - t));
   }
 #endif
   return found;

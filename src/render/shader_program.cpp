@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <vector>
 
 namespace zs {
@@ -47,8 +48,11 @@ std::string numberedSource(std::string_view source) {
     char prefix[16];
     std::snprintf(prefix, sizeof prefix, "%5d| ", line++);
     out += prefix;
-    out.append(source.substr(start, end - start));
+    const std::string_view text = source.substr(start, end - start);
+    out.append(text);
     out += '\n';
+    // "#line N [S]": the next line is line N, as the compiler's log counts it.
+    if (text.rfind("#line ", 0) == 0) line = std::atoi(std::string(text.substr(6)).c_str());
     if (end == source.size()) break;
     start = end + 1;
   }

@@ -10,7 +10,8 @@ namespace zs {
 // 0 on failure, with `log` filled. Requires a current context with glad loaded.
 unsigned compileProgram(std::string_view vertex, std::string_view fragment, std::string& log);
 
-// "   1| line" for every line: what a shader error is read against.
+// "   1| line" for every line, restarting where a "#line N" directive says, as the
+// compiler counts: what a shader error is read against.
 std::string numberedSource(std::string_view source);
 
 }  // namespace zs

@@ -45,7 +45,9 @@ TEST(TangentRoots, DoubleRootSphereIsFoundOnlyWithTheFix) {
   std::string error;
   ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
   // F = (|p|^2 - 1)^2 >= 0 touches zero on the unit sphere and never changes sign.
-  auto tracer = test::makeTracer({"(x^2+y^2+z^2-1)^2", {}, 2}, error);
+  test::SurfaceSpec spec{"(x^2+y^2+z^2-1)^2", {}, 2};
+  spec.method = TracingMethod::Sampling;  // the fix belongs to the sampling method
+  auto tracer = test::makeTracer(spec, error);
   ASSERT_NE(tracer, nullptr) << error;
   RenderSettings s = test::testSettings({0, 0, 3});
   s.tracing.epsilon = 1e-4;
@@ -64,7 +66,9 @@ TEST(TangentRoots, RootPairCloserThanTheSampleStepIsResolved) {
   std::string error;
   ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
   // A shell between radii sqrt(0.99) and sqrt(1.01): 0.01 thick, far below the sample step.
-  auto tracer = test::makeTracer({"(x^2+y^2+z^2-1)^2-0.0001", {}, 1}, error);
+  test::SurfaceSpec spec{"(x^2+y^2+z^2-1)^2-0.0001", {}, 1};
+  spec.method = TracingMethod::Sampling;  // the fix belongs to the sampling method
+  auto tracer = test::makeTracer(spec, error);
   ASSERT_NE(tracer, nullptr) << error;
   RenderSettings s = test::testSettings({0, 0, 3});
   s.tracing.intervals = 4;

@@ -41,7 +41,7 @@ const BadScene kBadScenes[] = {
     {"key in the wrong table", "formula = \"x\"\nfov_y = 40\n", 2, 1, "fov_y", "unknown key",
      "did you mean \"camera.fov_y\"?"},
     {"unknown key far from any", "formula = \"x\"\n[tracing]\nquality = 3\n", 3, 1,
-     "tracing.quality", "unknown key", "valid keys in [tracing]: intervals, epsilon"},
+     "tracing.quality", "unknown key", "valid keys in [tracing]: method, intervals, epsilon"},
     {"octree level out of range", "formula = \"x\"\n[octree]\nlevel = 13\n", 3, 9, "octree.level",
      "must be [0, 12], got 13", ""},
     {"zero intervals", "formula = \"x\"\n[tracing]\nintervals = 0\n", 3, 13, "tracing.intervals",
