@@ -51,6 +51,7 @@ int runRender(const RenderArgs& args) {
     return 1;
   }
   const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
+  std::cerr << surface.methodWarning;
 
   ContextResult ctx = createHeadlessContext(backend);
   if (!ctx.context) {
