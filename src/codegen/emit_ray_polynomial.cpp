@@ -14,9 +14,10 @@ using Coeffs = std::vector<std::string>;  // GLSL names of c_0 .. c_k
 
 std::string idx(const std::string& array, int i) { return array + "[" + std::to_string(i) + "]"; }
 
+// A negative literal is parenthesized: "a * -2.0" is fine, "a - -2.0" lexes as a decrement.
 std::string literal(double v) {
-  std::string s = glslFloatLiteral(v).text;
-  return !s.empty() && s[0] == '-' ? "(" + s + ")" : s;
+  const GlslLiteral lit = glslFloatLiteral(v);
+  return lit.text.starts_with('-') ? "(" + lit.text + ")" : lit.text;
 }
 
 double binomial(int n, int k) {

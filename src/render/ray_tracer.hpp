@@ -6,8 +6,6 @@
 // depth) rendered offscreen in tiles, or draws into the current framebuffer for the viewer.
 // Needs a current GL 3.3+ core context (gl_context.hpp) for its whole life; all GL objects
 // belong to that context. Never aborts on bad input: errors come back as strings.
-#include <array>
-#include <cstdint>
 #include <functional>
 #include <map>
 #include <tuple>
