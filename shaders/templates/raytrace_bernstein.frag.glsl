@@ -14,15 +14,16 @@
 //     Casteljau, so nothing is kept per level. The first interval that holds a root holds
 //     the nearest one.
 //  3. The isolated root is refined by Newton steps safeguarded by bisection inside its
-//     bracket (f and f' at x come from the same restriction, to [x, hi]) until a step is
-//     below tracing.epsilon / 16.
+//     bracket until a step is below tracing.epsilon / 16; f and f' come from the Taylor
+//     coefficients by Horner (2D multiply-adds, against D^2 for a restriction).
 //  4. An interval narrower than the tangent tolerance (1e-5 of the domain diagonal) that
 //     still cannot be decided holds a root of even multiplicity, a cluster of roots, or a
 //     ray passing closer than that to the surface: it is a hit (a ray touching a sphere,
 //     the squared sphere (x^2+y^2+z^2-1)^2). Nothing that may hold a root is skipped.
-// llvmpipe runs every branch of a loop body for each group of pixels, so isolation and
-// refinement share ONE loop whose body makes exactly one zs_restrict call, and loops are
-// do-while (a for loop runs its body once more, masked, after its last iteration).
+// llvmpipe runs every branch of a loop body for each group of pixels: the isolation loop's
+// body makes exactly one zs_restrict call, refinement has a loop of its own (sharing one
+// loop made every Newton step pay for a restriction), and loops are do-while (a for loop
+// runs its body once more, masked, after its last iteration).
 
 uniform vec3 rtRootMin, rtRootMax;  // box of the octree's leaves (hierarchy root)
 uniform float rtPad;                // widens it by the float slack of the hierarchy
@@ -37,62 +38,67 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
 
   float tolerance = rtTangentTolerance / len;  // in units of s
   float stop = rtEpsilon / (16.0 * len);
-  int level = 0, index = 0, step = 0;
-  bool refining = false, done = !defined || !(len > 0.0), found = false;
-  float u = 0.0, w = 1.0;              // the tree interval being classified
-  float noise = 0.0;                    // rounding bound of the coefficients (step 0)
-  float lo = 0.0, hi = 1.0, flo = 0.0;  // refinement bracket and f(lo)
-  float x = 0.5;                        // refinement point
+  bool done = !defined || !(len > 0.0), found = false, isolated = false;
+  float u = 0.0, size = 1.0;            // the tree interval [u, u + size] being classified
+  float noise = 0.0;                    // rounding bound of the coefficients (first step)
+  float lo = 0.0, hi = 1.0, flo = 0.0;  // bracket of an isolated root and f(lo)
+  float x = 0.5;                        // the root (estimate)
+  int step = 0;
+  // Isolation: the first interval of the tree, left to right, that holds a root.
   do {
-    zs_restrict(b0, refining ? x : u, refining ? hi : w, b);
-    if (refining) {
-      float fx = b[0];
-      float slope = float(zs_DEGREE) * (b[1] - b[0]) / max(hi - x, 1e-30);
-      if ((fx > 0.0) == (flo > 0.0) && fx != 0.0) { lo = x; flo = fx; } else { hi = x; }
-      float next = x - fx / slope;
-      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-      done = fx == 0.0 || abs(next - x) <= stop || hi - lo <= stop;
-      x = fx == 0.0 ? x : next;
-      found = done;
+    float w = u + size;
+    zs_restrict(b0, u, w, b);
+    vec4 k = zs_classify(b);  // (min, max, V, V of the derivative)
+    // Float rounding of the coefficients: values within `noise` of 0 are undecided.
+    if (step == 0) noise = float(8 * zs_DEGREE) * 1.2e-7 * max(abs(k.x), abs(k.y));
+    bool none = !(k.x <= noise && k.y >= -noise);  // also NaN (overflow): nothing to find
+    bool monotone = k.w == 0.0;
+    bool ends = (b[0] > 0.0) != (b[zs_DEGREE] > 0.0) || b[0] == 0.0 || b[zs_DEGREE] == 0.0;
+    bool oneSign = k.x > 0.0 || k.y < 0.0;  // within the noise of 0, but no sign change
+    // Monotone without a sign change: no root, and no touching either (the least |f| is at
+    // an end, which the neighbouring interval holds).
+    none = none || (monotone && !ends);
+    // One sign and not monotone: a minimum of |f| near 0 inside, i.e. f' has a root there (a
+    // tangency or a double root): subdivided like an undecided interval.
+    isolated = !none && (k.z == 1.0 || (monotone && !oneSign));
+    bool undecidable = !none && !isolated && size <= tolerance;  // a hit (header, 4.)
+    if (isolated) {
+      lo = u; hi = w; flo = b[0];
+      float fhi = b[zs_DEGREE];
+      x = fhi != flo ? clamp((u * fhi - w * flo) / (fhi - flo), u, w) : u;
+    } else if (undecidable) {
+      x = u + 0.5 * size; hi = w;
+    } else if (!none) {
+      size *= 0.5;  // the left half next
     } else {
-      vec4 k = zs_classify(b);  // (min, max, V, V of the derivative)
-      // Float rounding of the coefficients: values within `noise` of 0 are undecided.
-      if (step == 0) noise = float(8 * zs_DEGREE) * 1.2e-7 * max(abs(k.x), abs(k.y));
-      bool none = !(k.x <= noise && k.y >= -noise);  // also NaN (overflow): nothing to find
-      bool monotone = k.w == 0.0;
-      bool ends = (b[0] > 0.0) != (b[zs_DEGREE] > 0.0) || b[0] == 0.0 || b[zs_DEGREE] == 0.0;
-      bool oneSign = k.x > 0.0 || k.y < 0.0;  // within the noise of 0, but no sign change
-      // Monotone without a sign change: no root, and no touching either (the least |f| is
-      // at an end, which the neighbouring interval holds).
-      none = none || (monotone && !ends);
-      // One sign and not monotone: a minimum of |f| near 0 inside, i.e. f' has a root there
-      // (a tangency or a double root): subdivided like an undecided interval.
-      if (oneSign && !none) monotone = false;
-      float size = w - u;
-      if (!none && (k.z == 1.0 || monotone)) {  // exactly one root in [u, w]
-        refining = true;
-        lo = u; hi = w; flo = b[0];
-        float fhi = b[zs_DEGREE];
-        x = fhi != flo ? clamp((u * fhi - w * flo) / (fhi - flo), u, w) : u;
-        if (b[0] == 0.0) { x = u; done = true; found = true; }
-      } else if (!none && size <= tolerance) {  // undecidable at the tolerance: a hit
-        x = 0.5 * (u + w); hi = w;
-        done = true; found = true;
-      } else if (!none) {  // descend to the left half
-        ++level;
-        index *= 2;
-      } else {  // next interval to the right: climb while a right child, then the sibling
-        int next = index + 1;
-        int climb = (floatBitsToInt(float(next & -next)) >> 23) - 127;  // trailing zeros
-        level -= climb;
-        index = next >> climb;
-        done = level <= 0;
-      }
-      float scale = exp2(-float(level));
-      u = float(index) * scale;
-      w = float(index + 1) * scale;
+      // The next interval to the right starts at w; its size is that of the highest tree
+      // node starting there: 2^(trailing zeros of its index at this level) times this one.
+      int index = int(w / size + 0.5);
+      u = w;
+      size *= float(index & -index);
     }
+    found = isolated || undecidable;
+    done = done || found || u >= 1.0;
   } while (!done && ++step < RT_MAX_STEPS);
+
+  // Refinement of an isolated root: Newton steps safeguarded by bisection inside the bracket,
+  // on the power basis (Horner, far cheaper than a restriction), until a step is below stop.
+  // Its own loop: a Horner step is a fraction of an isolation step, and a shared loop body
+  // would pay for both on every iteration.
+  bool refining = isolated && b[0] != 0.0;
+  do {
+    if (refining) {  // the body runs once even for lanes with nothing to refine
+      vec2 f = zs_powerAt(c, 2.0 * x - 1.0);
+      float slope = 2.0 * f.y;  // df/ds
+      if ((f.x > 0.0) == (flo > 0.0) && f.x != 0.0) { lo = x; flo = f.x; } else { hi = x; }
+      float next = x - f.x / slope;
+      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      bool converged = f.x == 0.0 || abs(next - x) <= stop || hi - lo <= stop;
+      x = f.x == 0.0 ? x : next;
+      refining = refining && !converged;
+    }
+  } while (refining && ++step < RT_MAX_STEPS);
+  if (isolated && b[0] == 0.0) x = lo;
   tHit = ta + len * x;
   tAfter = ta + len * hi;
   return found;

@@ -206,9 +206,12 @@ std::string emitBernsteinKernelsGlsl(int d) {
   for (int k = 0; k <= d; ++k) s += "  " + idx("r", k) + " = " + left[std::size_t(k)][0] + ";\n";
   s += "}\n";
 
-  s += "\nfloat zs_bernsteinAt(" + arrayParam("b") + ", float r) {\n";
-  const auto rows = deCasteljau(s, "e", arrayNames("b", d), "r");
-  s += "  return " + rows[std::size_t(d)][0] + ";\n}\n";
+  // Horner on the power basis (the Taylor coefficients themselves, not a conversion of them):
+  // f and df/ds' at s' in [-1, 1] in 2D multiply-adds, for the refinement of an isolated root.
+  s += "\nvec2 zs_powerAt(" + arrayParam("c") + ", float x) {\n";
+  s += "  float f = " + idx("c", d) + ", df = 0.0;\n";
+  for (int k = d - 1; k >= 0; --k) s += "  df = df * x + f; f = f * x + " + idx("c", k) + ";\n";
+  s += "  return vec2(f, df);\n}\n\n";
 
   // Sign changes count b_i > 0 against b_i <= 0, so a zero coefficient never hides a root:
   // the hull test (min, max) decides emptiness, the counts only decide when to stop.

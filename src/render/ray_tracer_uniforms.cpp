@@ -55,7 +55,9 @@ int RayTracer::setUniforms(const RenderSettings& s, const Domain& domain, int wi
   glUniform1f(uniform("rtAmbient"), float(l.ambient));
   Vec3 dir = l.directional.direction;
   if (dir == Vec3{0, 0, 0}) dir = {0, 0, -1};  // a zero direction would normalize to NaN
-  vec3Uniform(uniform("rtDirLightDir"), dir);
+  const double dirLength = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+  // The shader wants the unit vector towards the light (normalized once, not per pixel).
+  vec3Uniform(uniform("rtDirLightTo"), Vec3{-dir[0] / dirLength, -dir[1] / dirLength, -dir[2] / dirLength});
   vec3Uniform(uniform("rtDirLight"), l.directional.color, l.directional.intensity);
   vec3Uniform(uniform("rtPointPos"), l.point.position);
   vec3Uniform(uniform("rtPointLight"), l.point.color, l.point.intensity);
