@@ -13,16 +13,17 @@
 //     stack: every visited interval is restricted from the segment's coefficients by de
 //     Casteljau, so nothing is kept per level. The first interval that holds a root holds
 //     the nearest one.
-//  3. The isolated root is refined by Newton steps safeguarded by bisection inside its
-//     bracket until a step is below tracing.epsilon / 16; f and f' come from the Taylor
-//     coefficients by Horner (2D multiply-adds, against D^2 for a restriction).
+//  3. The isolated root is refined from where the control polygon crosses 0 by Halley steps
+//     safeguarded by bisection inside its bracket until a step is below tracing.epsilon / 16;
+//     f, f' and f'' come from the Taylor coefficients by Horner (3D multiply-adds, against
+//     D^2 for a restriction).
 //  4. An interval narrower than the tangent tolerance (1e-5 of the domain diagonal) that
 //     still cannot be decided holds a root of even multiplicity, a cluster of roots, or a
 //     ray passing closer than that to the surface: it is a hit (a ray touching a sphere,
 //     the squared sphere (x^2+y^2+z^2-1)^2). Nothing that may hold a root is skipped.
 // llvmpipe runs every branch of a loop body for each group of pixels: the isolation loop's
 // body makes exactly one zs_restrict call, refinement has a loop of its own (sharing one
-// loop made every Newton step pay for a restriction), and loops are do-while (a for loop
+// loop made every refinement step pay for a restriction), and loops are do-while (a for loop
 // runs its body once more, masked, after its last iteration).
 
 uniform vec3 rtRootMin, rtRootMax;  // box of the octree's leaves (hierarchy root)
@@ -64,8 +65,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     bool undecidable = !none && !isolated && size <= tolerance;  // a hit (header, 4.)
     if (isolated) {
       lo = u; hi = w; flo = b[0];
-      float fhi = b[zs_DEGREE];
-      x = fhi != flo ? clamp((u * fhi - w * flo) / (fhi - flo), u, w) : u;
+      x = u + size * zs_firstCrossing(b);
     } else if (undecidable) {
       x = u + 0.5 * size; hi = w;
     } else if (!none) {
@@ -81,19 +81,24 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     done = done || found || u >= 1.0;
   } while (!done && ++step < RT_MAX_STEPS);
 
-  // Refinement of an isolated root: Newton steps safeguarded by bisection inside the bracket,
+  // Refinement of an isolated root: Halley steps safeguarded by bisection inside the bracket,
   // on the power basis (Horner, far cheaper than a restriction), until a step is below stop.
   // Its own loop: a Horner step is a fraction of an isolation step, and a shared loop body
   // would pay for both on every iteration.
   bool refining = isolated && b[0] != 0.0;
   do {
     if (refining) {  // the body runs once even for lanes with nothing to refine
-      vec2 f = zs_powerAt(c, 2.0 * x - 1.0);
-      float slope = 2.0 * f.y;  // df/ds
+      vec3 f = zs_powerAt(c, 2.0 * x - 1.0);  // in s' = 2s - 1
+      float slope = 2.0 * f.y, curve = 8.0 * f.z;  // df/ds, d2f/ds2
       if ((f.x > 0.0) == (flo > 0.0) && f.x != 0.0) { lo = x; flo = f.x; } else { hi = x; }
-      float next = x - f.x / slope;
-      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-      bool converged = f.x == 0.0 || abs(next - x) <= stop || hi - lo <= stop;
+      // Halley's step: cubic convergence where Newton's is quadratic, for one more Horner row.
+      float dx = 2.0 * f.x * slope / (2.0 * slope * slope - f.x * curve);
+      float next = x - dx;
+      // A step below stop has converged, even where it rounds onto the bracket's end
+      // (the bracket test alone would then bisect on and on).
+      bool converged = f.x == 0.0 || abs(dx) <= stop;
+      if (!(next > lo && next < hi)) next = converged ? clamp(next, lo, hi) : 0.5 * (lo + hi);
+      converged = converged || abs(next - x) <= stop || hi - lo <= stop;
       x = f.x == 0.0 ? x : next;
       refining = refining && !converged;
     }

@@ -207,11 +207,25 @@ std::string emitBernsteinKernelsGlsl(int d) {
   s += "}\n";
 
   // Horner on the power basis (the Taylor coefficients themselves, not a conversion of them):
-  // f and df/ds' at s' in [-1, 1] in 2D multiply-adds, for the refinement of an isolated root.
-  s += "\nvec2 zs_powerAt(" + arrayParam("c") + ", float x) {\n";
-  s += "  float f = " + idx("c", d) + ", df = 0.0;\n";
-  for (int k = d - 1; k >= 0; --k) s += "  df = df * x + f; f = f * x + " + idx("c", k) + ";\n";
-  s += "  return vec2(f, df);\n}\n\n";
+  // f, f' and f''/2 at s' in [-1, 1] in 3D multiply-adds, for the refinement of an isolated
+  // root (Halley's method).
+  s += "\nvec3 zs_powerAt(" + arrayParam("c") + ", float x) {\n";
+  s += "  float f = " + idx("c", d) + ", df = 0.0, h = 0.0;\n";
+  for (int k = d - 1; k >= 0; --k) {
+    s += "  h = h * x + df; df = df * x + f; f = f * x + " + idx("c", k) + ";\n";
+  }
+  s += "  return vec3(f, df, h);\n}\n\n";
+
+  // Where the control polygon first crosses 0 (in [0, 1]): the start of the refinement of an
+  // isolated root, far nearer to it than the chord of the ends when f bends. Scanned from the
+  // right so the leftmost crossing wins; one division.
+  s += "\nfloat zs_firstCrossing(" + arrayParam("b") + ") {\n";
+  s += "  float bi = " + idx("b", 0) + ", bj = " + idx("b", 1) + ", i = 0.0;\n";
+  for (int i = d - 1; i >= 0; --i) {
+    s += "  if ((" + idx("b", i) + " > 0.0) != (" + idx("b", i + 1) + " > 0.0)) { bi = " +
+         idx("b", i) + "; bj = " + idx("b", i + 1) + "; i = " + std::to_string(i) + ".0; }\n";
+  }
+  s += "  return clamp((i + (bi != bj ? bi / (bi - bj) : 0.0)) / float(zs_DEGREE), 0.0, 1.0);\n}\n";
 
   // Sign changes count b_i > 0 against b_i <= 0, so a zero coefficient never hides a root:
   // the hull test (min, max) decides emptiness, the counts only decide when to stop.

@@ -9,7 +9,8 @@
 //   bool zs_FPoly(vec3 p, vec3 v, out float c[zs_N]);        // power basis, c[k] of s^k
 //   void zs_toBernstein(float c[zs_N], out float b[zs_N]);   // Bernstein on [0, 1], s' = (s+1)/2
 //   void zs_restrict(float b[zs_N], float u, float w, out float r[zs_N]);  // to [u, w]
-//   vec2 zs_powerAt(float c[zs_N], float x);  // (f, df/ds) at s = x in [-1, 1], Horner
+//   vec3 zs_powerAt(float c[zs_N], float x);  // (f, f', f''/2) at s = x in [-1, 1], Horner
+//   float zs_firstCrossing(float b[zs_N]);    // first zero of the control polygon, in [0, 1]
 //   vec4 zs_classify(float b[zs_N]);  // (min, max, sign changes of b, of its derivative)
 //
 // zs_FPoly is truncated Taylor arithmetic: every node carries the coefficients of its own
