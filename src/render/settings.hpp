@@ -71,6 +71,11 @@ struct Materials {
 // kMaxBernsteinDegree, sampling otherwise.
 enum class TracingMethod { Auto, Bernstein, Sampling };
 
+// As tracing.method spells it in a scene (the schema's table lists them in this order).
+inline const char* tracingMethodName(TracingMethod m) {
+  return m == TracingMethod::Auto ? "auto" : m == TracingMethod::Bernstein ? "bernstein" : "sampling";
+}
+
 // Highest degree the Bernstein method takes in float (measured in docs/renderer.md).
 inline constexpr int kMaxBernsteinDegree = 20;
 

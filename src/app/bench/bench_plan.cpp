@@ -37,9 +37,15 @@ std::vector<BenchConfig> benchPlan(const BenchOptions& options) {
     for (int level = 3; level <= options.maxLevel; ++level)
       plan.push_back({s.number, level, kTable53Intervals, kTable52Epsilon});
   }
+  // The exact method beside it (intervals and epsilon are the sampling method's knobs; epsilon
+  // also ends bernstein's refinement, so it stays the thesis' recommended 0.001).
+  for (const ThesisSurface& s : kThesisSurfaces)
+    for (int level = 0; level <= options.maxLevel; ++level)
+      plan.push_back(
+          {s.number, level, kTable53Intervals, kTable52Epsilon, TracingMethod::Bernstein});
   const auto key = [](const BenchConfig& c) {
     // Larger epsilon first: the order the thesis' Table 5.3 lists its columns.
-    return std::make_tuple(c.surface, c.level, c.intervals, -c.epsilon);
+    return std::make_tuple(c.surface, int(c.method), c.level, c.intervals, -c.epsilon);
   };
   std::sort(plan.begin(), plan.end(),
             [&](const BenchConfig& a, const BenchConfig& b) { return key(a) < key(b); });

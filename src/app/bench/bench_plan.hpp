@@ -8,10 +8,14 @@
 // epsilon 0.001. The levels plan keeps only that last series, levels 0..maxLevel at 10
 // intervals / epsilon 0.001 (quick mode for CI uses it with levels 0-2): on a software
 // rasterizer a full frame can take a second, and the full plan is ~20 frames x 133 cells.
+// The thesis' cells are timed with the thesis' method (sampling); both plans add the levels
+// series once more with the exact method (bernstein, the default for polynomials), so the
+// two stand side by side.
 #include <string>
 #include <vector>
 
 #include "render/gl_context.hpp"
+#include "render/settings.hpp"
 
 namespace zs::bench {
 
@@ -35,11 +39,12 @@ struct BenchConfig {
   int level = 0;
   int intervals = 10;
   double epsilon = 0.001;
+  TracingMethod method = TracingMethod::Sampling;  // the thesis' tables are sampling's
 
   bool operator==(const BenchConfig&) const = default;
 };
 
-// Sorted by surface, then level, then intervals, then epsilon; no duplicates (the cell
+// Sorted by surface, then method, then level, then intervals, then epsilon; no duplicates (the cell
 // "10 intervals, epsilon 0.001" is in both thesis tables and is timed once).
 std::vector<BenchConfig> benchPlan(const BenchOptions& options);
 

@@ -61,6 +61,7 @@ struct GoalTally {
 void tallyThesisConfigs(const BenchResults& results, GoalTally& t) {
   for (const ConfigResult& r : results.configs) {
     const BenchConfig& c = r.config;
+    if (c.method != TracingMethod::Sampling) continue;  // the thesis' tables time its method
     const auto a = table52Fps(c.surface, c.level, c.intervals, c.epsilon);
     const auto b = table53Fps(c.surface, c.level, c.intervals, c.epsilon);
     if ((!a && !b) || !r.error.empty()) continue;
@@ -92,10 +93,26 @@ std::string goals(const BenchResults& results) {
                "thesis: %.2fx (%s).\n",
                t.atThesis, t.measured, verdict(t.atThesis == t.measured), t.worstRatio,
                t.worstRatioName.c_str());
+  // Issue 10's goals are the exact method's, with the scene defaults (level 1).
+  int exact = 0, exactAtGoal = 0;
+  double exactWorst = 0;
+  for (const ThesisSurface& s : kThesisSurfaces) {
+    const ConfigResult* r = findConfig(results, {s.number, 1, 10, 0.001, TracingMethod::Bernstein});
+    if (!r || !r->error.empty()) continue;
+    ++exact;
+    exactAtGoal += r->stats.fps() >= kGoalFps;
+    exactWorst = std::max(exactWorst, r->stats.medianMs);
+  }
+  if (exact > 0) {
+    md += format("- Default method (bernstein), level 1, at >= %.0f fps (issue 10): %d of %d - "
+                 "%s. Slowest frame: %.1f ms.\n",
+                 kGoalFps, exactAtGoal, exact, verdict(exactAtGoal == exact), exactWorst);
+  }
   int ok = 0, fast = 0, total = 0;
   double worst = 0;
   for (const FirstFrame& f : results.firstFrames) {
-    if (!f.error.empty()) continue;
+    // What a user waits for is the default method's first frame.
+    if (!f.error.empty() || f.method != TracingMethod::Bernstein) continue;
     ++total;
     ok += f.totalMs <= kIssueFirstFrameMs;
     fast += f.totalMs <= kGoalFirstFrameMs;
@@ -109,17 +126,27 @@ std::string goals(const BenchResults& results) {
 }
 
 std::string deepLevels(const BenchResults& results) {
-  std::string md = format("## Octree level 0..%d (10 intervals, epsilon 0.001)\n\n",
+  std::string md = format("## Octree level 0..%d, both methods (10 intervals, epsilon 0.001)\n\n",
                           results.options.maxLevel);
-  md += "| Surface | Level | Leaves | Spheres | Octree + spheres ms | Frame ms | fps |\n"
-        "|---|---:|---:|---:|---:|---:|---:|\n";
+  md += "| Surface | Level | Leaves | Spheres | Octree + spheres ms | sampling ms | fps | "
+        "bernstein ms | fps | bernstein speed-up |\n"
+        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  const auto ms = [](const ConfigResult* r) {
+    return r && r->error.empty() ? format("%.2f", r->stats.medianMs) : std::string("-");
+  };
   for (const ThesisSurface& s : kThesisSurfaces) {
     for (int level = 0; level <= results.options.maxLevel; ++level) {
       const ConfigResult* r = findConfig(results, {s.number, level, 10, 0.001});
-      if (!r) continue;
-      md += format("| %s | %d | %zu | %zu | %.2f | %.2f | %s |\n",
-                   level == 0 ? std::to_string(s.number).c_str() : "", level, r->leaves,
-                   r->spheres, r->octreeMs, r->stats.medianMs, fpsCell(r).c_str());
+      const ConfigResult* b =
+          findConfig(results, {s.number, level, 10, 0.001, TracingMethod::Bernstein});
+      const ConfigResult* any = r ? r : b;
+      if (!any) continue;
+      const bool both = r && b && r->error.empty() && b->error.empty() && b->stats.medianMs > 0;
+      md += format("| %s | %d | %zu | %zu | %.2f | %s | %s | %s | %s | %s |\n",
+                   level == 0 ? std::to_string(s.number).c_str() : "", level, any->leaves,
+                   any->spheres, any->octreeMs, ms(r).c_str(), fpsCell(r).c_str(),
+                   ms(b).c_str(), fpsCell(b).c_str(),
+                   both ? format("%.2fx", r->stats.medianMs / b->stats.medianMs).c_str() : "-");
     }
   }
   return md + "\n";
@@ -129,21 +156,22 @@ std::string firstFrames(const BenchResults& results) {
   std::string md =
       "## Time to first frame (level 1, 10 intervals, epsilon 0.001)\n\n"
       "Milliseconds. JIT estimate = first draw - the median frame of the same settings.\n\n"
-      "| Surface | Parse + gradient | Octree + spheres | Codegen | glslang | GL compile + link "
-      "| First draw | Total ms | JIT estimate |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+      "| Surface | Method | Parse + gradient | Octree + spheres | Codegen | glslang | GL compile "
+      "+ link | First draw | Total ms | JIT estimate |\n"
+      "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const FirstFrame& f : results.firstFrames) {
     if (!f.error.empty()) {
-      md += format("| %d | failed | | | | | | | |\n", f.surface);
+      md += format("| %d | %s | failed | | | | | | | |\n", f.surface, tracingMethodName(f.method));
       continue;
     }
     // The first draw is llvmpipe's JIT of the fragment shader plus one ordinary frame;
     // the same configuration's median frame time separates the two.
-    const ConfigResult* same = findConfig(results, {f.surface, 1, 10, 0.001});
+    const ConfigResult* same = findConfig(results, {f.surface, 1, 10, 0.001, f.method});
     const std::string jit = same && same->error.empty()
                                 ? format("%.0f", f.firstDrawMs - same->stats.medianMs)
                                 : std::string("-");
-    md += format("| %d | %.2f | %.2f | %.2f | %.2f | %.2f | %.1f | %.0f | %s |\n", f.surface,
-                 f.cpu.parseMs, f.cpu.octreeMs, f.cpu.codegenMs, f.cpu.validateMs,
+    md += format("| %d | %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.1f | %.0f | %s |\n", f.surface,
+                 tracingMethodName(f.method), f.cpu.parseMs, f.cpu.octreeMs, f.cpu.codegenMs, f.cpu.validateMs,
                  f.glCompileMs, f.firstDrawMs, f.totalMs, jit.c_str());
   }
   return md + "\n";
@@ -190,33 +218,81 @@ std::string markdownReport(const BenchResults& results) {
 
 std::string configCsv(const BenchResults& results) {
   std::string csv =
-      "surface,level,intervals,epsilon,width,height,frames,median_ms,min_ms,max_ms,fps,"
+      "surface,method,level,intervals,epsilon,width,height,frames,median_ms,min_ms,max_ms,fps,"
       "octree_ms,leaves,spheres,thesis_table52_fps,thesis_table53_fps,error\n";
   const auto opt = [](std::optional<int> v) { return v ? std::to_string(*v) : std::string(); };
   for (const ConfigResult& r : results.configs) {
     const BenchConfig& c = r.config;
     std::string error = r.error.substr(0, r.error.find('\n'));
     std::replace(error.begin(), error.end(), ',', ';');
-    csv += format("%d,%d,%d,%s,%d,%d,%d,%.3f,%.3f,%.3f,%.2f,%.3f,%zu,%zu,%s,%s,%s\n",
-                  c.surface, c.level, c.intervals, formatEpsilon(c.epsilon).c_str(),
+    const bool thesis = c.method == TracingMethod::Sampling;
+    csv += format("%d,%s,%d,%d,%s,%d,%d,%d,%.3f,%.3f,%.3f,%.2f,%.3f,%zu,%zu,%s,%s,%s\n",
+                  c.surface, tracingMethodName(c.method), c.level, c.intervals, formatEpsilon(c.epsilon).c_str(),
                   results.options.width, results.options.height, r.stats.frames,
                   r.stats.medianMs, r.stats.minMs, r.stats.maxMs, r.stats.fps(), r.octreeMs,
                   r.leaves, r.spheres,
-                  opt(table52Fps(c.surface, c.level, c.intervals, c.epsilon)).c_str(),
-                  opt(table53Fps(c.surface, c.level, c.intervals, c.epsilon)).c_str(),
+                  thesis ? opt(table52Fps(c.surface, c.level, c.intervals, c.epsilon)).c_str() : "",
+                  thesis ? opt(table53Fps(c.surface, c.level, c.intervals, c.epsilon)).c_str() : "",
                   error.c_str());
   }
   return csv;
 }
 
 std::string firstFrameCsv(const BenchResults& results) {
-  std::string csv = "surface,parse_ms,octree_ms,codegen_ms,glslang_ms,gl_compile_ms,"
+  std::string csv = "surface,method,parse_ms,octree_ms,codegen_ms,glslang_ms,gl_compile_ms,"
                     "first_draw_ms,total_ms,error\n";
   for (const FirstFrame& f : results.firstFrames)
-    csv += format("%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%s\n", f.surface, f.cpu.parseMs,
+    csv += format("%d,%s,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%s\n", f.surface,
+                  tracingMethodName(f.method), f.cpu.parseMs,
                   f.cpu.octreeMs, f.cpu.codegenMs, f.cpu.validateMs, f.glCompileMs,
                   f.firstDrawMs, f.totalMs, f.error.empty() ? "" : "failed");
   return csv;
+}
+
+std::string inputMarkdownReport(const InputBenchResults& results) {
+  const BenchOptions& o = results.options;
+  const Scene& scene = results.scene;
+  std::string md = "# zeroset bench: " + scene.formula + "\n\n";
+  md += format("- Device: %s, %u CPU threads\n", results.device.c_str(), results.cpuThreads);
+  md += format("- Frames: %dx%d, median of %d glFinish-timed full-frame draws after %d warm-up "
+               "draws; fps = 1000 / median ms\n",
+               o.width, o.height, o.frames, o.warmup);
+  md += format("- Scene: octree level %d, reflection %s, %d x %d rays per pixel, epsilon %s "
+               "(sampling: %d intervals)\n",
+               scene.octree.level, scene.render.reflection.enabled ? "on" : "off",
+               scene.render.samples, scene.render.samples,
+               formatEpsilon(scene.render.tracing.epsilon).c_str(),
+               scene.render.tracing.intervals);
+  md += format("- First frame: parse to the first frame's pixels, shader cache %s "
+               "(MESA_SHADER_CACHE_DISABLE=%s)\n\n",
+               results.shaderCache == "true" ? "cold" : "as configured",
+               results.shaderCache.c_str());
+  md += "| Method | Median ms | fps | Min ms | Max ms | First frame ms | of which first draw "
+        "| Leaves |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  const MethodResult* exact = nullptr;
+  const MethodResult* sampled = nullptr;
+  for (const MethodResult& r : results.methods) {
+    const char* name = tracingMethodName(r.method);
+    if (!r.error.empty()) {
+      md += format("| %s | failed | | | | | | |\n", name);
+    } else if (!r.skipped.empty()) {
+      md += format("| %s | not used: see below | | | | | | |\n", name);
+    } else {
+      md += format("| %s | %.2f | %.1f | %.2f | %.2f | %.0f | %.0f | %zu |\n", name,
+                   r.stats.medianMs, r.stats.fps(), r.stats.minMs, r.stats.maxMs,
+                   r.first.totalMs, r.first.firstDrawMs, r.leaves);
+      (r.method == TracingMethod::Bernstein ? exact : sampled) = &r;
+    }
+  }
+  md += "\n";
+  if (exact && sampled && exact->stats.medianMs > 0)
+    md += format("bernstein is %.2fx the speed of sampling on this scene.\n",
+                 sampled->stats.medianMs / exact->stats.medianMs);
+  for (const MethodResult& r : results.methods) {
+    if (!r.skipped.empty()) md += r.skipped + "\n";
+    if (!r.error.empty()) md += format("%s failed: %s\n", tracingMethodName(r.method), r.error.c_str());
+  }
+  return md;
 }
 
 }  // namespace zs::bench

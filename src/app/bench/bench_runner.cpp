@@ -46,6 +46,7 @@ FirstFrame measureFirstFrame(int number, const Scene& scene, RayTracer& tracer,
                              std::optional<app::PreparedSurface>& prepared) {
   FirstFrame ff;
   ff.surface = number;
+  ff.method = scene.render.tracing.method;
   const auto start = Clock::now();
   auto result = app::prepareSurface(scene);
   if (auto* err = std::get_if<std::string>(&result)) {
@@ -53,6 +54,7 @@ FirstFrame measureFirstFrame(int number, const Scene& scene, RayTracer& tracer,
     return ff;
   }
   prepared = std::get<app::PreparedSurface>(std::move(result));
+  ff.method = prepared->method;
   ff.cpu = prepared->times;
   auto t = Clock::now();
   std::string log;
@@ -127,9 +129,10 @@ void benchSurface(const app::PreparedSurface& surface, Scene scene,
     ++done;
     if (r.error.empty()) {
       std::fprintf(stderr,
-                   "[%zu/%zu] surface %d, level %d, %d intervals, epsilon %s: %.2f ms median "
-                   "(%.1f fps), %zu leaves\n",
-                   done, total, config.surface, config.level, config.intervals,
+                   "[%zu/%zu] surface %d, %s, level %d, %d intervals, epsilon %s: %.2f ms "
+                   "median (%.1f fps), %zu leaves\n",
+                   done, total, config.surface, tracingMethodName(config.method), config.level,
+                   config.intervals,
                    formatEpsilon(config.epsilon).c_str(), r.stats.medianMs, r.stats.fps(),
                    r.leaves);
     } else {
@@ -137,6 +140,32 @@ void benchSurface(const app::PreparedSurface& surface, Scene scene,
                    config.surface, config.level, r.error.c_str());
     }
   }
+}
+
+// The measuring context: llvmpipe JIT-compiles at the first draw, and a warm Mesa disk cache
+// would hide that cost from the time to first frame (an explicit setting in the environment
+// is respected). Returns the context, or nothing with `error` set.
+std::unique_ptr<GlContext> openBenchContext(const BenchOptions& options,
+                                            std::string& shaderCache, std::string& device,
+                                            double& contextMs, std::string& error) {
+  setenv("MESA_SHADER_CACHE_DISABLE", "true", 0);
+  shaderCache = std::getenv("MESA_SHADER_CACHE_DISABLE");
+  const auto start = Clock::now();
+  ContextResult ctx = createHeadlessContext(options.backend);
+  if (!ctx.context) {
+    error = ctx.error;
+    return nullptr;
+  }
+  contextMs = msSince(start);
+  device = GlContext::describeCurrent();
+  return std::move(ctx.context);
+}
+
+// One-time driver start-up (LLVM initialisation, the vertex stage, the render target) is
+// paid once per process, not per formula: pay it on a sphere nobody measures.
+void payDriverStartUp(RayTracer& tracer, const BenchOptions& options) {
+  std::optional<app::PreparedSurface> unused;
+  measureFirstFrame(0, sceneFor("x^2 + y^2 + z^2 - 1", options), tracer, unused);
 }
 
 }  // namespace
@@ -155,54 +184,83 @@ BenchResults runBench(const BenchOptions& options, const std::vector<BenchConfig
   BenchResults results;
   results.options = options;
   results.cpuThreads = std::thread::hardware_concurrency();
-  // llvmpipe JIT-compiles at the first draw; a warm Mesa disk cache would hide that cost
-  // from the time to first frame. An explicit setting in the environment is respected.
-  setenv("MESA_SHADER_CACHE_DISABLE", "true", 0);
-  results.shaderCache = std::getenv("MESA_SHADER_CACHE_DISABLE");
-
-  auto start = Clock::now();
-  ContextResult ctx = createHeadlessContext(options.backend);
-  if (!ctx.context) {
-    results.error = ctx.error;
-    return results;
-  }
-  results.contextMs = msSince(start);
-  results.device = GlContext::describeCurrent();
+  auto context = openBenchContext(options, results.shaderCache, results.device,
+                                  results.contextMs, results.error);
+  if (!context) return results;
+  RayTracer tracer;
+  payDriverStartUp(tracer, options);
   std::fprintf(stderr, "bench: %s, %dx%d, %d frames after %d warm-up, %zu configurations\n",
                results.device.c_str(), options.width, options.height, options.frames,
                options.warmup, plan.size());
 
-  RayTracer tracer;
-  {
-    // One-time driver start-up (LLVM initialisation, the vertex stage, the render target)
-    // is paid once per process, not per formula: pay it on a sphere nobody measures.
-    std::optional<app::PreparedSurface> unused;
-    measureFirstFrame(0, sceneFor("x^2 + y^2 + z^2 - 1", options), tracer, unused);
-  }
-
   std::size_t done = 0;
   for (const ThesisSurface& surface : kThesisSurfaces) {
-    std::vector<BenchConfig> configs;
-    for (const BenchConfig& c : plan)
-      if (c.surface == surface.number) configs.push_back(c);
-    const Scene scene = sceneFor(surface.formula, options);
-    std::optional<app::PreparedSurface> prepared;
-    FirstFrame ff = measureFirstFrame(surface.number, scene, tracer, prepared);
-    results.firstFrames.push_back(ff);
-    if (!ff.error.empty()) {
-      std::fprintf(stderr, "surface %d: FAILED before its first frame:\n%s\n", surface.number,
-                   ff.error.c_str());
-      for (const BenchConfig& c : configs) results.configs.push_back({c, {}, 0, 0, 0, ff.error});
-      done += configs.size();
-      continue;
+    for (TracingMethod method : {TracingMethod::Sampling, TracingMethod::Bernstein}) {
+      std::vector<BenchConfig> configs;
+      for (const BenchConfig& c : plan)
+        if (c.surface == surface.number && c.method == method) configs.push_back(c);
+      if (configs.empty()) continue;
+      Scene scene = sceneFor(surface.formula, options);
+      scene.render.tracing.method = method;
+      std::optional<app::PreparedSurface> prepared;
+      FirstFrame ff = measureFirstFrame(surface.number, scene, tracer, prepared);
+      if (ff.error.empty() && ff.method != method) ff.error = prepared->methodWarning;
+      results.firstFrames.push_back(ff);
+      if (!ff.error.empty()) {
+        std::fprintf(stderr, "surface %d (%s): FAILED before its first frame:\n%s\n",
+                     surface.number, tracingMethodName(method), ff.error.c_str());
+        for (const BenchConfig& c : configs) results.configs.push_back({c, {}, 0, 0, 0, ff.error});
+        done += configs.size();
+        continue;
+      }
+      std::fprintf(stderr,
+                   "surface %d (%s), %s: first frame after %.0f ms (CPU %.1f, GL compile "
+                   "%.1f, first draw %.1f)\n",
+                   surface.number, std::string(surface.formula).c_str(),
+                   tracingMethodName(method), ff.totalMs,
+                   ff.cpu.parseMs + ff.cpu.octreeMs + ff.cpu.codegenMs + ff.cpu.validateMs,
+                   ff.glCompileMs, ff.firstDrawMs);
+      benchSurface(*prepared, scene, configs, options, tracer, results, done, plan.size());
     }
-    std::fprintf(stderr,
-                 "surface %d (%s): first frame after %.0f ms (CPU %.1f, GL compile %.1f, "
-                 "first draw %.1f)\n",
-                 surface.number, std::string(surface.formula).c_str(), ff.totalMs,
-                 ff.cpu.parseMs + ff.cpu.octreeMs + ff.cpu.codegenMs + ff.cpu.validateMs,
-                 ff.glCompileMs, ff.firstDrawMs);
-    benchSurface(*prepared, scene, configs, options, tracer, results, done, plan.size());
+  }
+  return results;
+}
+
+InputBenchResults runInputBench(const Scene& input, const BenchOptions& options) {
+  InputBenchResults results;
+  results.options = options;
+  results.scene = input;
+  results.cpuThreads = std::thread::hardware_concurrency();
+  double contextMs = 0;
+  auto context = openBenchContext(options, results.shaderCache, results.device, contextMs,
+                                  results.error);
+  if (!context) return results;
+  RayTracer tracer;
+  payDriverStartUp(tracer, options);
+  // Sampling first: where bernstein falls back to sampling, its shader is then sampling's
+  // and compiles warm, and the sampling row keeps the cold first frame.
+  for (TracingMethod method : {TracingMethod::Sampling, TracingMethod::Bernstein}) {
+    MethodResult r;
+    r.method = method;
+    Scene scene = input;
+    scene.width = options.width;
+    scene.height = options.height;
+    scene.render.tracing.method = method;
+    std::fprintf(stderr, "bench: %s, first frame...\n", tracingMethodName(method));
+    std::optional<app::PreparedSurface> prepared;
+    r.first = measureFirstFrame(0, scene, tracer, prepared);
+    if (!r.first.error.empty()) {
+      r.error = r.first.error;
+    } else if (prepared->method != method) {
+      r.skipped = prepared->methodWarning;  // e.g. not a polynomial: sampling only
+      while (!r.skipped.empty() && r.skipped.back() == '\n') r.skipped.pop_back();
+    } else {
+      r.leaves = prepared->octree.leaves.size();
+      std::fprintf(stderr, "bench: %s, %d frames...\n", tracingMethodName(method),
+                   options.warmup + options.frames);
+      r.stats = timeFrames(tracer, scene, options, r.error);
+    }
+    results.methods.push_back(r);
   }
   return results;
 }

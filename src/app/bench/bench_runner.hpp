@@ -11,6 +11,7 @@
 
 #include "app/bench/bench_plan.hpp"
 #include "app/pipeline.hpp"
+#include "scene/scene.hpp"
 
 namespace zs::bench {
 
@@ -19,6 +20,7 @@ namespace zs::bench {
 // JIT-compiles the fragment shader at the first draw, so firstDrawMs holds the JIT.
 struct FirstFrame {
   int surface = 0;
+  TracingMethod method = TracingMethod::Sampling;  // as resolved for the formula
   app::StageTimes cpu;  // parse (+ gradient), octree (+ spheres), codegen, glslang
   double glCompileMs = 0;
   double firstDrawMs = 0;
@@ -56,5 +58,27 @@ struct BenchResults {
 double median(std::vector<double> values);
 
 BenchResults runBench(const BenchOptions& options, const std::vector<BenchConfig>& plan);
+
+// `zeroset bench INPUT`: one scene (a formula or a .surf, with its own octree level and
+// settings) timed with each tracing method at options' size.
+struct MethodResult {
+  TracingMethod method = TracingMethod::Sampling;
+  std::string skipped;  // why this method was not timed (not a polynomial, ...); "" if it was
+  FirstFrame first;     // cold shader cache: what a user waits for after typing the formula
+  FrameStats stats;
+  std::size_t leaves = 0;
+  std::string error;
+};
+
+struct InputBenchResults {
+  BenchOptions options;
+  std::string device, shaderCache;
+  unsigned cpuThreads = 0;
+  Scene scene;
+  std::vector<MethodResult> methods;  // sampling, then bernstein
+  std::string error;                  // non-empty: no GL context, nothing was measured
+};
+
+InputBenchResults runInputBench(const Scene& scene, const BenchOptions& options);
 
 }  // namespace zs::bench
