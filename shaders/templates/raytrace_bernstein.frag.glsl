@@ -39,19 +39,19 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
 
   float tolerance = rtTangentTolerance / len;  // in units of s
   float stop = rtEpsilon / (16.0 * len);
-  bool done = !defined || !(len > 0.0), found = false, isolated = false;
-  float u = 0.0, size = 1.0;            // the tree interval [u, u + size] being classified
-  float noise = 0.0;                    // rounding bound of the coefficients (first step)
-  float lo = 0.0, hi = 1.0, flo = 0.0;  // bracket of an isolated root and f(lo)
-  float x = 0.5;                        // the root (estimate)
+  bool valid = defined && len > 0.0;
+  bool done = !valid, found = false, isolated = false;
+  float u = 0.0, size = 1.0;  // the tree interval [u, u + size] being classified
+  // Float rounding of the coefficients: values within `noise` of 0 are undecided.
+  float noise = float(8 * zs_DEGREE) * 1.2e-7 * zs_maxAbs(b0);
   int step = 0;
-  // Isolation: the first interval of the tree, left to right, that holds a root.
+  // Isolation: the first interval of the tree, left to right, that holds a root. The body is
+  // kept to what every step needs (llvmpipe runs all of it for every group of pixels); what
+  // the interval found needs is computed after the loop.
   do {
     float w = u + size;
     zs_restrict(b0, u, w, b);
     vec4 k = zs_classify(b);  // (min, max, V, V of the derivative)
-    // Float rounding of the coefficients: values within `noise` of 0 are undecided.
-    if (step == 0) noise = float(8 * zs_DEGREE) * 1.2e-7 * max(abs(k.x), abs(k.y));
     bool none = !(k.x <= noise && k.y >= -noise);  // also NaN (overflow): nothing to find
     bool monotone = k.w == 0.0;
     bool ends = (b[0] > 0.0) != (b[zs_DEGREE] > 0.0) || b[0] == 0.0 || b[zs_DEGREE] == 0.0;
@@ -63,23 +63,21 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     // tangency or a double root): subdivided like an undecided interval.
     isolated = !none && (k.z == 1.0 || (monotone && !oneSign));
     bool undecidable = !none && !isolated && size <= tolerance;  // a hit (header, 4.)
-    if (isolated) {
-      lo = u; hi = w; flo = b[0];
-      x = u + size * zs_firstCrossing(b);
-    } else if (undecidable) {
-      x = u + 0.5 * size; hi = w;
-    } else if (!none) {
-      size *= 0.5;  // the left half next
-    } else {
-      // The next interval to the right starts at w; its size is that of the highest tree
-      // node starting there: 2^(trailing zeros of its index at this level) times this one.
-      int index = int(w / size + 0.5);
-      u = w;
-      size *= float(index & -index);
-    }
-    found = isolated || undecidable;
+    found = valid && (isolated || undecidable);
+    // Next: the left half of an undecided interval; after one with no root, the interval to
+    // the right, which starts at w and is as large as the highest tree node starting there:
+    // 2^(trailing zeros of its index at this level) times this one.
+    int index = int(w / size + 0.5);
+    float climbed = size * float(index & -index);
+    u = none ? w : u;
+    size = found ? size : (none ? climbed : 0.5 * size);
     done = done || found || u >= 1.0;
   } while (!done && ++step < RT_MAX_STEPS);
+  isolated = isolated && found;
+  float lo = u, hi = u + size, flo = b[0];  // bracket of the root found, and f(lo)
+  // An isolated root starts its refinement where the control polygon crosses 0; an
+  // undecidable interval's hit is its middle.
+  float x = isolated ? u + size * zs_firstCrossing(b) : u + 0.5 * size;
 
   // Refinement of an isolated root: Halley steps safeguarded by bisection inside the bracket,
   // on the power basis (Horner, far cheaper than a restriction), until a step is below stop.

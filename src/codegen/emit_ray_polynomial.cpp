@@ -216,6 +216,10 @@ std::string emitBernsteinKernelsGlsl(int d) {
   }
   s += "  return vec3(f, df, h);\n}\n\n";
 
+  s += "\nfloat zs_maxAbs(" + arrayParam("b") + ") {\n  float m = abs(" + idx("b", 0) + ");\n";
+  for (int i = 1; i <= d; ++i) s += "  m = max(m, abs(" + idx("b", i) + "));\n";
+  s += "  return m;\n}\n";
+
   // Where the control polygon first crosses 0 (in [0, 1]): the start of the refinement of an
   // isolated root, far nearer to it than the chord of the ends when f bends. Scanned from the
   // right so the leftmost crossing wins; one division.

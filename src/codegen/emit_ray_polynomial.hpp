@@ -11,6 +11,7 @@
 //   void zs_restrict(float b[zs_N], float u, float w, out float r[zs_N]);  // to [u, w]
 //   vec3 zs_powerAt(float c[zs_N], float x);  // (f, f', f''/2) at s = x in [-1, 1], Horner
 //   float zs_firstCrossing(float b[zs_N]);    // first zero of the control polygon, in [0, 1]
+//   float zs_maxAbs(float b[zs_N]);           // largest |coefficient|
 //   vec4 zs_classify(float b[zs_N]);  // (min, max, sign changes of b, of its derivative)
 //
 // zs_FPoly is truncated Taylor arithmetic: every node carries the coefficients of its own
