@@ -26,8 +26,6 @@
 // loop made every refinement step pay for a restriction), and loops are do-while (a for loop
 // runs its body once more, masked, after its last iteration).
 
-uniform vec3 rtRootMin, rtRootMax;  // box of the octree's leaves (hierarchy root)
-uniform float rtPad;                // widens it by the float slack of the hierarchy
 
 const int RT_MAX_STEPS = 160;  // safety bound on isolation + refinement steps per segment
 
@@ -37,8 +35,8 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   bool defined = zs_FPoly(o + (0.5 * (ta + tb)) * d, (0.5 * len) * d, c);
   zs_toBernstein(c, b0);
 
-  float tolerance = rtTangentTolerance / len;  // in units of s
-  float stop = rtEpsilon / (16.0 * len);
+  float tolerance = rt.tangentTolerance / len;  // in units of s
+  float stop = rt.epsilon / (16.0 * len);
   bool valid = defined && len > 0.0;
   bool done = !valid, found = false, isolated = false;
   float u = 0.0, size = 1.0;  // the tree interval [u, u + size] being classified
@@ -111,8 +109,8 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
             out vec4 hitG[RT_MAX_HITS]) {
   for (int m = 0; m < RT_MAX_HITS; ++m) { hitT[m] = 0.0; hitG[m] = vec4(0.0); }
   vec3 inv = safeInverse(d);
-  vec2 dom = slab(rtDomainMin, rtDomainMax, o, inv);
-  vec2 box = slab(rtRootMin - rtPad, rtRootMax + rtPad, o, inv);
+  vec2 dom = slab(rt.domainMin, rt.domainMax, o, inv);
+  vec2 box = slab(rt.rootMin - rt.pad, rt.rootMax + rt.pad, o, inv);
   float t = max(max(dom.x, box.x), tStart), tEnd = min(dom.y, box.y);
   int found = 0;
 #if RT_MAX_HITS == 1
@@ -133,7 +131,7 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
     }
     ++found;
     // Past the tolerance too: a restart right at a root could find that root again.
-    t = max(max(tAfter, tHit + rtTangentTolerance), t + 1e-6 * (tEnd - t));
+    t = max(max(tAfter, tHit + rt.tangentTolerance), t + 1e-6 * (tEnd - t));
   }
 #endif
   return found;

@@ -9,21 +9,7 @@
 // indexed by a run-time value: llvmpipe keeps constant-indexed arrays in registers but
 // spills dynamically indexed ones to memory.
 
-uniform vec3 rtDomainMin, rtDomainMax;
-uniform vec2 rtResolution;  // full image size in pixels (tiles only restrict the scissor)
-uniform vec3 rtEye, rtForward, rtRight, rtUp;
-uniform float rtPlaneHalf;  // tan(fov_y/2), or height/2 when orthographic
-uniform bool rtOrtho;
-uniform int rtMaxBisections;
-uniform float rtEpsilon;
-uniform float rtTangentTolerance;  // 1e-5 of the domain diagonal (docs/renderer.md)
-uniform float rtAmbient;
-uniform vec3 rtDirLightTo, rtDirLight, rtPointPos, rtPointLight;  // lights: color*intensity
-uniform vec3 rtFrontColor, rtBackColor;
-uniform vec2 rtFrontPhong, rtBackPhong;  // (specular, shininess)
-uniform bool rtSilhouetteOn, rtBorderOn;
-uniform float rtSilhouetteThreshold, rtBorderThreshold, rtPrimaryWeight, rtOpacity;
-uniform vec3 rtSilhouetteColor, rtBorderColor, rtBackground;
+// The frame's parameters arrive as the flat varyings `rt` (frame_params.glsl, before this file).
 
 layout(location = 0) out vec4 rtOutColor;
 layout(location = 1) out float rtOutDepth;
@@ -73,30 +59,30 @@ vec3 shade(vec3 p, vec4 g, vec3 rd) {
   float cosine = dot(g.xyz, rd) * inv;
   bool front = cosine < 0.0;
   vec3 n = g2 > 0.0 ? g.xyz * (front ? inv : -inv) : -rd;
-  vec2 phong = front ? rtFrontPhong : rtBackPhong;
-  vec3 L0 = rtDirLightTo;  // towards the directional light, unit length
-  vec3 L1 = normalize(rtPointPos - p);
+  vec2 phong = front ? rt.frontPhong : rt.backPhong;
+  vec3 L0 = rt.dirLightTo;  // towards the directional light, unit length
+  vec3 L1 = normalize(rt.pointPos - p);
   float nl0 = dot(n, L0), nl1 = dot(n, L1);
-  vec3 diffuse = vec3(rtAmbient) + rtDirLight * max(nl0, 0.0) + rtPointLight * max(nl1, 0.0);
-  vec3 specular = rtDirLight * phongSpecular(n, L0, nl0, rd, phong) +
-                  rtPointLight * phongSpecular(n, L1, nl1, rd, phong);
-  vec3 color = (front ? rtFrontColor : rtBackColor) * diffuse + specular;
-  if (rtSilhouetteOn && abs(cosine) < rtSilhouetteThreshold) color = rtSilhouetteColor;
-  vec3 border = min(p - rtDomainMin, rtDomainMax - p);
-  if (rtBorderOn && min(min(border.x, border.y), border.z) < rtBorderThreshold)
-    color = rtBorderColor;
+  vec3 diffuse = vec3(rt.ambient) + rt.dirLight * max(nl0, 0.0) + rt.pointLight * max(nl1, 0.0);
+  vec3 specular = rt.dirLight * phongSpecular(n, L0, nl0, rd, phong) +
+                  rt.pointLight * phongSpecular(n, L1, nl1, rd, phong);
+  vec3 color = (front ? rt.frontColor : rt.backColor) * diffuse + specular;
+  if ((rt.silhouetteOn != 0) && abs(cosine) < rt.silhouetteThreshold) color = rt.silhouetteColor;
+  vec3 border = min(p - rt.domainMin, rt.domainMax - p);
+  if ((rt.borderOn != 0) && min(min(border.x, border.y), border.z) < rt.borderThreshold)
+    color = rt.borderColor;
   return clamp(color, 0.0, 1.0);
 }
 
 void main() {
   // Pixel (i, j) from the top-left of the full image (docs/camera.md).
-  vec2 pixel = vec2(gl_FragCoord.x - 0.5, rtResolution.y - gl_FragCoord.y - 0.5);
+  vec2 pixel = vec2(gl_FragCoord.x - 0.5, rt.resolution.y - gl_FragCoord.y - 0.5);
   const int n = RT_SAMPLES, grid = n * n;
   // Depth comes from the pixel-center ray; an even N x N grid has none, so one more ray
   // (depth only) is traced there.
   const int rays = grid + (n % 2 == 0 ? 1 : 0), centerRay = n % 2 == 0 ? grid : grid / 2;
   const int passes = RT_REFLECTION != 0 ? 2 : 1;
-  float alpha = clamp(rtOpacity, 0.0, 1.0), w = RT_REFLECTION != 0 ? rtPrimaryWeight : 1.0;
+  float alpha = clamp(rt.opacity, 0.0, 1.0), w = RT_REFLECTION != 0 ? rt.primaryWeight : 1.0;
   float depth = uintBitsToFloat(0x7F800000u);  // +inf: no hit
   vec3 sum = vec3(0.0);
 
@@ -106,10 +92,10 @@ void main() {
   do {
     vec2 offset = s < grid ? (vec2(s % n, s / n) + 0.5) / float(n) - 0.5 : vec2(0.0);
     vec2 q = pixel + offset + 0.5;
-    vec2 uv = vec2((2.0 * q.x / rtResolution.x - 1.0) * rtResolution.x / rtResolution.y,
-                   1.0 - 2.0 * q.y / rtResolution.y) * rtPlaneHalf;
-    vec3 ro = rtOrtho ? rtEye + uv.x * rtRight + uv.y * rtUp : rtEye;
-    vec3 rd = rtOrtho ? rtForward : normalize(rtForward + uv.x * rtRight + uv.y * rtUp);
+    vec2 uv = vec2((2.0 * q.x / rt.resolution.x - 1.0) * rt.resolution.x / rt.resolution.y,
+                   1.0 - 2.0 * q.y / rt.resolution.y) * rt.planeHalf;
+    vec3 ro = (rt.ortho != 0) ? rt.eye + uv.x * rt.right + uv.y * rt.up : rt.eye;
+    vec3 rd = (rt.ortho != 0) ? rt.forward : normalize(rt.forward + uv.x * rt.right + uv.y * rt.up);
     bool colorRay = s < grid;
     vec3 color = vec3(0.0);
     float firstT = -1.0;
@@ -127,7 +113,7 @@ void main() {
         vec3 nrm = length(firstG.xyz) > 0.0 ? normalize(firstG.xyz) : -rd;
         o = ro + firstT * rd;
         d = reflect(rd, dot(nrm, rd) < 0.0 ? nrm : -nrm);
-        tStart = max(4.0 * rtEpsilon, 1e-4 * length(rtDomainMax - rtDomainMin));  // leave the surface
+        tStart = max(4.0 * rt.epsilon, 1e-4 * length(rt.domainMax - rt.domainMin));  // leave the surface
         passAlpha = 1.0; passScale = alpha * (1.0 - w); wanted = 1;
       }
       float hitT[RT_MAX_HITS];
@@ -157,7 +143,7 @@ void main() {
         transmit *= 1.0 - passAlpha;
       }
 #endif
-      color += passScale * transmit * rtBackground;  // what the kept hits let through
+      color += passScale * transmit * rt.background;  // what the kept hits let through
     } while (++pass < passes && colorRay && firstT >= 0.0);
     if (s == centerRay && firstT >= 0.0) depth = firstT;
     if (colorRay) sum += color;

@@ -10,11 +10,6 @@
 // the box as 16-bit corners on a 2^14 grid over the root box, w = escape << 1 | isLeaf.
 // One fetch per visited node: on llvmpipe fetches, not arithmetic, bound the traversal.
 uniform usamplerBuffer rtHierarchy;
-uniform int rtNodeCount, rtFirstNode;
-uniform vec3 rtRootMin, rtRootMax, rtCell;  // root box = grid extent; cell size
-uniform float rtPad;
-uniform int rtIntervals;
-uniform bool rtTangentRoots;
 
 const int RT_SEGS = 8;         // leaf segments per ray; overflow widens the farthest
 const int RT_MAX_EVALS = 4096; // safety bound on F evaluations per ray
@@ -25,10 +20,10 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
   int found = 0;
   for (int m = 0; m < RT_MAX_HITS; ++m) { hitT[m] = 0.0; hitG[m] = vec4(0.0); }
   vec3 inv = safeInverse(d);
-  vec2 dom = slab(rtDomainMin, rtDomainMax, o, inv);
+  vec2 dom = slab(rt.domainMin, rt.domainMax, o, inv);
   // The root box holds every leaf: clipping to it here makes fetching the root (node 0)
-  // unnecessary when it is an inner node (rtFirstNode = 1).
-  vec2 root = slab(rtRootMin - rtPad, rtRootMax + rtPad, o, inv);
+  // unnecessary when it is an inner node (rt.firstNode = 1).
+  vec2 root = slab(rt.rootMin - rt.pad, rt.rootMax + rt.pad, o, inv);
   dom = vec2(max(max(dom.x, root.x), tStart), min(dom.y, root.y));
 
   // Gather: stackless walk (pre-order + escape); each leaf's [t0, t1], clipped to the
@@ -40,7 +35,7 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
   for (int m = 0; m < RT_SEGS; ++m) { segA[m] = INF; segB[m] = -INF; segN[m] = 0.0; }
   // The walk to the next leaf hit is its own light loop (llvmpipe would otherwise run
   // the insertion, masked, at every node visited).
-  int count = dom.x <= dom.y ? rtNodeCount : 0, i = rtFirstNode;
+  int count = dom.x <= dom.y ? rt.nodeCount : 0, i = rt.firstNode;
   while (i < count) {
     float a = 0.0, b = 0.0;
     bool leafHit = false;
@@ -48,7 +43,7 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
       uvec4 node = texelFetch(rtHierarchy, i);
       vec3 qlo = vec3(node.x & 0xFFFFu, node.x >> 16u, node.y & 0xFFFFu);
       vec3 qhi = vec3(node.y >> 16u, node.z & 0xFFFFu, node.z >> 16u);
-      vec2 tt = slab(rtRootMin + qlo * rtCell - rtPad, rtRootMin + qhi * rtCell + rtPad, o, inv);
+      vec2 tt = slab(rt.rootMin + qlo * rt.cell - rt.pad, rt.rootMin + qhi * rt.cell + rt.pad, o, inv);
       a = max(tt.x, dom.x); b = min(tt.y, dom.y);
       bool hit = a <= b, leaf = (node.w & 1u) != 0u;
       i = (hit && !leaf) ? i + 1 : int(node.w >> 1u);
@@ -84,7 +79,7 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
       }
       ++next;
       if (!(na < INF)) break;
-      t0 = na; steps = max(1, int(nn) * rtIntervals); h = (nb - na) / float(steps);
+      t0 = na; steps = max(1, int(nn) * rt.intervals); h = (nb - na) / float(steps);
       k = 0; havePrev = false;
     }
     int mode = SAMPLE;
@@ -96,7 +91,7 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
         havePrev = false;  // F's domain boundary is not the surface
       } else if (havePrev && sign(f) != sign(fa)) {
         mode = BISECT_F;
-      } else if (havePrev && rtTangentRoots && fa * da < 0.0 && f * df > 0.0) {
+      } else if (havePrev && (rt.tangentRoots != 0) && fa * da < 0.0 && f * df > 0.0) {
         mode = BISECT_D;  // |F| fell, then rose
       } else {
         ta = tm; fa = f; da = df; havePrev = true;
@@ -110,7 +105,7 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
     float lo = ta, flo = fa, hi = ts, fhi = fs, tHit = 0.0, tSplit = 0.0, fSplit = 0.0, dSplit = 0.0;
     vec4 gHit = vec4(0.0);
     bool record = false, split = false, abandon = false;
-    for (int b = 0; b < rtMaxBisections; ++b) {
+    for (int b = 0; b < rt.maxBisections; ++b) {
       float tmid = 0.5 * (lo + hi);
       vec4 g = zs_FGrad(o + tmid * d);
       ++evals;
@@ -124,10 +119,10 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
       }
       if (mode == BISECT_F) {
         if (sign(f) == sign(flo)) { lo = tmid; flo = f; } else { hi = tmid; fhi = f; }
-        if (f == 0.0 || hi - lo <= rtEpsilon) break;
+        if (f == 0.0 || hi - lo <= rt.epsilon) break;
       } else {  // sign(F_lo) * dF/dt is negative while |F| falls
         if (sign(flo) * df < 0.0) lo = tmid; else hi = tmid;
-        if (hi - lo <= rtTangentTolerance) break;
+        if (hi - lo <= rt.tangentTolerance) break;
       }
     }
     if (mode == BISECT_F && !abandon) {
@@ -138,7 +133,7 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
       // A tangent root where the distance estimate |F|/|grad F| at the extremum is
       // below the tolerance: a ray grazing the surface closer than that, or touching a
       // double root (where F and grad F both vanish), hits it.
-      record = abs(gHit.w) <= rtTangentTolerance * length(gHit.xyz);
+      record = abs(gHit.w) <= rt.tangentTolerance * length(gHit.xyz);
     }
     if (split && !abandon) {  // re-sample [tSplit, ts] for the second root of the pair
       ta = tSplit; fa = fSplit; da = dSplit; havePrev = true;
@@ -146,8 +141,8 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
       ta = ts; fa = fs; da = ds; havePrev = !zs_isUndefined(fs); ++k;
     }
     if (!record) continue;
-    vec3 p = o + tHit * d, slack = 1e-5 * (rtDomainMax - rtDomainMin);
-    if (any(lessThan(p, rtDomainMin - slack)) || any(greaterThan(p, rtDomainMax + slack)))
+    vec3 p = o + tHit * d, slack = 1e-5 * (rt.domainMax - rt.domainMin);
+    if (any(lessThan(p, rt.domainMin - slack)) || any(greaterThan(p, rt.domainMax + slack)))
       continue;  // hits count only inside the closed domain box
     for (int m = 0; m < RT_MAX_HITS; ++m) {  // constant indices: registers, not memory
       if (m == found) { hitT[m] = tHit; hitG[m] = gHit; }

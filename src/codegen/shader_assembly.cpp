@@ -65,6 +65,8 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly) 
     appendPiece(out, "generated ray polynomial (src/codegen/emit_ray_polynomial.cpp)", string++,
                 poly->source);
   }
+  appendPiece(out, "shaders/templates/" + std::string(kFrameTemplate), string++,
+              "#define RT_FRAME_STORAGE in\n" + std::string(shaderTemplate(kFrameTemplate)));
   appendPiece(out, "shaders/templates/" + std::string(kRaytraceTemplate), string++, raytrace);
   appendPiece(out, "shaders/templates/" + std::string(poly ? kBernsteinTemplate : kSamplingTemplate), string, march);
   return out;
@@ -78,6 +80,16 @@ std::string assembleFragmentShader(const GlslFormula& formula, const RayPolynomi
   return assemble(formula, &poly);
 }
 
-std::string_view vertexShaderSource() { return shaderTemplate(kVertexTemplate); }
+std::string vertexShaderSource() {
+  // The frame block goes right after #version; the template's numbering resumes after it.
+  const std::string_view vertex = shaderTemplate(kVertexTemplate);
+  const std::size_t firstLine = vertex.find('\n') + 1;
+  std::string out(vertex.substr(0, firstLine));
+  appendPiece(out, "shaders/templates/" + std::string(kFrameTemplate), 1,
+              "#define RT_FRAME_STORAGE out\n" + std::string(shaderTemplate(kFrameTemplate)));
+  out += "#line 2 0\n";
+  out.append(vertex.substr(firstLine));
+  return out;
+}
 
 }  // namespace zs

@@ -6,6 +6,7 @@
 //   raytrace_prelude.frag.glsl  (#version, zs_F / zs_FGrad prototypes, helpers)   string 0
 //   generated formula block     (zs_params, zs_F, zs_FGrad)                       string 1
 //   [ray polynomial block       (zs_FPoly, Bernstein kernels; Bernstein only)]    string 2
+//   frame_params.glsl           (the frame's parameters, flat inputs `rt`)
 //   raytrace_main.frag.glsl     (rays, passes, shading, main; rtMarch prototype)
 //   raytrace_sampling.frag.glsl or raytrace_bernstein.frag.glsl  (rtMarch)
 //
@@ -24,6 +25,7 @@ inline constexpr std::string_view kRaytraceTemplate = "raytrace_main.frag.glsl";
 inline constexpr std::string_view kSamplingTemplate = "raytrace_sampling.frag.glsl";
 inline constexpr std::string_view kBernsteinTemplate = "raytrace_bernstein.frag.glsl";
 inline constexpr std::string_view kVertexTemplate = "fullscreen.vert.glsl";
+inline constexpr std::string_view kFrameTemplate = "frame_params.glsl";  // both stages
 
 // The embedded text of shaders/templates/<fileName>. An unknown name is a bug in zeroset:
 // throws std::logic_error naming the templates that exist.
@@ -38,6 +40,7 @@ std::string assembleFragmentShader(const GlslFormula& formula);
 // follows the formula block.
 std::string assembleFragmentShader(const GlslFormula& formula, const RayPolynomialGlsl& poly);
 
-std::string_view vertexShaderSource();
+// fullscreen.vert.glsl with frame_params.glsl (as outputs) after its #version line.
+std::string vertexShaderSource();
 
 }  // namespace zs

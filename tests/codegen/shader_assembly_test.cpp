@@ -13,7 +13,9 @@ namespace zs::test {
 namespace {
 
 TEST(ShaderAssembly, EmbeddedTemplatesEqualTheFilesOnDisk) {
-  for (std::string_view name : {kPreludeTemplate, kRaytraceTemplate, kVertexTemplate}) {
+  for (std::string_view name :
+       {kPreludeTemplate, kRaytraceTemplate, kVertexTemplate, kFrameTemplate, kSamplingTemplate,
+        kBernsteinTemplate}) {
     SCOPED_TRACE(name);
     EXPECT_EQ(shaderTemplate(name), readFile(sourceDir() / "shaders/templates" / name));
   }
@@ -36,7 +38,12 @@ TEST(ShaderAssembly, PiecesInOrderWithLineDirectives) {
   EXPECT_EQ(shader.rfind("#version 330 core\n", 0), 0u);
   const auto prelude = shader.find("float zs_F(vec3 p);");
   const auto block = shader.find("#line 1 1\n" + glsl->source);
-  const auto main = shader.find("#line 1 2\n" + std::string(shaderTemplate(kRaytraceTemplate)));
+  const auto frame = shader.find("#line 1 2\n#define RT_FRAME_STORAGE in\n" +
+                                 std::string(shaderTemplate(kFrameTemplate)));
+  const auto main = shader.find("#line 1 3\n" + std::string(shaderTemplate(kRaytraceTemplate)));
+  ASSERT_NE(frame, std::string::npos);
+  EXPECT_LT(block, frame);
+  EXPECT_LT(frame, main);
   ASSERT_NE(prelude, std::string::npos);
   ASSERT_NE(block, std::string::npos);
   ASSERT_NE(main, std::string::npos);

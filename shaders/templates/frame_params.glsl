@@ -1,0 +1,49 @@
+// ---- frame_params.glsl (render stage): the parameters of one frame as the fragment shader
+// reads them. They are uniforms of the program (render/ray_tracer_uniforms.cpp sets them by
+// name), but fullscreen.vert.glsl copies them into this block of flat varyings and the
+// fragment shader reads only the block: llvmpipe reads a uniform in a fragment shader with
+// an 8-lane gather and a bounds check per lane (about 20 instructions) at every use, in
+// every pass of every loop, while a flat input is interpolated once per group of pixels.
+// That alone made frames 20-35 % faster (docs/renderer.md). shader_assembly.cpp puts this
+// file into both stages, with RT_FRAME_STORAGE defined as `out` and as `in`; bools travel
+// as ints, since GLSL has no bool varyings.
+RT_FRAME_STORAGE RtFrame {
+  flat vec3 domainMin;  // domain box (the thesis' clipping box)
+  flat vec3 domainMax;
+  flat vec3 rootMin;  // box of the octree's leaves (hierarchy root)
+  flat vec3 rootMax;
+  flat float pad;  // widens the root box by the float slack of the hierarchy
+  flat vec2 resolution;  // full image size in pixels (tiles only restrict the scissor)
+  flat vec3 eye;
+  flat vec3 forward;
+  flat vec3 right;
+  flat vec3 up;
+  flat float planeHalf;  // tan(fov_y/2), or height/2 when orthographic
+  flat int ortho;  // bools travel as ints (0 or 1)
+  flat int maxBisections;
+  flat float epsilon;
+  flat float tangentTolerance;  // 1e-5 of the domain diagonal (docs/renderer.md)
+  flat float ambient;
+  flat vec3 dirLightTo;  // unit vector towards the directional light
+  flat vec3 dirLight;  // lights: color * intensity
+  flat vec3 pointPos;
+  flat vec3 pointLight;
+  flat vec3 frontColor;
+  flat vec3 backColor;
+  flat vec2 frontPhong;  // (specular, shininess)
+  flat vec2 backPhong;
+  flat int silhouetteOn;
+  flat int borderOn;
+  flat float silhouetteThreshold;
+  flat float borderThreshold;
+  flat float primaryWeight;
+  flat float opacity;
+  flat vec3 silhouetteColor;
+  flat vec3 borderColor;
+  flat vec3 background;
+  flat int nodeCount;  // sampling only: the hierarchy walk, leaf segments, tangent roots
+  flat int firstNode;
+  flat vec3 cell;  // cell size of the grid over the root box
+  flat int intervals;
+  flat int tangentRoots;
+} rt;
