@@ -31,8 +31,9 @@ const int RT_MAX_STEPS = 160;  // safety bound on isolation + refinement steps p
 
 bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float tAfter) {
   float len = tb - ta;
-  float c[zs_N], b0[zs_N], b[zs_N];
-  bool defined = zs_FPoly(o + (0.5 * (ta + tb)) * d, (0.5 * len) * d, c);
+  // float, or double for high degrees (emit_ray_polynomial.hpp kDoubleDegree)
+  zs_Real c[zs_N], b0[zs_N], b[zs_N];
+  bool defined = zs_FPoly(zs_Real3(o + (0.5 * (ta + tb)) * d), zs_Real3((0.5 * len) * d), c);
   zs_toBernstein(c, b0);
 
   float tolerance = rt.tangentTolerance / len;  // in units of s
@@ -41,7 +42,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   bool done = !valid, found = false, isolated = false;
   float u = 0.0, size = 1.0;  // the tree interval [u, u + size] being classified
   // Float rounding of the coefficients: values within `noise` of 0 are undecided.
-  float noise = float(8 * zs_DEGREE) * 1.2e-7 * zs_maxAbs(b0);
+  zs_Real noise = zs_Real(8 * zs_DEGREE) * zs_EPS * zs_maxAbs(b0);
   int step = 0;
   // Isolation: the first interval of the tree, left to right, that holds a root. The body is
   // kept to what every step needs (llvmpipe runs all of it for every group of pixels); what
@@ -49,7 +50,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   do {
     float w = u + size;
     zs_restrict(b0, u, w, b);
-    vec4 k = zs_classify(b);  // (min, max, V, V of the derivative)
+    zs_Real4 k = zs_classify(b);  // (min, max, V, V of the derivative)
     bool none = !(k.x <= noise && k.y >= -noise);  // also NaN (overflow): nothing to find
     bool monotone = k.w == 0.0;
     bool ends = (b[0] > 0.0) != (b[zs_DEGREE] > 0.0) || b[0] == 0.0 || b[zs_DEGREE] == 0.0;
@@ -72,7 +73,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     done = done || found || u >= 1.0;
   } while (!done && ++step < RT_MAX_STEPS);
   isolated = isolated && found;
-  float lo = u, hi = u + size, flo = b[0];  // bracket of the root found, and f(lo)
+  float lo = u, hi = u + size, flo = float(b[0]);  // bracket of the root found, and f(lo)
   // An isolated root starts its refinement where the control polygon crosses 0; an
   // undecidable interval's hit is its middle.
   float x = isolated ? u + size * zs_firstCrossing(b) : u + 0.5 * size;
@@ -84,7 +85,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   bool refining = isolated && b[0] != 0.0;
   do {
     if (refining) {  // the body runs once even for lanes with nothing to refine
-      vec3 f = zs_powerAt(c, 2.0 * x - 1.0);  // in s' = 2s - 1
+      vec3 f = zs_powerAt(c, zs_Real(2.0 * x - 1.0));  // in s' = 2s - 1
       float slope = 2.0 * f.y, curve = 8.0 * f.z;  // df/ds, d2f/ds2
       if ((f.x > 0.0) == (flo > 0.0) && f.x != 0.0) { lo = x; flo = f.x; } else { hi = x; }
       // Halley's step: cubic convergence where Newton's is quadratic, for one more Horner row.

@@ -30,7 +30,8 @@ TracingMethod resolveMethod(TracingMethod asked, const Formula& formula, std::st
   if (degree) {
     warning = "warning: degree " + std::to_string(*degree) + " is above " +
               std::to_string(kMaxBernsteinDegree) +
-              ", the highest the exact Bernstein method handles in float; using sign sampling "
+              ", the highest the exact Bernstein method compiles for (its shader grows as the "
+              "degree squared); using sign sampling "
               "(tracing.method = \"sampling\", which can miss thin features: raise "
               "tracing.intervals if parts look missing)\n";
   } else if (asked == TracingMethod::Bernstein) {

@@ -1,6 +1,7 @@
 #include "codegen/emit_ray_polynomial.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <vector>
 
 #include "codegen/body_writer.hpp"
@@ -20,6 +21,15 @@ std::string literal(double v) {
   return lit.text.starts_with('-') ? "(" + lit.text + ")" : lit.text;
 }
 
+// A double literal with every digit a double has (the matrix entries of the double path).
+std::string doubleLiteral(double v) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17glf", v);
+  std::string t = text;
+  if (t.find_first_of(".e") == std::string::npos) t.insert(t.size() - 2, ".0");
+  return v < 0 ? "(" + t + ")" : t;
+}
+
 double binomial(int n, int k) {
   double r = 1;
   for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
@@ -30,8 +40,9 @@ double binomial(int n, int k) {
 // temporaries "cN_k".
 class TaylorWriter {
  public:
-  TaylorWriter(const Graph& g, const std::vector<std::string>& names, int degree)
-      : g_(g), scalars_(g, names), names_(names), degree_(degree) {}
+  TaylorWriter(const Graph& g, const std::vector<std::string>& names, int degree,
+               const std::string& real)
+      : g_(g), scalars_(g, names), names_(names), degree_(degree), real_(real) {}
 
   Coeffs node(NodeId id) {
     const Node& n = g_[id];
@@ -60,7 +71,7 @@ class TaylorWriter {
         const std::string& b = names_[static_cast<std::size_t>(n.b)];
         const std::string inv = "c" + std::to_string(next_++) + "_inv";
         out += "  zs_u = zs_u || " + b + " == 0.0;\n";
-        out += "  float " + inv + " = 1.0 / " + b + ";\n";
+        out += "  " + real_ + " " + inv + " = 1.0 / " + real_ + "(" + b + ");\n";
         Coeffs r;
         for (const std::string& a : at(n.a)) r.push_back(a + " * " + inv);
         return declare(r);
@@ -91,7 +102,7 @@ class TaylorWriter {
     Coeffs names;
     for (std::size_t k = 0; k < exprs.size(); ++k) {
       names.push_back(base + std::to_string(k));
-      out += "  float " + names.back() + " = " + exprs[k] + ";\n";
+      out += "  " + real_ + " " + names.back() + " = " + exprs[k] + ";\n";
     }
     return names;
   }
@@ -134,11 +145,12 @@ class TaylorWriter {
   BodyWriter scalars_;
   const std::vector<std::string>& names_;
   int degree_;
+  std::string real_;  // "float", or "double" where float would lose too much (header)
   int next_ = 0;
   std::unordered_map<NodeId, Coeffs> coeffs_;
 };
 
-std::string arrayParam(const std::string& name) { return "float " + name + "[zs_N]"; }
+std::string arrayParam(const std::string& name) { return "zs_Real " + name + "[zs_N]"; }
 
 // de Casteljau rows at parameter `t` over the coefficients `in`; returns row j, entry i.
 std::vector<std::vector<std::string>> deCasteljau(std::string& out, const std::string& prefix,
@@ -149,7 +161,7 @@ std::vector<std::vector<std::string>> deCasteljau(std::string& out, const std::s
     std::vector<std::string> row;
     for (int i = 0; i + j <= d; ++i) {
       row.push_back(prefix + std::to_string(j) + "_" + std::to_string(i));
-      out += "  float " + row.back() + " = mix(" + rows[j - 1][i] + ", " + rows[j - 1][i + 1] +
+      out += "  zs_Real " + row.back() + " = mix(" + rows[j - 1][i] + ", " + rows[j - 1][i + 1] +
              ", " + t + ");\n";
     }
     rows.push_back(row);
@@ -170,8 +182,14 @@ std::optional<int> rayPolynomialDegree(const Graph& g, NodeId f) {
   return d >= 0 ? std::optional<int>(d) : std::nullopt;
 }
 
-std::string emitBernsteinKernelsGlsl(int d) {
+std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision) {
   std::string s;
+  const std::string real = doublePrecision ? "double" : "float";
+  s += "#define zs_Real " + real + "\n";
+  s += std::string("#define zs_Real3 ") + (doublePrecision ? "dvec3" : "vec3") + "\n";
+  s += std::string("#define zs_Real4 ") + (doublePrecision ? "dvec4" : "vec4") + "\n";
+  // Unit roundoff of zs_Real, for the noise band of the isolation.
+  s += std::string("const float zs_EPS = ") + (doublePrecision ? "1.2e-16" : "1.2e-7") + ";\n";
   s += "const int zs_DEGREE = " + std::to_string(d) + ";\n";
   s += "const int zs_N = " + std::to_string(d + 1) + ";\n";
 
@@ -189,7 +207,8 @@ std::string emitBernsteinKernelsGlsl(int d) {
       }
       m /= binomial(d, i);
       if (m == 0) continue;
-      const std::string term = m == 1.0 ? idx("c", j) : literal(m) + " * " + idx("c", j);
+      const std::string factor = doublePrecision ? doubleLiteral(m) : literal(m);
+      const std::string term = m == 1.0 ? idx("c", j) : factor + " * " + idx("c", j);
       sum += (sum.empty() ? "" : " + ") + term;
     }
     s += "  " + idx("b", i) + " = " + (sum.empty() ? "0.0" : sum) + ";\n";
@@ -198,10 +217,11 @@ std::string emitBernsteinKernelsGlsl(int d) {
 
   // Right part of the split at u ([u, 1]), then the left part of that at (w - u) / (1 - u).
   s += "\nvoid zs_restrict(" + arrayParam("b") + ", float u, float w, out " + arrayParam("r") + ") {\n";
-  const auto right = deCasteljau(s, "e", arrayNames("b", d), "u");
+  s += "  zs_Real t = zs_Real(u);\n";
+  const auto right = deCasteljau(s, "e", arrayNames("b", d), "t");
   Coeffs tail;
   for (int k = 0; k <= d; ++k) tail.push_back(right[std::size_t(d - k)][std::size_t(k)]);
-  s += "  float lambda = u < 1.0 ? (w - u) / (1.0 - u) : 0.0;\n";
+  s += "  zs_Real lambda = u < 1.0 ? zs_Real(w - u) / zs_Real(1.0 - u) : zs_Real(0.0);\n";
   const auto left = deCasteljau(s, "h", tail, "lambda");
   for (int k = 0; k <= d; ++k) s += "  " + idx("r", k) + " = " + left[std::size_t(k)][0] + ";\n";
   s += "}\n";
@@ -209,14 +229,14 @@ std::string emitBernsteinKernelsGlsl(int d) {
   // Horner on the power basis (the Taylor coefficients themselves, not a conversion of them):
   // f, f' and f''/2 at s' in [-1, 1] in 3D multiply-adds, for the refinement of an isolated
   // root (Halley's method).
-  s += "\nvec3 zs_powerAt(" + arrayParam("c") + ", float x) {\n";
-  s += "  float f = " + idx("c", d) + ", df = 0.0, h = 0.0;\n";
+  s += "\nvec3 zs_powerAt(" + arrayParam("c") + ", zs_Real x) {\n";
+  s += "  zs_Real f = " + idx("c", d) + ", df = 0.0, h = 0.0;\n";
   for (int k = d - 1; k >= 0; --k) {
     s += "  h = h * x + df; df = df * x + f; f = f * x + " + idx("c", k) + ";\n";
   }
   s += "  return vec3(f, df, h);\n}\n\n";
 
-  s += "\nfloat zs_maxAbs(" + arrayParam("b") + ") {\n  float m = abs(" + idx("b", 0) + ");\n";
+  s += "\nzs_Real zs_maxAbs(" + arrayParam("b") + ") {\n  zs_Real m = abs(" + idx("b", 0) + ");\n";
   for (int i = 1; i <= d; ++i) s += "  m = max(m, abs(" + idx("b", i) + "));\n";
   s += "  return m;\n}\n";
 
@@ -224,26 +244,26 @@ std::string emitBernsteinKernelsGlsl(int d) {
   // isolated root, far nearer to it than the chord of the ends when f bends. Scanned from the
   // right so the leftmost crossing wins; one division.
   s += "\nfloat zs_firstCrossing(" + arrayParam("b") + ") {\n";
-  s += "  float bi = " + idx("b", 0) + ", bj = " + idx("b", 1) + ", i = 0.0;\n";
+  s += "  zs_Real bi = " + idx("b", 0) + ", bj = " + idx("b", 1) + ";\n  float i = 0.0;\n";
   for (int i = d - 1; i >= 0; --i) {
     s += "  if ((" + idx("b", i) + " > 0.0) != (" + idx("b", i + 1) + " > 0.0)) { bi = " +
          idx("b", i) + "; bj = " + idx("b", i + 1) + "; i = " + std::to_string(i) + ".0; }\n";
   }
-  s += "  return clamp((i + (bi != bj ? bi / (bi - bj) : 0.0)) / float(zs_DEGREE), 0.0, 1.0);\n}\n";
+  s += "  return clamp((i + (bi != bj ? float(bi / (bi - bj)) : 0.0)) / float(zs_DEGREE), 0.0, 1.0);\n}\n";
 
   // Sign changes count b_i > 0 against b_i <= 0, so a zero coefficient never hides a root:
   // the hull test (min, max) decides emptiness, the counts only decide when to stop.
-  s += "\nvec4 zs_classify(" + arrayParam("b") + ") {\n";
-  s += "  float lo = " + idx("b", 0) + ", hi = " + idx("b", 0) + ", v = 0.0, dv = 0.0;\n";
+  s += "\nzs_Real4 zs_classify(" + arrayParam("b") + ") {\n";
+  s += "  zs_Real lo = " + idx("b", 0) + ", hi = " + idx("b", 0) + ", v = 0.0, dv = 0.0;\n";
   for (int i = 1; i <= d; ++i) {
     s += "  lo = min(lo, " + idx("b", i) + "); hi = max(hi, " + idx("b", i) + ");\n";
-    s += "  v += float((" + idx("b", i - 1) + " > 0.0) != (" + idx("b", i) + " > 0.0));\n";
+    s += "  v += zs_Real((" + idx("b", i - 1) + " > 0.0) != (" + idx("b", i) + " > 0.0));\n";
   }
   for (int i = 1; i < d; ++i) {
-    s += "  dv += float((" + idx("b", i) + " > " + idx("b", i - 1) + ") != (" + idx("b", i + 1) +
+    s += "  dv += zs_Real((" + idx("b", i) + " > " + idx("b", i - 1) + ") != (" + idx("b", i + 1) +
          " > " + idx("b", i) + "));\n";
   }
-  s += "  return vec4(lo, hi, v, dv);\n}\n";
+  s += "  return zs_Real4(lo, hi, v, dv);\n}\n";
   return s;
 }
 
@@ -259,12 +279,13 @@ std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f)
   std::string& s = result.source;
   s += "// zeroset ray polynomial (generated by src/codegen/emit_ray_polynomial.cpp): f(s) =\n";
   s += "// F(p + s v) of degree " + std::to_string(d) + " and its Bernstein kernels.\n";
-  s += emitBernsteinKernelsGlsl(d);
+  s += emitBernsteinKernelsGlsl(d, d >= kDoubleDegree);
 
-  TaylorWriter taylor(g, names, d);
+  result.doublePrecision = d >= kDoubleDegree;
+  TaylorWriter taylor(g, names, d, result.doublePrecision ? "double" : "float");
   for (NodeId id : order) taylor.define(id);
   s += "\n// Coefficients of f(s) in the power basis; false where F is undefined on the whole ray.\n";
-  s += "bool zs_FPoly(vec3 p, vec3 v, out " + arrayParam("c") + ") {\n";
+  s += "bool zs_FPoly(zs_Real3 p, zs_Real3 v, out zs_Real c[zs_N]) {\n";
   s += "  bool zs_u = false;\n";
   s += taylor.out;
   const Coeffs& root = taylor.at(f);

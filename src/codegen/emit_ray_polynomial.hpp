@@ -6,10 +6,11 @@
 // raytrace_bernstein.frag.glsl isolates roots with:
 //
 //   const int zs_DEGREE = D;  const int zs_N = D + 1;
-//   bool zs_FPoly(vec3 p, vec3 v, out float c[zs_N]);        // power basis, c[k] of s^k
-//   void zs_toBernstein(float c[zs_N], out float b[zs_N]);   // Bernstein on [0, 1], s' = (s+1)/2
+//   #define zs_Real float (double from kDoubleDegree on), zs_Real3 vec3 (dvec3)
+//   bool zs_FPoly(zs_Real3 p, zs_Real3 v, out zs_Real c[zs_N]);  // power basis, c[k] of s^k
+//   void zs_toBernstein(zs_Real c[zs_N], out float b[zs_N]); // Bernstein on [0, 1], s' = (s+1)/2
 //   void zs_restrict(float b[zs_N], float u, float w, out float r[zs_N]);  // to [u, w]
-//   vec3 zs_powerAt(float c[zs_N], float x);  // (f, f', f''/2) at s = x in [-1, 1], Horner
+//   vec3 zs_powerAt(zs_Real c[zs_N], zs_Real x);  // (f, f', f''/2) at s = x in [-1, 1], Horner
 //   float zs_firstCrossing(float b[zs_N]);    // first zero of the control polygon, in [0, 1]
 //   float zs_maxAbs(float b[zs_N]);           // largest |coefficient|
 //   vec4 zs_classify(float b[zs_N]);  // (min, max, sign changes of b, of its derivative)
@@ -27,9 +28,17 @@
 
 namespace zs {
 
+// From this degree on, zs_FPoly and the conversion to Bernstein coefficients run in double
+// (GL_ARB_gpu_shader_fp64): a polynomial typed in the power basis cancels ever larger terms
+// along a ray as its degree grows, and in float that noise hid sheets and moved roots of
+// degree-12 surfaces (tests/render/degree_limit_test.cpp, docs/renderer.md). Isolation and
+// its de Casteljau steps stay in float, on coefficients rounded once.
+inline constexpr int kDoubleDegree = 9;
+
 struct RayPolynomialGlsl {
   std::string source;  // the block, ending with a newline
   int degree = 0;      // D
+  bool doublePrecision = false;  // D >= kDoubleDegree: the block needs GL_ARB_gpu_shader_fp64
 };
 
 // Degree of f(s) the block would have: the structural degree of F, or nothing when F is not
@@ -41,6 +50,6 @@ std::optional<int> rayPolynomialDegree(const Graph& g, NodeId f);
 std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f);
 
 // The Bernstein kernels alone for degree d (part of the block above); exposed for tests.
-std::string emitBernsteinKernelsGlsl(int d);
+std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision = false);
 
 }  // namespace zs

@@ -59,6 +59,11 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly) 
                            " calls neither zs_F nor zs_FGrad, so the generated formula would be unused");
   }
   std::string out(prelude);  // starts with #version, which must come first
+  if (poly && poly->doublePrecision) {
+    // An #extension must precede every non-preprocessor token: right after #version.
+    const std::size_t firstLine = out.find('\n') + 1;
+    out.insert(firstLine, "#extension GL_ARB_gpu_shader_fp64 : require\n#line 2 0\n");
+  }
   int string = 1;
   appendPiece(out, "generated formula block (src/codegen/emit_glsl.cpp)", string++, formula.source);
   if (poly) {

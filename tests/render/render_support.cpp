@@ -44,9 +44,12 @@ std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& erro
   }
   const std::vector<float> packed = buildSphereHierarchy(std::get<Octree>(tree)).packed();
   const GlslFormula glsl = emitFormulaGlsl(formula);
-  // The method the app would pick (app/pipeline.cpp resolveMethod), without its warnings.
+  // Auto: the method the app would pick (app/pipeline.cpp resolveMethod), without its
+  // warnings. Bernstein is taken for any polynomial, above the degree limit too, so tests
+  // can measure where that limit lies.
   const std::optional<int> degree = rayPolynomialDegree(formula.graph, formula.root);
-  const bool bernstein = spec.method != TracingMethod::Sampling && degree && *degree <= kMaxBernsteinDegree;
+  const bool bernstein = degree && (spec.method == TracingMethod::Bernstein ||
+                                    (spec.method == TracingMethod::Auto && *degree <= kMaxBernsteinDegree));
   const std::string fragment =
       bernstein ? assembleFragmentShader(glsl, *emitRayPolynomialGlsl(formula.graph, formula.root))
                 : assembleFragmentShader(glsl);

@@ -26,7 +26,9 @@ struct SurfaceSpec {
   int octreeLevel = 3;
   std::vector<double> params{};
   Criteria criteria = Criteria::Thesis;
-  TracingMethod method = TracingMethod::Auto;  // Auto: Bernstein for polynomials, as the app
+  // Auto: Bernstein for polynomials up to the degree limit, as the app; Bernstein: for every
+  // polynomial, beyond the limit too.
+  TracingMethod method = TracingMethod::Auto;
 };
 
 // Builds a ray tracer for `spec` on the current context. Returns null with `error` set

@@ -1,0 +1,205 @@
+// Where the Bernstein method stops being exact in float: Chebyshev surfaces
+// T_n(x) + T_n(y) + T_n(z) = 0 in [-1.05, 1.05]^3, written out in the power basis as a user
+// would type them (coefficients up to 2^(n-1), values near 3: the expansion along a ray
+// cancels ever larger terms as n grows). Each render is compared with a reference in double
+// precision that samples f(t) = F(o + t d) and f'(t) = grad F . d densely along every pixel
+// ray: the first sample step where f changes sign, or where f' changes sign and f at the
+// extremum (found by bisecting f') has the other sign, holds the first root, which bisection
+// then finds. So two roots closer than a sample step are found too, as long as a step holds
+// at most one extremum of f (16 n steps per ray; T_n has at most n - 1 per axis). Pixels
+// whose hit or miss changes within half a pixel are left out (either answer is right).
+//
+// kMaxBernsteinDegree (render/settings.hpp) is the highest degree asserted exact here; the
+// degrees above it are measured and printed, not asserted (docs/renderer.md has the table).
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "expr/derivative.hpp"
+#include "codegen/emit_ray_polynomial.hpp"
+#include "expr/tape.hpp"
+#include "parser/parser.hpp"
+#include "render/camera.hpp"
+#include "render_support.hpp"
+
+namespace zs {
+namespace {
+
+constexpr int kSize = 48;
+const Domain kBox{{-1.05, -1.05, -1.05}, {1.05, 1.05, 1.05}};
+const Vec3 kEye{2.2, 1.6, 3.0};
+
+// T_n(v) in the power basis, from T_{k+1} = 2 v T_k - T_{k-1}, as formula text.
+std::string chebyshev(int n, char v) {
+  std::vector<double> prev{1}, cur{0, 1};
+  for (int k = 1; k < n; ++k) {
+    std::vector<double> next(cur.size() + 1, 0.0);
+    for (std::size_t i = 0; i < cur.size(); ++i) next[i + 1] += 2 * cur[i];
+    for (std::size_t i = 0; i < prev.size(); ++i) next[i] -= prev[i];
+    prev = cur;
+    cur = next;
+  }
+  std::string text;
+  for (int i = n; i >= 0; --i) {
+    if (cur[std::size_t(i)] == 0) continue;
+    char term[64];
+    std::snprintf(term, sizeof term, "%+.0f*%c^%d", cur[std::size_t(i)], v, i);
+    text += term;
+  }
+  return "(" + text + ")";
+}
+
+std::string chebyshevSurface(int n) {
+  return chebyshev(n, 'x') + "+" + chebyshev(n, 'y') + "+" + chebyshev(n, 'z');
+}
+
+// The first root of f on [t0, t1] (header), NaN if there is none.
+double referenceFirstHit(PointEvaluator& f, const Ray& r, double t0, double t1, int samples) {
+  double out[4];
+  auto at = [&](double t) {  // (f, f')
+    f.eval(r.origin[0] + t * r.direction[0], r.origin[1] + t * r.direction[1],
+           r.origin[2] + t * r.direction[2], {}, out);
+    return std::pair{out[0], out[1] * r.direction[0] + out[2] * r.direction[1] +
+                                 out[3] * r.direction[2]};
+  };
+  auto bisect = [](auto&& g, double lo, double hi) {  // a sign change of g on [lo, hi]
+    const bool negLo = g(lo) < 0;
+    for (int i = 0; i < 60; ++i) {
+      const double m = 0.5 * (lo + hi);
+      (g(m) < 0) == negLo ? lo = m : hi = m;
+    }
+    return 0.5 * (lo + hi);
+  };
+  auto value = [&](double t) { return at(t).first; };
+  auto slope = [&](double t) { return at(t).second; };
+  double a = t0;
+  auto [fa, ga] = at(a);
+  for (int k = 1; k <= samples; ++k) {
+    const double b = t0 + (t1 - t0) * k / samples;
+    const auto [fb, gb] = at(b);
+    if (fa == 0) return a;
+    if ((fa < 0) != (fb < 0)) return bisect(value, a, b);
+    if ((ga < 0) != (gb < 0)) {  // an extremum inside: does f reach the other sign there?
+      const double e = bisect(slope, a, b);
+      if ((value(e) < 0) != (fa < 0)) return bisect(value, a, e);
+    }
+    a = b, fa = fb, ga = gb;
+  }
+  return NAN;
+}
+
+struct Measured {
+  int hits = 0, missed = 0, extra = 0, grazing = 0, touching = 0;
+  double worstDepth = 0;
+};
+
+Measured measure(int n) {
+  Measured m;
+  const std::string formula = chebyshevSurface(n);
+  std::string error;
+  EXPECT_NE(test::context(Backend::Egl, error), nullptr) << error;
+  test::SurfaceSpec spec{formula, kBox, 1};
+  spec.method = TracingMethod::Bernstein;  // beyond the limit too: this measures it
+  auto tracer = test::makeTracer(spec, error);
+  EXPECT_NE(tracer, nullptr) << error;
+  if (!tracer) return m;
+  const RenderSettings s = test::testSettings(kEye);
+  const Frame frame = tracer->render(s, kBox, kSize, kSize);
+  EXPECT_EQ(frame.error, "");
+
+  Formula f = std::get<Formula>(parseFormula(formula));
+  const std::array<NodeId, 3> g = gradient(f.graph, f.root);
+  PointEvaluator eval(compileTape(f.graph, {f.root, g[0], g[1], g[2]}));
+  // The reference for the ray through (i, j), its direction turned by `turn` radians about
+  // the camera's vertical and horizontal axes.
+  auto reference = [&](double i, double j, double turnX = 0, double turnY = 0) {
+    Ray r = primaryRay(s.camera, kSize, kSize, i, j);
+    const CameraBasis basis = cameraBasis(s.camera);
+    const Vec3 right = basis.right, up = basis.up;
+    for (int k = 0; k < 3; ++k) r.direction[k] += turnX * right[k] + turnY * up[k];
+    double t0 = 0, t1 = INFINITY;
+    for (int k = 0; k < 3; ++k) {
+      const double a = (kBox.min[k] - r.origin[k]) / r.direction[k];
+      const double b = (kBox.max[k] - r.origin[k]) / r.direction[k];
+      t0 = std::max(t0, std::min(a, b));
+      t1 = std::min(t1, std::max(a, b));
+    }
+    return t0 <= t1 ? referenceFirstHit(eval, r, t0, t1, 16 * n) : NAN;
+  };
+  const double tolerance = 1e-5 * std::sqrt(3.0) * (kBox.max[0] - kBox.min[0]);
+  auto nearTouch = [&](double t, int i, int j) {
+    const Ray r = primaryRay(s.camera, kSize, kSize, i, j);
+    double v[4];
+    eval.eval(r.origin[0] + t * r.direction[0], r.origin[1] + t * r.direction[1],
+              r.origin[2] + t * r.direction[2], {}, v);
+    return std::abs(v[0]) <= 1.5 * tolerance * std::sqrt(v[1] * v[1] + v[2] * v[2] + v[3] * v[3]);
+  };
+  auto same = [](double a, double b) {
+    return std::isnan(a) ? std::isnan(b) : !std::isnan(b) && std::abs(a - b) <= 1e-3;
+  };
+  for (int j = 0; j < kSize; ++j) {
+    for (int i = 0; i < kSize; ++i) {
+      const double depth = reference(i, j);
+      const bool hit = !std::isnan(depth);
+      bool stable = true;
+      for (auto [di, dj] : {std::pair{-0.5, 0.0}, {0.5, 0.0}, {0.0, -0.5}, {0.0, 0.5}})
+        stable = stable && !std::isnan(reference(i + di, j + dj)) == hit;
+      if (!stable) continue;
+      // The shader builds its rays in float: directions within ~1e-7 of these. A pixel whose
+      // first hit moves when the ray turns by 1e-6 grazes a sheet (the ray passes within
+      // about a millionth of tangency): either answer is right there.
+      bool grazing = false;
+      for (auto [tx, ty] : {std::pair{1e-6, 0.0}, {-1e-6, 0.0}, {0.0, 1e-6}, {0.0, -1e-6}})
+        grazing = grazing || !same(reference(i, j, tx, ty), depth);
+      if (grazing) {
+        ++m.grazing;
+        continue;
+      }
+      const float got = frame.depth.at(i, j);
+      // A ray that passes within the tangent tolerance of a sheet (1e-5 of the domain
+      // diagonal, docs/renderer.md) counts as touching it: a render hit nearer than the
+      // reference is right where the distance |F| / |grad F| at it is that small.
+      if (std::isfinite(got) && (!hit || got < depth - 1e-3) && nearTouch(got, i, j)) {
+        ++m.touching;
+        continue;
+      }
+      m.hits += hit;
+      m.missed += hit && !std::isfinite(got);
+      m.extra += !hit && std::isfinite(got);
+      if (hit && std::isfinite(got)) m.worstDepth = std::max(m.worstDepth, std::abs(got - depth));
+    }
+  }
+  std::printf("  T%d (%s): %d reference hits, %d missed, %d extra, worst depth error %.3g; left "
+              "out: %d grazing, %d touching within the tolerance%s\n", n,
+              n >= kDoubleDegree ? "double" : "float", m.hits, m.missed, m.extra, m.worstDepth,
+              m.grazing, m.touching,
+              n > kMaxBernsteinDegree ? " (above the limit: sampled in the app)" : "");
+  return m;
+}
+
+TEST(DegreeLimit, ChebyshevSurfacesAreExactUpToTheLimit) {
+  for (int n = 4; n <= kMaxBernsteinDegree; n += 4) {
+    SCOPED_TRACE("T" + std::to_string(n));
+    const Measured m = measure(n);
+    EXPECT_GT(m.hits, kSize * kSize / 10);
+    EXPECT_EQ(m.missed, 0);
+    EXPECT_EQ(m.extra, 0);
+    EXPECT_LT(m.worstDepth, 1e-3);  // the default epsilon
+  }
+}
+
+TEST(DegreeLimit, AboveTheLimitIsMeasured) {
+  // Printed for docs/renderer.md; the app samples these degrees (with a warning).
+  for (int n : {24, 28, 32}) {
+    const Measured m = measure(n);
+    EXPECT_GT(m.hits, 0);  // the reference sees the surface: the comparison means something
+  }
+}
+
+}  // namespace
+}  // namespace zs
