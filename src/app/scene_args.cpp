@@ -24,11 +24,10 @@ std::optional<Scene> loadSceneArgs(const SceneArgs& args) {
     return std::nullopt;
   }
   Scene scene = std::get<Scene>(std::move(loaded));
-  for (const std::string& assignment : args.sets) {
-    if (auto err = applyOverride(scene, assignment)) {
-      std::cerr << formatSceneError(*err);
-      return std::nullopt;
-    }
+  // All --set at once: keys that constrain each other are checked after the last one.
+  if (auto err = applyOverrides(scene, args.sets)) {
+    std::cerr << formatSceneError(*err);
+    return std::nullopt;
   }
   return scene;
 }

@@ -1,7 +1,9 @@
 // applyOverride: `--set KEY=VALUE` is itself one line of TOML, so it is parsed as a tiny
 // document and goes through the same reader as a file; columns then point into the
 // assignment exactly as the user typed it.
+#include <span>
 #include <string>
+#include <vector>
 
 #include "scene/reader.hpp"
 #include "scene/scene_io.hpp"
@@ -30,10 +32,10 @@ constexpr const char* kQuoteHint =
     "VALUE is a TOML value; text needs double quotes, e.g. --set 'formula=\"x^2 + y^2 - 1\"' "
     "or --set 'camera.projection=\"orthographic\"'";
 
-}  // namespace
-
-std::optional<SceneError> applyOverride(Scene& scene, std::string_view assignment) {
-  const SourceText src("--set", assignment);
+// One assignment onto `scene`, its keys appended to `history`; the cross-key check is the
+// caller's (applyOverrides runs it once, after the last assignment).
+std::optional<SceneError> applyOne(Scene& scene, const SourceText& src, KeyHistory& history) {
+  const std::string_view assignment = src.text();
   if (const auto nl = assignment.find_first_of("\r\n"); nl != std::string_view::npos) {
     return src.error(src.positionOf(nl), "", "a --set assignment must be a single line");
   }
@@ -51,10 +53,9 @@ std::optional<SceneError> applyOverride(Scene& scene, std::string_view assignmen
     return src.error(src.positionOf(eq + 1), key, "missing VALUE after '" + key + "='",
                      "VALUE is a TOML value: 0.2, [0, 0, 3], true, \"text\"");
   }
-  Scene changed = scene;
   try {
     const toml::table doc = toml::parse(assignment, std::string_view("--set"));
-    if (auto err = applyDocument(changed, doc, src)) return err;
+    return applyDocument(scene, doc, src, &history);
   } catch (const toml::parse_error& e) {
     const auto& at = e.source().begin;
     return src.error({static_cast<int>(at.line), static_cast<int>(at.column)}, key,
@@ -62,8 +63,30 @@ std::optional<SceneError> applyOverride(Scene& scene, std::string_view assignmen
   } catch (const std::exception& e) {
     return src.error({1, 1}, key, std::string("cannot apply the assignment: ") + e.what());
   }
+}
+
+}  // namespace
+
+std::optional<SceneError> applyOverrides(Scene& scene, std::span<const std::string> assignments) {
+  if (assignments.empty()) return std::nullopt;
+  std::vector<SourceText> sources;  // the history points into these
+  sources.reserve(assignments.size());
+  KeyHistory history;
+  Scene changed = scene;
+  for (const std::string& assignment : assignments) {
+    sources.emplace_back("--set", assignment);
+    if (auto err = applyOne(changed, sources.back(), history)) return err;
+  }
+  // Keys that constrain each other are checked once all are set: --set camera.up=[0,0,1]
+  // --set camera.eye=[0,0,5] is fine in either order.
+  if (auto err = crossCheck(changed, history, sources.back())) return err;
   scene = std::move(changed);
   return std::nullopt;
+}
+
+std::optional<SceneError> applyOverride(Scene& scene, std::string_view assignment) {
+  const std::string one(assignment);
+  return applyOverrides(scene, std::span<const std::string>(&one, 1));
 }
 
 }  // namespace zs

@@ -41,7 +41,8 @@ bool isParamName(std::string_view name) {
 
 class Reader {
  public:
-  Reader(Scene& scene, const SourceText& src) : scene_(scene), src_(src) {}
+  Reader(Scene& scene, const SourceText& src, KeyHistory& seen)
+      : scene_(scene), src_(src), seen_(seen) {}
 
   std::optional<SceneError> table(const toml::table& table, const std::string& prefix) {
     for (const auto& [key, node] : inFileOrder(table)) {
@@ -52,12 +53,10 @@ class Reader {
     return std::nullopt;
   }
 
-  std::optional<SceneError> crossChecks() const;
-
  private:
   std::optional<SceneError> entry(const std::string& name, const toml::key& key,
                                   const toml::node& node) {
-    seen_.emplace_back(name, positionOf(node));
+    seen_.push_back({name, &src_, positionOf(node)});
     if (name == kFormulaKey) return formula(node);
     if (name == kParamsKey) return params(node);
     if (const KeySpec* spec = findKey(name)) return readLeaf(scene_, *spec, node, src_);
@@ -91,7 +90,7 @@ class Reader {
     for (const auto& [key, value] : inFileOrder(*table)) {
       const std::string name(key->str());
       const std::string dotted = "params." + name;
-      seen_.emplace_back(dotted, positionOf(*value));
+      seen_.push_back({dotted, &src_, positionOf(*value)});
       if (!isParamName(name)) {
         return src_.error(positionOf(*key), dotted, "\"" + name + "\" is not a parameter name",
                           "a parameter is a letter or '_' followed by letters, digits or '_', "
@@ -111,29 +110,34 @@ class Reader {
     return std::nullopt;
   }
 
-  // The latest-written of `keys`, so an error about two keys points at the one that made
-  // the pair inconsistent; position 0 when this document set none of them.
-  std::pair<std::string, Position> locate(std::initializer_list<std::string_view> keys) const {
-    for (auto it = seen_.rbegin(); it != seen_.rend(); ++it) {
-      if (std::find(keys.begin(), keys.end(), it->first) != keys.end()) return *it;
-    }
-    return {std::string(*keys.begin()), Position{}};
-  }
-
-  SceneError errorAt(std::initializer_list<std::string_view> keys, std::string message,
-                     std::string hint) const {
-    auto [key, pos] = locate(keys);
-    return src_.error(pos, key, std::move(message), std::move(hint));
-  }
-
   Scene& scene_;
   const SourceText& src_;
-  std::vector<std::pair<std::string, Position>> seen_;  // keys in the order they were read
+  KeyHistory& seen_;
 };
 
-std::optional<SceneError> Reader::crossChecks() const {
+// An error about keys that constrain each other, placed at the latest-written of `keys`
+// (the one that made the set inconsistent); at `fallback`'s start when none was written.
+SceneError errorAt(const KeyHistory& seen, const SourceText& fallback,
+                   std::initializer_list<std::string_view> keys, std::string message,
+                   std::string hint) {
+  for (auto it = seen.rbegin(); it != seen.rend(); ++it) {
+    if (std::find(keys.begin(), keys.end(), it->key) != keys.end())
+      return it->src->error(it->pos, it->key, std::move(message), std::move(hint));
+  }
+  return fallback.error(Position{}, std::string(*keys.begin()), std::move(message),
+                        std::move(hint));
+}
+
+}  // namespace
+
+std::optional<SceneError> crossCheck(const Scene& scene, const KeyHistory& seen,
+                                     const SourceText& fallback) {
+  auto errorAt = [&](std::initializer_list<std::string_view> keys, std::string message,
+                     std::string hint) {
+    return scene_detail::errorAt(seen, fallback, keys, std::move(message), std::move(hint));
+  };
   static constexpr const char* kAxis[] = {"x", "y", "z"};
-  const Domain& d = scene_.domain;
+  const Domain& d = scene.domain;
   for (int i = 0; i < 3; ++i) {
     if (!(d.min[i] < d.max[i])) {
       return errorAt({"domain.min", "domain.max"},
@@ -144,7 +148,7 @@ std::optional<SceneError> Reader::crossChecks() const {
                      "below the same component of max");
     }
   }
-  const Camera& c = scene_.render.camera;
+  const Camera& c = scene.render.camera;
   const Vec3 f{c.target[0] - c.eye[0], c.target[1] - c.eye[1], c.target[2] - c.eye[2]};
   if (f[0] == 0 && f[1] == 0 && f[2] == 0) {
     return errorAt({"camera.eye", "camera.target"},
@@ -164,8 +168,6 @@ std::optional<SceneError> Reader::crossChecks() const {
   return std::nullopt;
 }
 
-}  // namespace
-
 std::optional<SceneError> checkFormula(std::string_view formula, const SourceText& src,
                                        const std::vector<std::size_t>& byteOffsets) {
   const ParseResult parsed = parseFormula(formula);
@@ -180,10 +182,12 @@ std::optional<SceneError> checkFormula(std::string_view formula, const SourceTex
 }
 
 std::optional<SceneError> applyDocument(Scene& scene, const toml::table& doc,
-                                        const SourceText& src) {
-  Reader reader(scene, src);
+                                        const SourceText& src, KeyHistory* history) {
+  KeyHistory own;
+  KeyHistory& seen = history ? *history : own;
+  Reader reader(scene, src, seen);
   if (auto err = reader.table(doc, "")) return err;
-  return reader.crossChecks();
+  return history ? std::nullopt : crossCheck(scene, seen, src);
 }
 
 }  // namespace zs::scene_detail

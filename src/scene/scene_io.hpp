@@ -6,6 +6,7 @@
 // gives back s exactly. The format and every key are documented in docs/surf-format.md.
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -46,6 +47,12 @@ SceneResult loadSceneOrFormula(std::string_view arg);
 // key). Same validation and hints as a file; errors name the file "--set". On error the
 // scene is left unchanged.
 std::optional<SceneError> applyOverride(Scene& scene, std::string_view assignment);
+
+// Several assignments in order, as `--set` options: each is read and validated as above, but
+// keys that constrain each other (domain min and max; camera eye, target and up) are checked
+// once, after the last, so no order of the assignments is wrong. The error points at the
+// latest assignment of the keys involved. On error the scene is left unchanged.
+std::optional<SceneError> applyOverrides(Scene& scene, std::span<const std::string> assignments);
 
 // A complete .surf text holding every key of `scene`, doubles in shortest round-trip form.
 std::string saveScene(const Scene& scene);

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <ostream>
+#include <string>
+#include <vector>
 
 #include "scene/scene_io.hpp"
 
@@ -48,6 +50,46 @@ TEST(SceneOverride, FormulaAndInlineTable) {
   EXPECT_EQ(s.render.camera.fovY, 30);
   EXPECT_EQ(s.render.camera.projection, Projection::Orthographic);
   EXPECT_EQ(s.render.camera.height, 4);
+}
+
+TEST(SceneOverride, SeveralAreCheckedTogetherAfterTheLast) {
+  // The first assignment alone makes up parallel to the view (eye (0,0,4) -> origin); with
+  // the second it is fine. Either order works.
+  for (const std::vector<std::string>& sets :
+       {std::vector<std::string>{"camera.up=[0,0,1]", "camera.eye=[0,5,0]"},
+        std::vector<std::string>{"camera.eye=[0,5,0]", "camera.up=[0,0,1]"},
+        std::vector<std::string>{"domain.min=[3,3,3]", "domain.max=[4,4,4]"}}) {
+    Scene s;
+    const auto e = applyOverrides(s, sets);
+    EXPECT_FALSE(e) << formatSceneError(*e);
+  }
+  Scene s;
+  ASSERT_FALSE(applyOverrides(s, std::vector<std::string>{"camera.up=[0,0,1]", "camera.eye=[0,5,0]"}));
+  EXPECT_EQ(s.render.camera.up, (Vec3{0, 0, 1}));
+  EXPECT_EQ(s.render.camera.eye, (Vec3{0, 5, 0}));
+}
+
+TEST(SceneOverride, SeveralThatStayInconsistentPointAtTheLatestKeyInvolved) {
+  Scene s;
+  const Scene before = s;
+  const std::vector<std::string> sets{"camera.eye=[0,5,0]", "octree.level=2",
+                                      "camera.up = [0,1,0]", "samples=2"};
+  const auto e = applyOverrides(s, sets);
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->key, "camera.up");
+  EXPECT_NE(e->message.find("parallel to the view direction"), std::string::npos);
+  // The third assignment, at its value.
+  EXPECT_EQ(e->column, 13) << formatSceneError(*e);
+  EXPECT_NE(formatSceneError(*e).find("camera.up = [0,1,0]"), std::string::npos);
+  EXPECT_EQ(s, before);  // unchanged on error
+}
+
+TEST(SceneOverride, SeveralStopAtTheFirstMalformedOne) {
+  Scene s;
+  const auto e = applyOverrides(s, std::vector<std::string>{"octree.level=2", "samples", "x=1"});
+  ASSERT_TRUE(e);
+  EXPECT_NE(e->message.find("expected KEY=VALUE, got \"samples\""), std::string::npos);
+  EXPECT_EQ(s.octree.level, Scene{}.octree.level);
 }
 
 struct BadOverride {
