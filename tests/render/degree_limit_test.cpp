@@ -122,13 +122,7 @@ Measured measure(int n) {
     const CameraBasis basis = cameraBasis(s.camera);
     const Vec3 right = basis.right, up = basis.up;
     for (int k = 0; k < 3; ++k) r.direction[k] += turnX * right[k] + turnY * up[k];
-    double t0 = 0, t1 = INFINITY;
-    for (int k = 0; k < 3; ++k) {
-      const double a = (kBox.min[k] - r.origin[k]) / r.direction[k];
-      const double b = (kBox.max[k] - r.origin[k]) / r.direction[k];
-      t0 = std::max(t0, std::min(a, b));
-      t1 = std::min(t1, std::max(a, b));
-    }
+    const auto [t0, t1] = test::rayInBox(r, kBox);
     return t0 <= t1 ? referenceFirstHit(eval, r, t0, t1, 16 * n) : NAN;
   };
   const double tolerance = 1e-5 * std::sqrt(3.0) * (kBox.max[0] - kBox.min[0]);

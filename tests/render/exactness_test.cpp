@@ -69,13 +69,7 @@ Comparison compare(const std::string& formula, const Domain& domain, Vec3 eye) {
   IntervalEvaluator eval(tape);
   auto hitAt = [&](double i, double j, double& depth) {
     const Ray r = primaryRay(s.camera, kSize, kSize, i, j);
-    double t0 = 0, t1 = INFINITY;
-    for (int k = 0; k < 3; ++k) {
-      const double a = (domain.min[k] - r.origin[k]) / r.direction[k];
-      const double b = (domain.max[k] - r.origin[k]) / r.direction[k];
-      t0 = std::max(t0, std::min(a, b));
-      t1 = std::min(t1, std::max(a, b));
-    }
+    const auto [t0, t1] = test::rayInBox(r, domain);
     depth = t0 <= t1 ? referenceFirstHit(eval, r, t0, t1) : NAN;
     return !std::isnan(depth);
   };

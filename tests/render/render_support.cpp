@@ -62,6 +62,17 @@ std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& erro
   return tracer;
 }
 
+std::pair<double, double> rayInBox(const Ray& r, const Domain& box) {
+  double t0 = 0, t1 = INFINITY;
+  for (int k = 0; k < 3; ++k) {
+    const double a = (box.min[k] - r.origin[k]) / r.direction[k];
+    const double b = (box.max[k] - r.origin[k]) / r.direction[k];
+    t0 = std::max(t0, std::min(a, b));
+    t1 = std::min(t1, std::max(a, b));
+  }
+  return {t0, t1};
+}
+
 RenderSettings testSettings(Vec3 eye) {
   RenderSettings s;
   s.camera.eye = eye;

@@ -6,10 +6,12 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "render/gl_context.hpp"
 #include "render/image.hpp"
+#include "render/camera.hpp"
 #include "render/ray_tracer.hpp"
 #include "render/settings.hpp"
 #include "interval/octree_settings.hpp"
@@ -37,6 +39,9 @@ std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& erro
 
 // Small, fast settings for tests: defaults of settings.hpp with the camera at `eye`.
 RenderSettings testSettings(Vec3 eye = {0, 0, 3});
+
+// The part [t0, t1] of the ray (t >= 0) inside `box`, in double: t0 > t1 when it misses.
+std::pair<double, double> rayInBox(const Ray& r, const Domain& box);
 
 // Compares `image` with tests/render/reference/<name>.png within the tolerance of
 // image.hpp; with ZS_UPDATE_REFERENCE=1 writes the reference instead. On mismatch the
