@@ -9,7 +9,8 @@
 // as ints, since GLSL has no bool varyings.
 RT_FRAME_STORAGE RtFrame {
   flat vec3 domainMin;  // domain box (the thesis' clipping box)
-  flat vec3 domainMax;
+  flat vec3 domainMax;  // (the bounding box of the ball for a sphere domain)
+  flat vec4 ball;  // a sphere domain's (center, radius); radius 0 when the domain is the box
   flat vec3 rootMin;  // box of the octree's leaves (hierarchy root)
   flat vec3 rootMax;
   flat float pad;  // widens the root box by the float slack of the hierarchy

@@ -17,6 +17,7 @@ uniform vec3 rtBoxMin, rtBoxMax;
 // What frame_params.glsl hands on, under the names the renderer sets.
 uniform vec3 rtDomainMin;
 uniform vec3 rtDomainMax;
+uniform vec4 rtClipBall;
 uniform vec3 rtRootMin;
 uniform vec3 rtRootMax;
 uniform float rtPad;
@@ -64,6 +65,7 @@ const int kBox[36] = int[36](0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 
 void main() {
   rt.domainMin = rtDomainMin;
   rt.domainMax = rtDomainMax;
+  rt.ball = rtClipBall;
   rt.rootMin = rtRootMin;
   rt.rootMax = rtRootMax;
   rt.pad = rtPad;

@@ -2,7 +2,7 @@
 // (tracing.method = "bernstein", docs/renderer.md). Follows raytrace_main.frag.glsl and the
 // generated ray polynomial block (zs_FPoly and the Bernstein kernels of degree zs_DEGREE)
 // and defines rtMarch():
-//  1. The ray is clipped to the domain and to the box of the octree's leaves. On that
+//  1. The ray is clipped to the domain (box or ball) and to the box of the octree's leaves. On that
 //     segment f(s) = F(o + t(s) d), s in [0, 1], comes from ONE call of zs_FPoly (a Taylor
 //     expansion about the segment's midpoint), in the Bernstein basis.
 //  2. The Bernstein coefficients bound f on an interval (convex hull) and their sign changes
@@ -110,7 +110,7 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
             out vec4 hitG[RT_MAX_HITS]) {
   for (int m = 0; m < RT_MAX_HITS; ++m) { hitT[m] = 0.0; hitG[m] = vec4(0.0); }
   vec3 inv = safeInverse(d);
-  vec2 dom = slab(rt.domainMin, rt.domainMax, o, inv);
+  vec2 dom = domainInterval(o, d, inv);
   vec2 box = slab(rt.rootMin - rt.pad, rt.rootMax + rt.pad, o, inv);
   float t = max(max(dom.x, box.x), tStart), tEnd = min(dom.y, box.y);
   int found = 0;

@@ -39,6 +39,23 @@ vec2 slab(vec3 lo, vec3 hi, vec3 ro, vec3 inv) {
   return vec2(max(max(n.x, n.y), n.z), min(min(f.x, f.y), f.z));
 }
 
+// The ray's parameter interval inside the domain: its box, and its ball when the domain is a
+// sphere (the box is then the ball's bounding box). Empty when x > y.
+vec2 domainInterval(vec3 o, vec3 d, vec3 inv) {
+  vec2 t = slab(rt.domainMin, rt.domainMax, o, inv);
+  vec3 oc = o - rt.ball.xyz;
+  float a = dot(d, d), b = dot(oc, d), c = dot(oc, oc) - rt.ball.w * rt.ball.w;
+  float disc = b * b - a * c, root = sqrt(max(disc, 0.0));
+  vec2 s = disc >= 0.0 ? vec2(-b - root, -b + root) / a : vec2(1.0, -1.0);
+  return rt.ball.w > 0.0 ? vec2(max(t.x, s.x), min(t.y, s.y)) : t;
+}
+
+// How far p lies inside the domain's boundary (negative outside): the border highlight.
+float domainDepth(vec3 p) {
+  vec3 m = min(p - rt.domainMin, rt.domainMax - p);
+  return rt.ball.w > 0.0 ? rt.ball.w - length(p - rt.ball.xyz) : min(min(m.x, m.y), m.z);
+}
+
 // 1 / d without infinities: a zero component becomes 1e30 (the slab test stays finite).
 vec3 safeInverse(vec3 d) { return 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0))); }
 
@@ -68,9 +85,7 @@ vec3 shade(vec3 p, vec4 g, vec3 rd) {
                   rt.pointLight * phongSpecular(n, L1, nl1, rd, phong);
   vec3 color = (front ? rt.frontColor : rt.backColor) * diffuse + specular;
   if ((rt.silhouetteOn != 0) && abs(cosine) < rt.silhouetteThreshold) color = rt.silhouetteColor;
-  vec3 border = min(p - rt.domainMin, rt.domainMax - p);
-  if ((rt.borderOn != 0) && min(min(border.x, border.y), border.z) < rt.borderThreshold)
-    color = rt.borderColor;
+  if ((rt.borderOn != 0) && domainDepth(p) < rt.borderThreshold) color = rt.borderColor;
   return clamp(color, 0.0, 1.0);
 }
 

@@ -20,7 +20,7 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
   int found = 0;
   for (int m = 0; m < RT_MAX_HITS; ++m) { hitT[m] = 0.0; hitG[m] = vec4(0.0); }
   vec3 inv = safeInverse(d);
-  vec2 dom = slab(rt.domainMin, rt.domainMax, o, inv);
+  vec2 dom = domainInterval(o, d, inv);
   // The root box holds every leaf: clipping to it here makes fetching the root (node 0)
   // unnecessary when it is an inner node (rt.firstNode = 1).
   vec2 root = slab(rt.rootMin - rt.pad, rt.rootMax + rt.pad, o, inv);
@@ -141,9 +141,8 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
       ta = ts; fa = fs; da = ds; havePrev = !zs_isUndefined(fs); ++k;
     }
     if (!record) continue;
-    vec3 p = o + tHit * d, slack = 1e-5 * (rt.domainMax - rt.domainMin);
-    if (any(lessThan(p, rt.domainMin - slack)) || any(greaterThan(p, rt.domainMax + slack)))
-      continue;  // hits count only inside the closed domain box
+    if (domainDepth(o + tHit * d) < -1e-5 * length(rt.domainMax - rt.domainMin))
+      continue;  // hits count only inside the closed domain
     for (int m = 0; m < RT_MAX_HITS; ++m) {  // constant indices: registers, not memory
       if (m == found) { hitT[m] = tHit; hitG[m] = gHit; }
     }

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "app/pipeline.hpp"
 #include "app/scene_args.hpp"
 #include "interval/report.hpp"
 #include "parser/parser.hpp"
@@ -27,7 +28,8 @@ int runOctree(const OctreeArgs& args) {
   if (args.level) scene->octree.level = *args.level;
   if (args.criteria) scene->octree.criteria = *args.criteria == "uniform" ? Criteria::Uniform
                                                                            : Criteria::Thesis;
-  if (!args.domain.empty()) {
+  if (!args.domain.empty()) {  // --domain is a box: it replaces a sphere domain too
+    scene->domain.shape = DomainShape::Box;
     for (int axis = 0; axis < 3; ++axis) {
       scene->domain.min[axis] = args.domain[2 * axis];
       scene->domain.max[axis] = args.domain[2 * axis + 1];
@@ -40,8 +42,8 @@ int runOctree(const OctreeArgs& args) {
   }
   const Formula& formula = std::get<Formula>(parsed);
   const std::vector<double> params = paramValues(*scene, formula.graph);
-  OctreeResult built =
-      buildOctree(formula, params, Box{scene->domain.min, scene->domain.max}, scene->octree);
+  OctreeResult built = buildOctree(formula, params, toBox(scene->domain), scene->octree,
+                                   toBall(scene->domain));
   if (auto* err = std::get_if<OctreeError>(&built)) {
     std::cerr << "error: " << err->message << "\n";
     return 1;

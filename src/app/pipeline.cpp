@@ -20,7 +20,15 @@ double msSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-Box toBox(const Domain& domain) { return Box{domain.min, domain.max}; }
+Box toBox(const Domain& domain) {
+  const Domain box = boundingBox(domain);
+  return Box{box.min, box.max};
+}
+
+std::optional<Ball> toBall(const Domain& domain) {
+  if (domain.shape != DomainShape::Sphere) return std::nullopt;
+  return Ball{domain.center, domain.radius};
+}
 
 TracingMethod resolveMethod(TracingMethod asked, const Formula& formula, std::string& warning) {
   warning.clear();
@@ -52,7 +60,8 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bo
   s.times.parseMs = msSince(t);
 
   t = std::chrono::steady_clock::now();
-  OctreeResult tree = buildOctree(s.formula, s.params, toBox(scene.domain), scene.octree);
+  OctreeResult tree =
+      buildOctree(s.formula, s.params, toBox(scene.domain), scene.octree, toBall(scene.domain));
   if (auto* err = std::get_if<OctreeError>(&tree)) return "error: " + err->message + "\n";
   s.octree = std::get<Octree>(std::move(tree));
   s.hierarchy = buildSphereHierarchy(s.octree);

@@ -36,7 +36,10 @@ struct PreparedSurface {
   std::vector<float> paramsAsFloats() const { return {params.begin(), params.end()}; }
 };
 
+// The box the octree subdivides (the domain's bounding box) and, for a sphere domain, the
+// ball that clips it.
 Box toBox(const Domain& domain);
+std::optional<Ball> toBall(const Domain& domain);
 
 // The method `asked` resolves to for this formula: Bernstein for a polynomial of degree up
 // to kMaxBernsteinDegree (Auto or Bernstein asked), sampling otherwise. `warning` explains a

@@ -28,11 +28,25 @@ struct Cell {
 
 enum class Decision { Discard, Leaf, Subdivide };
 
+// True when no point of `box` lies in the ball: the box's nearest point to the center is
+// farther than the radius. The squared distance is rounded, so the test gives the box a
+// relative margin of 1e-12 before discarding it.
+bool outside(const Box& box, const Ball& ball) {
+  double d2 = 0;
+  for (std::size_t a = 0; a < 3; ++a) {
+    const double c = ball.center[a];
+    const double gap = c < box.min[a] ? box.min[a] - c : (c > box.max[a] ? c - box.max[a] : 0.0);
+    d2 += gap * gap;
+  }
+  return d2 > ball.radius * ball.radius * (1 + 1e-12);
+}
+
 struct Shared {
   const Tape& tape;
   std::span<const double> params;
   const Box& domain;
   const OctreeSettings& settings;
+  std::optional<Ball> ball;
   std::atomic<std::size_t> tested{0};
   std::atomic<bool> overBudget{false};
 };
@@ -47,6 +61,7 @@ class Walker {
     ++st.tested;
     if (++unshared_ == kBudgetBatch) flushBudget();
     const Box box = cellBox(s_.domain, cell.c, cell.level);
+    if (s_.ball && outside(box, *s_.ball)) return Decision::Discard;
     const Interval f = eval_.evalFirst(box, s_.params);
     // Empty: F is defined nowhere in the box, so no surface point lies in it.
     if (f.isEmpty() || !f.containsZero()) return Decision::Discard;
@@ -148,9 +163,11 @@ Box cellBox(const Box& domain, const std::array<std::uint32_t, 3>& cell, int lev
 }
 
 OctreeResult buildOctree(const Formula& formula, std::span<const double> params, const Box& domain,
-                         const OctreeSettings& settings) {
+                         const OctreeSettings& settings, std::optional<Ball> ball) {
   if (std::string err = checkInput(formula, params, domain, settings); !err.empty())
     return OctreeError{std::move(err)};
+  if (ball && !(std::isfinite(ball->radius) && ball->radius > 0))
+    return OctreeError{"the clipping sphere's radius must be a positive number"};
   const auto start = std::chrono::steady_clock::now();
 
   Graph graph = formula.graph;  // the gradient's nodes go into a private copy
@@ -160,7 +177,7 @@ OctreeResult buildOctree(const Formula& formula, std::span<const double> params,
     roots.insert(roots.end(), g.begin(), g.end());
   }
   const Tape tape = compileTape(graph, roots);
-  Shared shared{tape, params, domain, settings};
+  Shared shared{tape, params, domain, settings, ball};
 
   // Top levels on this thread; boxes reaching kSplitLevel become tasks (marked in `top`).
   const int split = std::min(kSplitLevel, settings.level);
@@ -194,6 +211,7 @@ OctreeResult buildOctree(const Formula& formula, std::span<const double> params,
 
   Octree tree;
   tree.domain = domain;
+  tree.ball = ball;
   tree.settings = settings;
   tree.threads = threads;
   tree.levels = topWalker.stats();

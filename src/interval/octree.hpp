@@ -3,7 +3,8 @@
 // out the kept boxes (leaves) that may hold a point of F = 0, in pre-order (Morton order),
 // with per-level statistics. A box is discarded only when interval arithmetic proves
 // 0 is not in F(box) (or F is undefined on all of it), so the union of the leaves holds
-// every surface point of the domain.
+// every surface point of the domain. A clipping ball (SURFER's sphere) also discards boxes
+// that lie wholly outside it.
 //
 //   thesis:  subdivide a kept box when 0 is in F(box), 0 is in every component of the
 //            interval gradient, and its level is below the maximum; otherwise keep it as a
@@ -12,6 +13,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <variant>
@@ -37,8 +39,15 @@ struct LevelStats {
   std::size_t leaves = 0;      // of the kept, boxes not subdivided further
 };
 
+// A clipping ball: boxes wholly outside it are discarded like boxes where 0 is not in F.
+struct Ball {
+  std::array<double, 3> center{};
+  double radius = 0;
+};
+
 struct Octree {
   Box domain;
+  std::optional<Ball> ball;  // set: the domain is this ball (`domain` its bounding box)
   OctreeSettings settings;
   std::vector<OctreeLeaf> leaves;  // pre-order: a subtree's leaves are contiguous
   std::vector<LevelStats> levels;  // index = level, 0 .. settings.level
@@ -61,7 +70,10 @@ Box cellBox(const Box& domain, const std::array<std::uint32_t, 3>& cell, int lev
 
 // Never throws for user input: a bad level or domain, or a build that exceeds
 // settings.nodeBudget boxes, gives an OctreeError with a message for the user.
+// With `ball`, the domain is that ball and `domain` should be its bounding box: boxes wholly
+// outside the ball are discarded before F is evaluated on them.
 OctreeResult buildOctree(const Formula& formula, std::span<const double> params,
-                         const Box& domain, const OctreeSettings& settings);
+                         const Box& domain, const OctreeSettings& settings,
+                         std::optional<Ball> ball = std::nullopt);
 
 }  // namespace zs

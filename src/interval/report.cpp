@@ -15,6 +15,12 @@ std::string octreeReport(const Octree& tree) {
                 tree.domain.min[1], tree.domain.max[1], tree.domain.min[2], tree.domain.max[2],
                 tree.threads, tree.threads == 1 ? "" : "s");
   s << line;
+  if (tree.ball) {
+    std::snprintf(line, sizeof line, "clipped to the sphere of center (%g, %g, %g), radius %g\n",
+                  tree.ball->center[0], tree.ball->center[1], tree.ball->center[2],
+                  tree.ball->radius);
+    s << line;
+  }
   s << "level      tested        kept      leaves\n";
   for (std::size_t l = 0; l < tree.levels.size(); ++l) {
     const LevelStats& st = tree.levels[l];

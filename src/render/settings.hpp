@@ -21,12 +21,31 @@ struct Camera {
   bool operator==(const Camera&) const = default;
 };
 
+enum class DomainShape { Box, Sphere };
+
+// Where the surface is shown: the box [min, max] (the thesis' domain), or the ball of the
+// given center and radius (SURFER's clipping sphere), when min and max are not used.
 struct Domain {
   Vec3 min{-1.5, -1.5, -1.5};
   Vec3 max{1.5, 1.5, 1.5};
+  DomainShape shape = DomainShape::Box;
+  Vec3 center{0, 0, 0};
+  double radius = 1.5;
 
   bool operator==(const Domain&) const = default;
 };
+
+// The box the octree subdivides and rays are clipped to first: the box itself, or the
+// ball's bounding box (shape Box either way).
+inline Domain boundingBox(const Domain& d) {
+  if (d.shape == DomainShape::Box) return d;
+  Domain box;
+  for (int a = 0; a < 3; ++a) {
+    box.min[a] = d.center[a] - d.radius;
+    box.max[a] = d.center[a] + d.radius;
+  }
+  return box;
+}
 
 struct DirectionalLight {
   Vec3 direction{-0.4, -0.6, -1.0};  // direction the light travels

@@ -138,7 +138,7 @@ std::optional<SceneError> crossCheck(const Scene& scene, const KeyHistory& seen,
   };
   static constexpr const char* kAxis[] = {"x", "y", "z"};
   const Domain& d = scene.domain;
-  for (int i = 0; i < 3; ++i) {
+  for (int i = 0; i < 3 && d.shape == DomainShape::Box; ++i) {  // a sphere ignores min, max
     if (!(d.min[i] < d.max[i])) {
       return errorAt({"domain.min", "domain.max"},
                      std::string("domain.min.") + kAxis[i] + " (" + formatDouble(d.min[i]) +

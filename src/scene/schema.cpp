@@ -17,6 +17,7 @@ constexpr Range kUnit{0, 1};
 
 constexpr std::array<std::string_view, 2> kProjections{"perspective", "orthographic"};
 constexpr std::array<std::string_view, 2> kCriteria{"thesis", "uniform"};
+constexpr std::array<std::string_view, 2> kShapes{"box", "sphere"};  // order of DomainShape
 // Order of TracingMethod (render/settings.hpp).
 constexpr std::array<std::string_view, 3> kMethods{"auto", "bernstein", "sampling"};
 
@@ -29,6 +30,9 @@ const EnumRef kProjectionRef{
 const EnumRef kCriteriaRef{[](const Scene& s) { return static_cast<int>(s.octree.criteria); },
                            [](Scene& s, int v) { s.octree.criteria = static_cast<Criteria>(v); },
                            kCriteria};
+const EnumRef kShapeRef{[](const Scene& s) { return static_cast<int>(s.domain.shape); },
+                         [](Scene& s, int v) { s.domain.shape = static_cast<DomainShape>(v); },
+                         kShapes};
 const EnumRef kMethodRef{
     [](const Scene& s) { return static_cast<int>(s.render.tracing.method); },
     [](Scene& s, int v) { s.render.tracing.method = static_cast<TracingMethod>(v); }, kMethods};
@@ -43,6 +47,9 @@ const KeySpec kKeys[] = {
     {"image.height", ZS_FIELD(height), {1, 16384}},
     {"domain.min", ZS_FIELD(domain.min), kAny},
     {"domain.max", ZS_FIELD(domain.max), kAny},
+    {"domain.shape", kShapeRef, kAny},
+    {"domain.center", ZS_FIELD(domain.center), kAny},
+    {"domain.radius", ZS_FIELD(domain.radius), kPositive},
     {"camera.eye", ZS_FIELD(render.camera.eye), kAny},
     {"camera.target", ZS_FIELD(render.camera.target), kAny},
     {"camera.up", ZS_FIELD(render.camera.up), kAny, true},

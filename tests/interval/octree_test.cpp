@@ -2,6 +2,8 @@
 // node budget, input errors, the uniform criterion's area-like growth, the report and CSV.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <string>
 
@@ -37,6 +39,52 @@ TEST(Octree, UniformSphereLeavesGrowLikeTheArea) {
     }
     previous = t.leaves.size();
   }
+}
+
+TEST(Octree, AClippingBallDropsTheBoxesOutsideItAndKeepsEveryOneThatMeetsTheSurfaceInside) {
+  // The plane z = 0.3 in the ball of radius 1 (bounding box [-1, 1]^3), uniform to level 6.
+  OctreeSettings st;
+  st.level = 6;
+  st.criteria = Criteria::Uniform;
+  const Box bounds{{-1, -1, -1}, {1, 1, 1}};
+  const Formula plane = test::parseOrDie("z - 0.3");
+  const Octree box = std::get<Octree>(buildOctree(plane, {}, bounds, st));
+  const Octree ball = std::get<Octree>(buildOctree(plane, {}, bounds, st, Ball{{0, 0, 0}, 1.0}));
+  ASSERT_TRUE(ball.ball);
+  EXPECT_LT(ball.leaves.size(), box.leaves.size());
+  // The disc of radius sqrt(1 - 0.09) covers about 0.91 pi / 4 of the square: the leaves
+  // follow (plus the cells the rim cuts).
+  EXPECT_NEAR(double(ball.leaves.size()) / double(box.leaves.size()), 0.91 * M_PI / 4, 0.06);
+  const double cell = 2.0 / 64;
+  for (const OctreeLeaf& l : ball.leaves) {  // every leaf meets the ball
+    double d2 = 0;
+    for (std::size_t a = 0; a < 3; ++a) {
+      const double g = std::max({l.box.min[a], -l.box.max[a], 0.0});
+      d2 += g * g;
+    }
+    EXPECT_LE(std::sqrt(d2), 1.0 + 1e-12);
+  }
+  // Every box leaf that holds a point of the disc inside the ball is kept.
+  std::size_t insideBoxLeaves = 0;
+  for (const OctreeLeaf& l : box.leaves) {
+    const double cx = 0.5 * (l.box.min[0] + l.box.max[0]), cy = 0.5 * (l.box.min[1] + l.box.max[1]);
+    if (std::hypot(cx, cy) + cell < std::sqrt(1 - 0.09)) ++insideBoxLeaves;
+  }
+  std::size_t insideBallLeaves = 0;
+  for (const OctreeLeaf& l : ball.leaves) {
+    const double cx = 0.5 * (l.box.min[0] + l.box.max[0]), cy = 0.5 * (l.box.min[1] + l.box.max[1]);
+    if (std::hypot(cx, cy) + cell < std::sqrt(1 - 0.09)) ++insideBallLeaves;
+  }
+  EXPECT_EQ(insideBallLeaves, insideBoxLeaves);
+  EXPECT_NE(octreeReport(ball).find("clipped to the sphere of center (0, 0, 0), radius 1"),
+            std::string::npos);
+}
+
+TEST(Octree, AClippingBallNeedsAPositiveRadius) {
+  OctreeSettings st;
+  const OctreeResult r = buildOctree(test::parseOrDie("z"), {}, kCube, st, Ball{{0, 0, 0}, 0.0});
+  ASSERT_TRUE(std::holds_alternative<OctreeError>(r));
+  EXPECT_NE(std::get<OctreeError>(r).message.find("radius"), std::string::npos);
 }
 
 TEST(Octree, StatisticsAddUp) {

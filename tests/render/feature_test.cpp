@@ -227,6 +227,46 @@ TEST_F(Feature, HitsCountOnlyInsideTheClosedDomain) {
   EXPECT_GT(covered, 10);  // the patches around the diagonals
 }
 
+TEST_F(Feature, ASphereDomainClipsToTheBallAndMarksItsRim) {
+  // The cylinder x^2 + y^2 = 1 seen from the side, in the ball of radius 1.2: hits only
+  // where |p| <= 1.2, i.e. |z| <= sqrt(1.2^2 - 1), and the border color along that rim.
+  RenderSettings s = base();
+  s.camera.eye = {0, 4, 0};
+  s.camera.up = {0, 0, 1};
+  Domain ball;
+  ball.shape = DomainShape::Sphere;
+  ball.radius = 1.2;
+  s.border.enabled = false;
+  const Frame f = cylinder_->render(s, ball, kSize, kSize);
+  ASSERT_EQ(f.error, "");
+  int covered = 0;
+  for (int j = 0; j < kSize; ++j)
+    for (int i = 0; i < kSize; ++i) {
+      const float t = f.depth.at(i, j);
+      if (!std::isfinite(t)) continue;
+      ++covered;
+      const Ray ray = primaryRay(s.camera, kSize, kSize, i, j);
+      double r2 = 0;
+      for (int a = 0; a < 3; ++a) r2 += std::pow(ray.origin[a] + t * ray.direction[a], 2);
+      EXPECT_LE(std::sqrt(r2), 1.2 + 1e-4) << i << " " << j;
+    }
+  EXPECT_GT(covered, 40);
+  // The middle row meets the cylinder at y = 1; a row far above the band does not.
+  EXPECT_NEAR(f.depth.at(kSize / 2, kSize / 2), 3.0, 1e-3);
+  EXPECT_TRUE(std::isinf(f.depth.at(kSize / 2, 2)));
+  // The same box domain shows the cylinder up to the box's faces (|z| <= 1.2).
+  Domain box{{-1.2, -1.2, -1.2}, {1.2, 1.2, 1.2}};
+  const Frame boxed = cylinder_->render(s, box, kSize, kSize);
+  int boxCovered = 0;
+  for (int j = 0; j < kSize; ++j)
+    for (int i = 0; i < kSize; ++i) boxCovered += std::isfinite(boxed.depth.at(i, j));
+  EXPECT_GT(boxCovered, covered);
+  s.border.enabled = true;
+  s.border.threshold = 0.05;
+  const Frame rim = cylinder_->render(s, ball, kSize, kSize);
+  EXPECT_GT(test::fractionNear(rim.color, s.border.color), 0.005);
+}
+
 TEST_F(Feature, BoxProxyAndFullScreenTrianglesGiveTheSamePicture) {
   RenderSettings s = base();
   s.camera.eye = {1.0, 3.2, 3.9};

@@ -79,7 +79,8 @@ std::string loadLevel(const app::PreparedSurface& surface, Scene& scene, int lev
   scene.octree.level = level;
   const auto start = Clock::now();
   OctreeResult tree =
-      buildOctree(surface.formula, surface.params, app::toBox(scene.domain), scene.octree);
+      buildOctree(surface.formula, surface.params, app::toBox(scene.domain), scene.octree,
+                  app::toBall(scene.domain));
   if (auto* err = std::get_if<OctreeError>(&tree)) return err->message;
   const Octree& octree = std::get<Octree>(tree);
   const SphereHierarchy hierarchy = buildSphereHierarchy(octree);

@@ -98,8 +98,16 @@ void octreeAndDomain(Scene& scene) {
   int criteria = scene.octree.criteria == Criteria::Uniform;
   if (ImGui::Combo("criterion", &criteria, "thesis\0uniform\0"))
     scene.octree.criteria = criteria ? Criteria::Uniform : Criteria::Thesis;
-  dragVec("domain min", scene.domain.min, 0.02);
-  dragVec("domain max", scene.domain.max, 0.02);
+  int shape = scene.domain.shape == DomainShape::Sphere;
+  if (ImGui::Combo("domain shape", &shape, "box\0sphere\0"))
+    scene.domain.shape = shape ? DomainShape::Sphere : DomainShape::Box;
+  if (scene.domain.shape == DomainShape::Box) {
+    dragVec("domain min", scene.domain.min, 0.02);
+    dragVec("domain max", scene.domain.max, 0.02);
+  } else {
+    dragVec("sphere center", scene.domain.center, 0.02);
+    dragDouble("sphere radius", scene.domain.radius, 0.01, 1e-3, 1e6);
+  }
 }
 
 }  // namespace
