@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "render/camera.hpp"
 #include "render_support.hpp"
@@ -55,6 +56,19 @@ class Feature : public ::testing::Test {
   // Distance in pixels of pixel (i, j)'s center from the image center.
   static double radius(int i, int j, int size = kSize) {
     return std::hypot(i + 0.5 - size / 2.0, j + 0.5 - size / 2.0);
+  }
+  // The world points of the frame's hits, from its depth map and the camera.
+  static std::vector<Vec3> hitPoints(const Frame& f, const Camera& camera) {
+    std::vector<Vec3> points;
+    for (int j = 0; j < kSize; ++j)
+      for (int i = 0; i < kSize; ++i) {
+        const float t = f.depth.at(i, j);
+        if (!std::isfinite(t)) continue;
+        const Ray ray = primaryRay(camera, kSize, kSize, i, j);
+        points.push_back({ray.origin[0] + t * ray.direction[0], ray.origin[1] + t * ray.direction[1],
+                          ray.origin[2] + t * ray.direction[2]});
+      }
+    return points;
   }
   static inline RayTracer *sphere_ = nullptr, *torus_ = nullptr, *cylinder_ = nullptr;
 };
@@ -212,19 +226,10 @@ TEST_F(Feature, HitsCountOnlyInsideTheClosedDomain) {
   const Frame f = sphere_->render(s, box, kSize, kSize);
   ASSERT_EQ(f.error, "");
   EXPECT_TRUE(std::isinf(f.depth.at(kSize / 2, kSize / 2)));  // (0,0,+-1) is outside
-  int covered = 0;
-  for (int j = 0; j < kSize; ++j)
-    for (int i = 0; i < kSize; ++i) {
-      const float t = f.depth.at(i, j);
-      if (!std::isfinite(t)) continue;
-      ++covered;
-      const Ray ray = primaryRay(s.camera, kSize, kSize, i, j);
-      for (int a = 0; a < 3; ++a) {
-        const double p = ray.origin[a] + t * ray.direction[a];
-        EXPECT_LE(std::abs(p), 0.7 + 1e-4);
-      }
-    }
-  EXPECT_GT(covered, 10);  // the patches around the diagonals
+  const std::vector<Vec3> points = hitPoints(f, s.camera);
+  for (const Vec3& p : points)
+    for (int a = 0; a < 3; ++a) EXPECT_LE(std::abs(p[a]), 0.7 + 1e-4);
+  EXPECT_GT(points.size(), 10u);  // the patches around the diagonals
 }
 
 TEST_F(Feature, ASphereDomainClipsToTheBallAndMarksItsRim) {
@@ -239,28 +244,17 @@ TEST_F(Feature, ASphereDomainClipsToTheBallAndMarksItsRim) {
   s.border.enabled = false;
   const Frame f = cylinder_->render(s, ball, kSize, kSize);
   ASSERT_EQ(f.error, "");
-  int covered = 0;
-  for (int j = 0; j < kSize; ++j)
-    for (int i = 0; i < kSize; ++i) {
-      const float t = f.depth.at(i, j);
-      if (!std::isfinite(t)) continue;
-      ++covered;
-      const Ray ray = primaryRay(s.camera, kSize, kSize, i, j);
-      double r2 = 0;
-      for (int a = 0; a < 3; ++a) r2 += std::pow(ray.origin[a] + t * ray.direction[a], 2);
-      EXPECT_LE(std::sqrt(r2), 1.2 + 1e-4) << i << " " << j;
-    }
-  EXPECT_GT(covered, 40);
+  const std::vector<Vec3> points = hitPoints(f, s.camera);
+  for (const Vec3& p : points) EXPECT_LE(std::hypot(p[0], p[1], p[2]), 1.2 + 1e-4);
+  const std::size_t covered = points.size();
+  EXPECT_GT(covered, 40u);
   // The middle row meets the cylinder at y = 1; a row far above the band does not.
   EXPECT_NEAR(f.depth.at(kSize / 2, kSize / 2), 3.0, 1e-3);
   EXPECT_TRUE(std::isinf(f.depth.at(kSize / 2, 2)));
   // The same box domain shows the cylinder up to the box's faces (|z| <= 1.2).
   Domain box{{-1.2, -1.2, -1.2}, {1.2, 1.2, 1.2}};
   const Frame boxed = cylinder_->render(s, box, kSize, kSize);
-  int boxCovered = 0;
-  for (int j = 0; j < kSize; ++j)
-    for (int i = 0; i < kSize; ++i) boxCovered += std::isfinite(boxed.depth.at(i, j));
-  EXPECT_GT(boxCovered, covered);
+  EXPECT_GT(hitPoints(boxed, s.camera).size(), covered);
   s.border.enabled = true;
   s.border.threshold = 0.05;
   const Frame rim = cylinder_->render(s, ball, kSize, kSize);
