@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   zs::app::addShaderCommand(app);
   zs::app::addBenchCommand(app);
   zs::app::addViewCommand(app);
+  zs::app::addSingularCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -28,19 +28,6 @@ struct Cell {
 
 enum class Decision { Discard, Leaf, Subdivide };
 
-// True when no point of `box` lies in the ball: the box's nearest point to the center is
-// farther than the radius. The squared distance is rounded, so the test gives the box a
-// relative margin of 1e-12 before discarding it.
-bool outside(const Box& box, const Ball& ball) {
-  double d2 = 0;
-  for (std::size_t a = 0; a < 3; ++a) {
-    const double c = ball.center[a];
-    const double gap = c < box.min[a] ? box.min[a] - c : (c > box.max[a] ? c - box.max[a] : 0.0);
-    d2 += gap * gap;
-  }
-  return d2 > ball.radius * ball.radius * (1 + 1e-12);
-}
-
 struct Shared {
   const Tape& tape;
   std::span<const double> params;
@@ -61,7 +48,7 @@ class Walker {
     ++st.tested;
     if (++unshared_ == kBudgetBatch) flushBudget();
     const Box box = cellBox(s_.domain, cell.c, cell.level);
-    if (s_.ball && outside(box, *s_.ball)) return Decision::Discard;
+    if (s_.ball && boxOutsideBall(box, *s_.ball)) return Decision::Discard;
     const Interval f = eval_.evalFirst(box, s_.params);
     // Empty: F is defined nowhere in the box, so no surface point lies in it.
     if (f.isEmpty() || !f.containsZero()) return Decision::Discard;
@@ -138,6 +125,16 @@ std::string checkInput(const Formula& formula, std::span<const double> params, c
 }
 
 }  // namespace
+
+bool boxOutsideBall(const Box& box, const Ball& ball) {
+  double d2 = 0;  // squared distance from the center to the box's nearest point
+  for (std::size_t a = 0; a < 3; ++a) {
+    const double c = ball.center[a];
+    const double gap = c < box.min[a] ? box.min[a] - c : (c > box.max[a] ? c - box.max[a] : 0.0);
+    d2 += gap * gap;
+  }
+  return d2 > ball.radius * ball.radius * (1 + 1e-12);
+}
 
 std::size_t Octree::testedCount() const {
   std::size_t n = 0;

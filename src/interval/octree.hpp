@@ -45,6 +45,10 @@ struct Ball {
   double radius = 0;
 };
 
+// True when no point of `box` lies in the ball (with a relative margin of 1e-12 against the
+// rounding of the squared distance): such boxes can be dropped.
+bool boxOutsideBall(const Box& box, const Ball& ball);
+
 struct Octree {
   Box domain;
   std::optional<Ball> ball;  // set: the domain is this ball (`domain` its bounding box)
