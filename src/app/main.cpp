@@ -2,7 +2,11 @@
 // cmd_*.cpp; this file only assembles them.
 #include <CLI/CLI.hpp>
 
+#include <string>
+#include <vector>
+
 #include "app/commands.hpp"
+#include "app/formula_args.hpp"
 
 #ifndef ZS_VERSION
 #define ZS_VERSION "unknown"
@@ -20,8 +24,12 @@ int main(int argc, char** argv) {
   zs::app::addBenchCommand(app);
   zs::app::addViewCommand(app);
   zs::app::addSingularCommand(app);
+  std::vector<std::string> args(argv, argv + argc);
+  zs::app::protectMinusFormulas(args, app);
+  std::vector<char*> pointers;
+  for (std::string& a : args) pointers.push_back(a.data());
   try {
-    app.parse(argc, argv);
+    app.parse(int(pointers.size()), pointers.data());
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }

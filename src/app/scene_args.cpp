@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "app/formula_args.hpp"
 #include "scene/scene_io.hpp"
 
 namespace zs::app {
@@ -10,6 +11,7 @@ void addSceneOptions(CLI::App& cmd, SceneArgs& args, bool inputRequired) {
   auto* input = cmd.add_option("input", args.input,
                                "a .surf scene file, or a formula such as \"x^2+y^2+z^2-1\"");
   if (inputRequired) input->required();
+  unprotectFormula(*input);
   cmd.add_option("--set", args.sets,
                  "override a scene key: KEY=VALUE with a dotted key and a TOML value, e.g. "
                  "--set camera.eye=[0,0,3] --set params.a=0.2 (repeatable)")
