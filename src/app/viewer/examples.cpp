@@ -60,12 +60,15 @@ std::vector<fs::path> surfFiles(const fs::path& dir) {
 
 fs::path findExamplesDir() {
   std::vector<fs::path> candidates;
+  const fs::path exe = executableDir();
   if (const char* env = std::getenv("ZS_SOURCE_DIR"); env && *env)
     candidates.push_back(fs::path(env) / "examples");
+  // An installed binary's gallery (packaging/CMakeLists.txt), before the build's source tree.
+  if (!exe.empty()) candidates.push_back(exe / ".." / "share" / "zeroset" / "examples");
 #ifdef ZS_SOURCE_DIR
   candidates.push_back(fs::path(ZS_SOURCE_DIR) / "examples");
 #endif
-  if (fs::path exe = executableDir(); !exe.empty()) {
+  if (!exe.empty()) {
     candidates.push_back(exe / ".." / "examples");
     candidates.push_back(exe / ".." / ".." / "examples");
   }
