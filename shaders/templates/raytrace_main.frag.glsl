@@ -160,6 +160,26 @@ void main() {
 #endif
       color += passScale * transmit * rt.background;  // what the kept hits let through
     } while (++pass < passes && colorRay && firstT >= 0.0);
+#ifdef RT_MARKERS
+    // highlights.singular: the certified singular points as small spheres, drawn where they
+    // are nearer than the surface (a constant loop: unrolled, constant indices).
+    float tMark = firstT >= 0.0 ? firstT : uintBitsToFloat(0x7F800000u);
+    vec3 nMark = vec3(0.0);
+    bool marked = false;
+    for (int k = 0; k < RT_MARKER_COUNT; ++k) {
+      vec3 oc = ro - rtMarkers[k].xyz;
+      float b = dot(oc, rd), c = dot(oc, oc) - rtMarkers[k].w * rtMarkers[k].w;
+      float disc = b * b - c * dot(rd, rd), tm = (-b - sqrt(max(disc, 0.0))) / dot(rd, rd);
+      bool hit = disc >= 0.0 && tm > 0.0 && tm < tMark;
+      tMark = hit ? tm : tMark;
+      nMark = hit ? (ro + tm * rd - rtMarkers[k].xyz) / rtMarkers[k].w : nMark;
+      marked = marked || hit;
+    }
+    if (marked) {
+      color = rtMarkerColor * (0.35 + 0.65 * max(dot(nMark, rt.dirLightTo), 0.0));
+      firstT = tMark;
+    }
+#endif
     if (s == centerRay && firstT >= 0.0) depth = firstT;
     if (colorRay) sum += color;
   } while (++s < rays);

@@ -8,6 +8,7 @@
 #include "interval/sphere_builder.hpp"
 #include "parser/parser.hpp"
 #include "scene/scene_io.hpp"
+#include "singular/singular.hpp"
 
 namespace zs::app {
 
@@ -49,6 +50,30 @@ TracingMethod resolveMethod(TracingMethod asked, const Formula& formula, std::st
   return TracingMethod::Sampling;
 }
 
+namespace {
+
+// highlights.singular: the certified singular points of the scene's domain (src/singular),
+// with a budget that keeps a surface whose singular set is a curve from stalling the build.
+void findMarkedPoints(const Scene& scene, PreparedSurface& s) {
+  SingularSettings settings;
+  settings.maxDepth = 12;
+  settings.boxBudget = 500'000;
+  auto found = findSingularPoints(s.formula, s.params, toBox(scene.domain), toBall(scene.domain),
+                                  settings);
+  if (auto* err = std::get_if<std::string>(&found)) {
+    s.singularNote = "note: no singular points marked: " + *err + "\n";
+    return;
+  }
+  const SingularResult& r = std::get<SingularResult>(found);
+  for (const SingularPoint& p : r.points) s.singularPoints.push_back(p.point);
+  if (!r.uncertified.empty())
+    s.singularNote = "note: " + std::to_string(s.singularPoints.size()) +
+                     " certified singular points marked; some regions could not be certified "
+                     "(zeroset singular lists them)\n";
+}
+
+}  // namespace
+
 std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bool validate) {
   PreparedSurface s;
   auto t = std::chrono::steady_clock::now();
@@ -70,11 +95,17 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bo
   t = std::chrono::steady_clock::now();
   s.glsl = emitFormulaGlsl(s.formula.graph, s.formula.root, s.gradient);
   s.method = resolveMethod(scene.render.tracing.method, s.formula, s.methodWarning);
+  std::string markers;
+  if (scene.render.singular.enabled) {
+    findMarkedPoints(scene, s);
+    markers = markerBlock(s.singularPoints, scene.render.singular.threshold,
+                          scene.render.singular.color);
+  }
   if (s.method == TracingMethod::Bernstein) {
     s.rayPolynomial = emitRayPolynomialGlsl(s.formula.graph, s.formula.root);
-    s.fragmentShader = assembleFragmentShader(s.glsl, *s.rayPolynomial);
+    s.fragmentShader = assembleFragmentShader(s.glsl, *s.rayPolynomial, markers);
   } else {
-    s.fragmentShader = assembleFragmentShader(s.glsl);
+    s.fragmentShader = assembleFragmentShader(s.glsl, markers);
   }
   s.vertexShader = std::string(vertexShaderSource());
   s.times.codegenMs = msSince(t);

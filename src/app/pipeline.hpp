@@ -30,6 +30,10 @@ struct PreparedSurface {
   std::string methodWarning;  // why the method asked for could not be used ("" if it was)
   GlslFormula glsl;
   std::optional<RayPolynomialGlsl> rayPolynomial;  // Bernstein only
+  // highlights.singular: the certified singular points drawn, and what to tell the user (a
+  // search that failed or left regions uncertified); empty when the highlight is off.
+  std::vector<std::array<double, 3>> singularPoints;
+  std::string singularNote;
   std::string vertexShader, fragmentShader;
   StageTimes times;
 

@@ -1,5 +1,6 @@
 #include "codegen/shader_assembly.hpp"
 
+#include <cstdio>
 #include <stdexcept>
 
 #include "codegen/embedded_templates.hpp"
@@ -50,7 +51,8 @@ std::string_view shaderTemplate(std::string_view fileName) {
 
 namespace {
 
-std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly) {
+std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
+                     std::string_view markers) {
   const std::string_view prelude = shaderTemplate(kPreludeTemplate);
   const std::string_view raytrace = shaderTemplate(kRaytraceTemplate);
   const std::string_view march = shaderTemplate(poly ? kBernsteinTemplate : kSamplingTemplate);
@@ -72,6 +74,7 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly) 
   }
   appendPiece(out, "shaders/templates/" + std::string(kFrameTemplate), string++,
               "#define RT_FRAME_STORAGE in\n" + std::string(shaderTemplate(kFrameTemplate)));
+  if (!markers.empty()) appendPiece(out, "highlights.singular markers", string++, markers);
   appendPiece(out, "shaders/templates/" + std::string(kRaytraceTemplate), string++, raytrace);
   appendPiece(out, "shaders/templates/" + std::string(poly ? kBernsteinTemplate : kSamplingTemplate), string, march);
   return out;
@@ -79,10 +82,35 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly) 
 
 }  // namespace
 
-std::string assembleFragmentShader(const GlslFormula& formula) { return assemble(formula, nullptr); }
+std::string assembleFragmentShader(const GlslFormula& formula, std::string_view markers) {
+  return assemble(formula, nullptr, markers);
+}
 
-std::string assembleFragmentShader(const GlslFormula& formula, const RayPolynomialGlsl& poly) {
-  return assemble(formula, &poly);
+std::string assembleFragmentShader(const GlslFormula& formula, const RayPolynomialGlsl& poly,
+                                   std::string_view markers) {
+  return assemble(formula, &poly, markers);
+}
+
+std::string markerBlock(const std::vector<std::array<double, 3>>& points, double radius,
+                        const std::array<double, 3>& color) {
+  if (points.empty()) return {};
+  auto f = [](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", v);
+    std::string t = text;
+    if (t.find_first_of(".e") == std::string::npos) t += ".0";
+    return t;
+  };
+  const std::string n = std::to_string(points.size());
+  std::string s = "#define RT_MARKERS\nconst int RT_MARKER_COUNT = " + n + ";\n";
+  s += "const vec4 rtMarkers[" + n + "] = vec4[" + n + "](";
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    s += (i ? ",\n    " : "\n    ") + std::string("vec4(") + f(points[i][0]) + ", " +
+         f(points[i][1]) + ", " + f(points[i][2]) + ", " + f(radius) + ")";
+  }
+  s += ");\nconst vec3 rtMarkerColor = vec3(" + f(color[0]) + ", " + f(color[1]) + ", " +
+       f(color[2]) + ");\n";
+  return s;
 }
 
 std::string vertexShaderSource() {

@@ -12,8 +12,10 @@
 //
 // A comment naming its origin and `#line 1 <string>` precede pieces 2 and 3, so compiler
 // logs ("0:12", "1:7", "2:40") point into the right piece at the right line.
+#include <array>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "codegen/emit_glsl.hpp"
 #include "codegen/emit_ray_polynomial.hpp"
@@ -31,14 +33,20 @@ inline constexpr std::string_view kFrameTemplate = "frame_params.glsl";  // both
 // throws std::logic_error naming the templates that exist.
 std::string_view shaderTemplate(std::string_view fileName);
 
+// Constants for highlights.singular: the marked points, their radius and color, as a block
+// that defines RT_MARKERS (raytrace_main.frag.glsl draws them); empty for no points.
+std::string markerBlock(const std::vector<std::array<double, 3>>& points, double radius,
+                        const std::array<double, 3>& color);
+
 // Prelude + formula block + ray tracer with the thesis' sampling march. Throws
 // std::logic_error if the ray tracer never calls zs_F or zs_FGrad (the formula block would
 // be an unused piece).
-std::string assembleFragmentShader(const GlslFormula& formula);
+std::string assembleFragmentShader(const GlslFormula& formula, std::string_view markers = {});
 
 // The same with the exact Bernstein march: the ray polynomial block (emit_ray_polynomial.hpp)
 // follows the formula block.
-std::string assembleFragmentShader(const GlslFormula& formula, const RayPolynomialGlsl& poly);
+std::string assembleFragmentShader(const GlslFormula& formula, const RayPolynomialGlsl& poly,
+                                   std::string_view markers = {});
 
 // fullscreen.vert.glsl with frame_params.glsl (as outputs) after its #version line.
 std::string vertexShaderSource();

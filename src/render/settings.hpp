@@ -113,7 +113,8 @@ struct Tracing {
 
 struct Highlight {
   bool enabled = true;
-  double threshold = 0.15;  // silhouette: |cos| below; border: distance to a face below
+  // silhouette: |cos| below; border: distance to a face below; singular: marker radius
+  double threshold = 0.15;
   Vec3 color{0.05, 0.05, 0.05};
 
   bool operator==(const Highlight&) const = default;
@@ -133,6 +134,8 @@ struct RenderSettings {
   Tracing tracing;
   Highlight silhouette{true, 0.15, {0.05, 0.05, 0.05}};
   Highlight border{true, 0.01, {0.9, 0.9, 0.9}};
+  // Certified singular points (src/singular) drawn as small spheres of this radius.
+  Highlight singular{false, 0.04, {0.9, 0.15, 0.55}};
   Reflection reflection;
   double opacity = 1.0;  // < 1 blends the kept hits front to back
   int samples = 1;       // N x N supersampling

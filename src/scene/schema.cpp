@@ -83,6 +83,9 @@ const KeySpec kKeys[] = {
     {"highlights.border.enabled", ZS_FIELD(render.border.enabled), kAny},
     {"highlights.border.tolerance", ZS_FIELD(render.border.threshold), kNonNegative},
     {"highlights.border.color", ZS_FIELD(render.border.color), kUnit},
+    {"highlights.singular.enabled", ZS_FIELD(render.singular.enabled), kAny},
+    {"highlights.singular.radius", ZS_FIELD(render.singular.threshold), kPositive},
+    {"highlights.singular.color", ZS_FIELD(render.singular.color), kUnit},
     {"reflection.enabled", ZS_FIELD(render.reflection.enabled), kAny},
     {"reflection.primary_weight", ZS_FIELD(render.reflection.primaryWeight), kUnit},
 };

@@ -261,6 +261,52 @@ TEST_F(Feature, ASphereDomainClipsToTheBallAndMarksItsRim) {
   EXPECT_GT(test::fractionNear(rim.color, s.border.color), 0.005);
 }
 
+TEST_F(Feature, SingularPointMarkersAreDrawnInFrontOfTheSurface) {
+  // The Cayley cubic's four nodes (docs/singular.md), marked; both methods draw the marks.
+  const std::vector<std::array<double, 3>> nodes{
+      {-0.5, -0.5, -0.5}, {-0.5, 0.5, 0.5}, {0.5, -0.5, 0.5}, {0.5, 0.5, -0.5}};
+  for (TracingMethod method : {TracingMethod::Bernstein, TracingMethod::Sampling}) {
+    std::string error;
+    test::SurfaceSpec spec{"4*(x^2 + y^2 + z^2) + 16*x*y*z - 1", {}, 1};
+    spec.method = method;
+    spec.markers = nodes;
+    auto marked = test::makeTracer(spec, error);
+    ASSERT_NE(marked, nullptr) << error;
+    RenderSettings s = base();
+    s.camera.eye = {2.4, 1.8, 3.2};
+    const Vec3 pink{0.9, 0.15, 0.55};
+    const Frame f = marked->render(s, Domain{}, kSize, kSize);
+    ASSERT_EQ(f.error, "");
+    // A node in view: the pixel whose ray passes through it shows the marker, in front.
+    const CameraBasis basis = cameraBasis(s.camera);
+    int seen = 0;
+    for (const auto& n : nodes) {
+      // Project the node onto the image plane (docs/camera.md) and look at that pixel.
+      Vec3 v{n[0] - basis.eye[0], n[1] - basis.eye[1], n[2] - basis.eye[2]};
+      const double z = v[0] * basis.forward[0] + v[1] * basis.forward[1] + v[2] * basis.forward[2];
+      const double x = (v[0] * basis.right[0] + v[1] * basis.right[1] + v[2] * basis.right[2]) / z;
+      const double y = (v[0] * basis.up[0] + v[1] * basis.up[1] + v[2] * basis.up[2]) / z;
+      const double half = std::tan(20.0 * M_PI / 180.0);
+      const int i = int((x / half + 1) * kSize / 2), j = int((1 - y / half) * kSize / 2);
+      if (i < 0 || j < 0 || i >= kSize || j >= kSize) continue;
+      const float t = f.depth.at(i, j);
+      const double distance = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      if (std::abs(t - distance) < 0.1) {  // the marker, not a sheet in front of it
+        ++seen;
+        const auto c = at(f.color, i, j);
+        // Pink, shaded: red and blue well above green (the materials are orange and blue).
+        EXPECT_GT(c[0], c[1] + 0.2) << "node " << n[0] << " " << n[1] << " " << n[2];
+        EXPECT_GT(c[2], c[1] + 0.1) << "node " << n[0] << " " << n[1] << " " << n[2];
+      }
+    }
+    EXPECT_GE(seen, 2);
+    spec.markers.clear();
+    auto plain = test::makeTracer(spec, error);
+    ASSERT_NE(plain, nullptr) << error;
+    EXPECT_EQ(test::fractionNear(plain->render(s, Domain{}, kSize, kSize).color, pink, 12), 0.0);
+  }
+}
+
 TEST_F(Feature, BoxProxyAndFullScreenTrianglesGiveTheSamePicture) {
   RenderSettings s = base();
   s.camera.eye = {1.0, 3.2, 3.9};

@@ -50,9 +50,11 @@ std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& erro
   const std::optional<int> degree = rayPolynomialDegree(formula.graph, formula.root);
   const bool bernstein = degree && (spec.method == TracingMethod::Bernstein ||
                                     (spec.method == TracingMethod::Auto && *degree <= kMaxBernsteinDegree));
+  const std::string markers = markerBlock(spec.markers, spec.markerRadius, spec.markerColor);
   const std::string fragment =
-      bernstein ? assembleFragmentShader(glsl, *emitRayPolynomialGlsl(formula.graph, formula.root))
-                : assembleFragmentShader(glsl);
+      bernstein ? assembleFragmentShader(glsl, *emitRayPolynomialGlsl(formula.graph, formula.root),
+                                         markers)
+                : assembleFragmentShader(glsl, markers);
   auto tracer = std::make_unique<RayTracer>();
   if (!tracer->build(vertexShaderSource(), fragment, error)) return nullptr;
   if (error = tracer->setHierarchy(packed); !error.empty()) return nullptr;

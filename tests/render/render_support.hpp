@@ -3,6 +3,7 @@
 // real pipeline from formula text to a ready RayTracer (parser -> gradient -> GLSL ->
 // octree -> hierarchy), and reference-image comparison with ZS_UPDATE_REFERENCE=1 to
 // regenerate the PNGs under tests/render/reference.
+#include <array>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -31,6 +32,10 @@ struct SurfaceSpec {
   // Auto: Bernstein for polynomials up to the degree limit, as the app; Bernstein: for every
   // polynomial, beyond the limit too.
   TracingMethod method = TracingMethod::Auto;
+  // highlights.singular markers (codegen/shader_assembly.hpp markerBlock); none by default.
+  std::vector<std::array<double, 3>> markers{};
+  double markerRadius = 0.05;
+  std::array<double, 3> markerColor{0.9, 0.15, 0.55};
 };
 
 // Builds a ray tracer for `spec` on the current context. Returns null with `error` set

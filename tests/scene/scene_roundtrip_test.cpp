@@ -33,6 +33,7 @@ Scene everyKeyChanged() {
   r.tracing = {TracingMethod::Sampling, 17, 1e-7 / 3, 77, 9};
   r.silhouette = {false, 0.33, {0.5, 0.25, 0.125}};
   r.border = {false, 0.0625, {0.2, 0.1, 0.05}};
+  r.singular = {true, 0.125, {0.3, 0.6, 0.9}};
   r.reflection = {false, 0.55};
   r.opacity = 0.4;
   r.samples = 3;

@@ -119,6 +119,7 @@ void drawSettings(Scene& scene) {
   if (ImGui::CollapsingHeader("highlights")) {
     highlight("silhouette", scene.render.silhouette);
     highlight("border", scene.render.border);
+    highlight("singular points", scene.render.singular);
   }
   if (ImGui::CollapsingHeader("lights")) lights(scene.render.lights);
   if (ImGui::CollapsingHeader("materials")) {

@@ -14,7 +14,8 @@ namespace {
 
 bool needsBuild(const Scene& a, const Scene& b) {
   return a.formula != b.formula || a.params != b.params || a.domain != b.domain ||
-         a.octree != b.octree || a.render.tracing.method != b.render.tracing.method;
+         a.octree != b.octree || a.render.tracing.method != b.render.tracing.method ||
+         a.render.singular != b.render.singular;  // the markers are part of the shader
 }
 
 }  // namespace
