@@ -66,6 +66,7 @@ void drawStats(const PanelStats& s) {
               s.height / std::max(1, s.traceScale), s.traceScale > 1 ? " (reduced)" : "");
   ImGui::Text("build %.0f ms: %zu leaves, %zu spheres%s", s.buildMs, s.leaves, s.spheres,
               s.building ? " (building...)" : "");
+  if (s.singularPoints >= 0) ImGui::Text("%d certified singular points", s.singularPoints);
   if (!s.example.empty()) ImGui::Text("example %s", s.example.c_str());
   if (!s.status.empty() && s.status.rfind("example ", 0) != 0)
     ImGui::TextWrapped("%s", s.status.c_str());

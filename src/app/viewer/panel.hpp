@@ -22,6 +22,7 @@ struct PanelStats {
   double buildMs = 0;      // request to upload, for the shown surface
   std::size_t leaves = 0;  // octree leaves of the shown surface
   std::size_t spheres = 0;
+  int singularPoints = -1;  // marked by highlights.singular; -1 when the highlight is off
   bool building = false;
   std::string example;     // name of the example on screen, if any
   std::string status;      // the latest action's message
