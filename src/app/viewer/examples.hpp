@@ -19,7 +19,8 @@ struct Example {
   std::string formula;          // built-ins only
 };
 
-// The examples/ folder: $ZS_SOURCE_DIR/examples, the compile-time source tree, or
+// The examples/ folder: $ZS_SOURCE_DIR/examples, the installed gallery
+// ../share/zeroset/examples beside the executable's folder (mirrored in the build tree), or
 // ../examples and ../../examples next to the executable, the first one that exists.
 std::filesystem::path findExamplesDir();
 
