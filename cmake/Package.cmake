@@ -9,7 +9,7 @@ set(ZS_DEB_MAINTAINER "zeroset maintainers <maintainers@users.noreply.h-seed-cd0
 set(CPACK_PACKAGE_NAME zeroset)
 set(CPACK_PACKAGE_VENDOR "the zeroset authors")
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
-set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "ray tracer for implicit surfaces F(x,y,z) = 0")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "ray tracer for implicit surfaces F(x, y, z) = 0")
 set(CPACK_PACKAGE_CONTACT ${ZS_DEB_MAINTAINER})
 set(CPACK_GENERATOR DEB)
 set(CPACK_STRIP_FILES ON)
@@ -22,6 +22,13 @@ set(CPACK_DEBIAN_PACKAGE_SECTION math)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "libgl1, libgl1-mesa-dri")
+# Stripped as dh_strip strips, and the lintian overrides (cmake/DebStaging.cmake).
+set(CPACK_PRE_BUILD_SCRIPTS ${PROJECT_SOURCE_DIR}/cmake/DebStaging.cmake)
+# CPack hands that script the CPACK_* variables only.
+set(CPACK_ZS_LINTIAN_OVERRIDES ${PROJECT_SOURCE_DIR}/packaging/lintian-overrides)
+# Full RELRO (-z now: the global offset table read-only after start-up), as Debian's
+# hardening flags ask of a packaged program.
+target_link_options(zeroset PRIVATE LINKER:-z,relro LINKER:-z,now)
 # The long description; CPack puts the summary above it and formats it for the control file.
 set(CPACK_DEBIAN_PACKAGE_DESCRIPTION
 "zeroset draws the surface where a formula in x, y and z is zero: type a
