@@ -72,3 +72,22 @@ install(DIRECTORY data/icons/hicolor DESTINATION ${CMAKE_INSTALL_DATADIR}/icons)
 install(FILES data/zeroset-mime.xml DESTINATION ${CMAKE_INSTALL_DATADIR}/mime/packages
         RENAME zeroset.xml)
 install(FILES data/zeroset.thumbnailer DESTINATION ${CMAKE_INSTALL_DATADIR}/thumbnailers)
+
+# A plain `cmake --install` refreshes the desktop's caches for the prefix, as a package's
+# triggers would, so .surf files are known at once; staged installs (DESTDIR, CPack) skip it.
+install(CODE "
+  if(\"\$ENV{DESTDIR}\" STREQUAL \"\")
+    set(share \"\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_DATADIR}\")
+    find_program(zs_update_mime update-mime-database)
+    find_program(zs_update_desktop update-desktop-database)
+    find_program(zs_update_icons gtk-update-icon-cache)
+    if(zs_update_mime)
+      execute_process(COMMAND \${zs_update_mime} \${share}/mime)
+    endif()
+    if(zs_update_desktop)
+      execute_process(COMMAND \${zs_update_desktop} -q \${share}/applications)
+    endif()
+    if(zs_update_icons)
+      execute_process(COMMAND \${zs_update_icons} -q -t -f \${share}/icons/hicolor)
+    endif()
+  endif()")
