@@ -85,7 +85,8 @@ ValueKind valueKind(const OptionDoc& option) {
   if (option.value.empty() || !option.choices.empty()) return ValueKind::None;
   const std::string name = primaryName(option);
   if (option.positional) return name == "input" ? ValueKind::SceneFile : ValueKind::None;
-  for (const char* file : {"--output", "--depth", "--dump"})
+  if (option.value != "TEXT") return ValueKind::None;  // singular's --depth is a number
+  for (const char* file : {"--output", "--depth", "--dump", "--csv", "--json"})
     if (name == file) return ValueKind::File;
   for (const char* dir : {"--out", "--output-dir"})
     if (name == dir) return ValueKind::Directory;
