@@ -3,6 +3,7 @@
 # packages are present it only checks and returns (well under a second).
 #   scripts/install-deps.sh          build + run + test dependencies
 #   scripts/install-deps.sh --fuzz   also clang and its libFuzzer runtime
+#   scripts/install-deps.sh --deb    also lintian, for scripts/build-deb.sh
 set -euo pipefail
 
 packages=(
@@ -14,8 +15,16 @@ packages=(
   libpng-dev libimgui-dev libcli11-dev libtomlplusplus-dev libedit-dev
   libgtest-dev libgmock-dev libbenchmark-dev libmpfi-dev libmpfr-dev libgmp-dev
   xvfb xauth xdotool
+  # the install tests (tests/install): man -l on the installed page
+  man-db
 )
-if [[ "${1:-}" == "--fuzz" ]]; then packages+=(clang libclang-rt-14-dev); fi
+for option in "$@"; do
+  case $option in
+    --fuzz) packages+=(clang libclang-rt-14-dev) ;;
+    --deb) packages+=(lintian) ;;
+    *) echo "install-deps.sh: unknown option $option" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do

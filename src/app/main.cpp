@@ -1,29 +1,18 @@
 // zeroset: implicit surfaces F(x, y, z) = 0, ray-traced. Each subcommand lives in its own
-// cmd_*.cpp; this file only assembles them.
+// cmd_*.cpp; cli.cpp assembles them.
 #include <CLI/CLI.hpp>
 
 #include <string>
 #include <vector>
 
+#include "app/cli.hpp"
 #include "app/commands.hpp"
 #include "app/formula_args.hpp"
 
-#ifndef ZS_VERSION
-#define ZS_VERSION "unknown"
-#endif
-
 int main(int argc, char** argv) {
   if (argc == 1) return zs::app::runPrompt();
-  CLI::App app{"zeroset - see implicit surfaces F(x,y,z) = 0"};
-  app.set_version_flag("--version", std::string("zeroset ") + ZS_VERSION);
-  app.require_subcommand(1);
-  zs::app::addCheckCommand(app);
-  zs::app::addRenderCommand(app);
-  zs::app::addOctreeCommand(app);
-  zs::app::addShaderCommand(app);
-  zs::app::addBenchCommand(app);
-  zs::app::addViewCommand(app);
-  zs::app::addSingularCommand(app);
+  CLI::App app;
+  zs::app::addCommands(app);
   std::vector<std::string> args(argv, argv + argc);
   zs::app::protectMinusFormulas(args, app);
   std::vector<char*> pointers;

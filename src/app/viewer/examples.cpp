@@ -1,5 +1,8 @@
-// Example discovery. The source tree is found at run time first ($ZS_SOURCE_DIR, which the
-// test suite sets) so an installed or moved binary can still be pointed at a checkout.
+// Example discovery. $ZS_SOURCE_DIR (which the test suite sets) points any binary at a
+// checkout; otherwise the gallery is found relative to the executable, where it is
+// installed (PREFIX/bin/zeroset finds PREFIX/share/zeroset/examples, so an installed tree
+// may be moved). The build tree mirrors that layout with a link (src/app/CMakeLists.txt),
+// so no path into the source tree is compiled in.
 #include "app/viewer/examples.hpp"
 
 #include <unistd.h>
@@ -60,15 +63,10 @@ std::vector<fs::path> surfFiles(const fs::path& dir) {
 
 fs::path findExamplesDir() {
   std::vector<fs::path> candidates;
-  const fs::path exe = executableDir();
   if (const char* env = std::getenv("ZS_SOURCE_DIR"); env && *env)
     candidates.push_back(fs::path(env) / "examples");
-  // An installed binary's gallery (packaging/CMakeLists.txt), before the build's source tree.
-  if (!exe.empty()) candidates.push_back(exe / ".." / "share" / "zeroset" / "examples");
-#ifdef ZS_SOURCE_DIR
-  candidates.push_back(fs::path(ZS_SOURCE_DIR) / "examples");
-#endif
-  if (!exe.empty()) {
+  if (fs::path exe = executableDir(); !exe.empty()) {
+    candidates.push_back(exe / ".." / "share" / "zeroset" / "examples");
     candidates.push_back(exe / ".." / "examples");
     candidates.push_back(exe / ".." / ".." / "examples");
   }

@@ -19,9 +19,9 @@ struct Example {
   std::string formula;          // built-ins only
 };
 
-// The examples/ folder: $ZS_SOURCE_DIR/examples, ../share/zeroset/examples next to the
-// executable (installed), the compile-time source tree, or ../examples and ../../examples
-// next to the executable, the first one that exists.
+// The examples/ folder: $ZS_SOURCE_DIR/examples, the installed gallery
+// ../share/zeroset/examples beside the executable's folder (mirrored in the build tree), or
+// ../examples and ../../examples next to the executable, the first one that exists.
 std::filesystem::path findExamplesDir();
 
 std::vector<Example> listExamples(const std::filesystem::path& examplesDir);
