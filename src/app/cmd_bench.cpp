@@ -8,12 +8,12 @@
 // `zeroset bench INPUT [--set KEY=VALUE]... [--size WxH] [--frames N]`: one formula or
 // scene, both methods side by side, a Markdown table on stdout.
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "app/bench/bench_report.hpp"
 #include "app/bench/fps_plot.hpp"
 #include "app/commands.hpp"
+#include "app/text_output.hpp"
 #include "app/scene_args.hpp"
 
 namespace zs::app {
@@ -30,14 +30,6 @@ struct BenchArgs {
   std::string out = "bench-results";
   std::string backend = "egl";
 };
-
-bool writeText(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream file(path, std::ios::binary);
-  file << text;
-  if (file) return true;
-  std::cerr << "error: cannot write " << path.string() << "\n";
-  return false;
-}
 
 int runInput(const BenchArgs& args, const bench::BenchOptions& options) {
   std::optional<Scene> scene = loadSceneArgs(args.scene);
@@ -92,9 +84,9 @@ int runBench(const BenchArgs& args) {
   }
   const std::filesystem::path dir = options.outDir;
   const std::string markdown = bench::markdownReport(results);
-  bool ok = writeText(dir / "bench.md", markdown) &&
-            writeText(dir / "bench.csv", bench::configCsv(results)) &&
-            writeText(dir / "first_frame.csv", bench::firstFrameCsv(results));
+  bool ok = writeTextFile(dir / "bench.md", markdown) &&
+            writeTextFile(dir / "bench.csv", bench::configCsv(results)) &&
+            writeTextFile(dir / "first_frame.csv", bench::firstFrameCsv(results));
   if (std::string err = writePng((dir / "fps_by_level.png").string(),
                                  bench::fpsByLevelPlot(results));
       !err.empty()) {

@@ -2,10 +2,10 @@
 // [--json FILE]`: the certified singular points of F = 0 in the scene's domain (box or
 // sphere), with the regions that could not be certified; src/singular does the work.
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "app/text_output.hpp"
 #include "app/pipeline.hpp"
 #include "app/scene_args.hpp"
 #include "parser/parser.hpp"
@@ -21,14 +21,6 @@ struct SingularArgs {
   int depth = SingularSettings{}.maxDepth;
   std::string csv, json;
 };
-
-bool writeFile(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (out) return true;
-  std::cerr << "error: cannot write " << path << "\n";
-  return false;
-}
 
 int runSingular(const SingularArgs& args) {
   std::optional<Scene> scene = loadSceneArgs(args.scene);
@@ -60,8 +52,8 @@ int runSingular(const SingularArgs& args) {
   std::fflush(stdout);
   std::cout << singularTable(result);
   bool ok = true;
-  if (!args.csv.empty()) ok = writeFile(args.csv, singularCsv(result)) && ok;
-  if (!args.json.empty()) ok = writeFile(args.json, singularJson(result)) && ok;
+  if (!args.csv.empty()) ok = writeTextFile(args.csv, singularCsv(result)) && ok;
+  if (!args.json.empty()) ok = writeTextFile(args.json, singularJson(result)) && ok;
   return ok ? 0 : 1;
 }
 
