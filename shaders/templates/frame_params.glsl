@@ -1,12 +1,13 @@
 // ---- frame_params.glsl (render stage): the parameters of one frame as the fragment shader
-// reads them. They are uniforms of the program (render/ray_tracer_uniforms.cpp sets them by
-// name), but fullscreen.vert.glsl copies them into this block of flat varyings and the
-// fragment shader reads only the block: llvmpipe reads a uniform in a fragment shader with
+// reads them. They are uniforms of the program, rtName for member `name` (generated from
+// this block; render/ray_tracer_uniforms.cpp sets them), copied into this block of flat
+// varyings by the vertex stage, and the fragment shader reads only the block: llvmpipe
+// reads a uniform in a fragment shader with
 // an 8-lane gather and a bounds check per lane (about 20 instructions) at every use, in
 // every pass of every loop, while a flat input is interpolated once per group of pixels.
 // That alone made frames 20-35 % faster (docs/renderer.md). shader_assembly.cpp puts this
 // file into both stages, with RT_FRAME_STORAGE defined as `out` and as `in`; bools travel
-// as ints, since GLSL has no bool varyings.
+// as ints (GLSL has no bool varyings), so their uniforms are ints too. One member per line.
 RT_FRAME_STORAGE RtFrame {
   flat vec3 domainMin;  // domain box (the thesis' clipping box)
   flat vec3 domainMax;  // (the bounding box of the ball for a sphere domain)

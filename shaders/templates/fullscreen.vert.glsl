@@ -10,51 +10,11 @@
 //    cannot hit anything are better never started.
 // Either way the fragment shader derives its pixel from gl_FragCoord, not from here.
 // It also hands the frame's parameters to the fragment shader as flat varyings
-// (frame_params.glsl, inserted after #version by shader_assembly.cpp).
+// (frame_params.glsl, inserted after #version by shader_assembly.cpp with the uniforms and
+// rtCopyFrame() it generates from that block).
 uniform bool rtProxyBox;
 uniform mat4 rtViewProj;  // world -> clip, the camera contract of docs/camera.md
 uniform vec3 rtBoxMin, rtBoxMax;
-// What frame_params.glsl hands on, under the names the renderer sets.
-uniform vec3 rtDomainMin;
-uniform vec3 rtDomainMax;
-uniform vec4 rtClipBall;
-uniform vec3 rtRootMin;
-uniform vec3 rtRootMax;
-uniform float rtPad;
-uniform vec2 rtResolution;
-uniform vec3 rtEye;
-uniform vec3 rtForward;
-uniform vec3 rtRight;
-uniform vec3 rtUp;
-uniform float rtPlaneHalf;
-uniform bool rtOrtho;
-uniform int rtMaxBisections;
-uniform float rtEpsilon;
-uniform float rtTangentTolerance;
-uniform float rtAmbient;
-uniform vec3 rtDirLightTo;
-uniform vec3 rtDirLight;
-uniform vec3 rtPointPos;
-uniform vec3 rtPointLight;
-uniform vec3 rtFrontColor;
-uniform vec3 rtBackColor;
-uniform vec2 rtFrontPhong;
-uniform vec2 rtBackPhong;
-uniform bool rtSilhouetteOn;
-uniform bool rtBorderOn;
-uniform float rtSilhouetteThreshold;
-uniform float rtBorderThreshold;
-uniform float rtPrimaryWeight;
-uniform float rtOpacity;
-uniform vec3 rtSilhouetteColor;
-uniform vec3 rtBorderColor;
-uniform vec3 rtBackground;
-uniform int rtNodeCount;
-uniform int rtFirstNode;
-uniform vec3 rtCell;
-uniform int rtIntervals;
-uniform bool rtTangentRoots;
-
 const vec2 kCorners[6] = vec2[6](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(1.0, 1.0),
                                  vec2(-1.0, -1.0), vec2(1.0, 1.0), vec2(-1.0, 1.0));
 // Box corner c has x = bit 0, y = bit 1, z = bit 2; triangles wind counter-clockwise seen
@@ -63,45 +23,7 @@ const int kBox[36] = int[36](0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 
                              2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5);
 
 void main() {
-  rt.domainMin = rtDomainMin;
-  rt.domainMax = rtDomainMax;
-  rt.ball = rtClipBall;
-  rt.rootMin = rtRootMin;
-  rt.rootMax = rtRootMax;
-  rt.pad = rtPad;
-  rt.resolution = rtResolution;
-  rt.eye = rtEye;
-  rt.forward = rtForward;
-  rt.right = rtRight;
-  rt.up = rtUp;
-  rt.planeHalf = rtPlaneHalf;
-  rt.ortho = int(rtOrtho);
-  rt.maxBisections = rtMaxBisections;
-  rt.epsilon = rtEpsilon;
-  rt.tangentTolerance = rtTangentTolerance;
-  rt.ambient = rtAmbient;
-  rt.dirLightTo = rtDirLightTo;
-  rt.dirLight = rtDirLight;
-  rt.pointPos = rtPointPos;
-  rt.pointLight = rtPointLight;
-  rt.frontColor = rtFrontColor;
-  rt.backColor = rtBackColor;
-  rt.frontPhong = rtFrontPhong;
-  rt.backPhong = rtBackPhong;
-  rt.silhouetteOn = int(rtSilhouetteOn);
-  rt.borderOn = int(rtBorderOn);
-  rt.silhouetteThreshold = rtSilhouetteThreshold;
-  rt.borderThreshold = rtBorderThreshold;
-  rt.primaryWeight = rtPrimaryWeight;
-  rt.opacity = rtOpacity;
-  rt.silhouetteColor = rtSilhouetteColor;
-  rt.borderColor = rtBorderColor;
-  rt.background = rtBackground;
-  rt.nodeCount = rtNodeCount;
-  rt.firstNode = rtFirstNode;
-  rt.cell = rtCell;
-  rt.intervals = rtIntervals;
-  rt.tangentRoots = int(rtTangentRoots);
+  rtCopyFrame();  // the frame's uniforms into the flat block (shader_assembly.cpp)
   if (!rtProxyBox) {
     gl_Position = vec4(kCorners[gl_VertexID % 6], 0.0, 1.0);
     return;

@@ -1,5 +1,7 @@
 #include "codegen/shader_assembly.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <stdexcept>
 
@@ -113,13 +115,45 @@ std::string markerBlock(const std::vector<std::array<double, 3>>& points, double
   return s;
 }
 
+namespace {
+
+// The vertex stage's side of frame_params.glsl, generated from the block so that it is the one
+// list of the frame's parameters: a uniform rtName of the member's type for every member
+// `name` (the names the renderer sets), and rtCopyFrame(), which copies each into the block.
+std::string frameUniforms(std::string_view block) {
+  std::string uniforms, copies;
+  std::size_t pos = 0;
+  while (pos < block.size()) {
+    const std::size_t end = std::min(block.find('\n', pos), block.size());
+    std::string_view line = block.substr(pos, end - pos);
+    pos = end + 1;
+    const std::size_t first = line.find_first_not_of(' ');
+    if (first == std::string_view::npos || line.substr(first, 5) != "flat ") continue;
+    line = line.substr(first + 5);
+    const std::size_t space = line.find(' '), semicolon = line.find(';');
+    const std::string type(line.substr(0, space));
+    const std::string member(line.substr(space + 1, semicolon - space - 1));
+    std::string uniform = "rt" + member;
+    uniform[2] = char(std::toupper(static_cast<unsigned char>(uniform[2])));
+    uniforms += "uniform " + type + " " + uniform + ";\n";
+    copies += "  rt." + member + " = " + uniform + ";\n";
+  }
+  return uniforms + "\nvoid rtCopyFrame() {\n" + copies + "}\n";
+}
+
+}  // namespace
+
 std::string vertexShaderSource() {
-  // The frame block goes right after #version; the template's numbering resumes after it.
+  // The frame block and its uniforms go right after #version; the template's numbering
+  // resumes after them.
   const std::string_view vertex = shaderTemplate(kVertexTemplate);
+  const std::string_view frame = shaderTemplate(kFrameTemplate);
   const std::size_t firstLine = vertex.find('\n') + 1;
   std::string out(vertex.substr(0, firstLine));
   appendPiece(out, "shaders/templates/" + std::string(kFrameTemplate), 1,
-              "#define RT_FRAME_STORAGE out\n" + std::string(shaderTemplate(kFrameTemplate)));
+              "#define RT_FRAME_STORAGE out\n" + std::string(frame));
+  appendPiece(out, "generated from frame_params.glsl (shader_assembly.cpp)", 2,
+              frameUniforms(frame));
   out += "#line 2 0\n";
   out.append(vertex.substr(firstLine));
   return out;

@@ -21,7 +21,7 @@ int RayTracer::setUniforms(const RenderSettings& s, const Domain& clip, int widt
   // Rays are clipped to the domain's bounding box, then to its ball when it is a sphere.
   const Domain domain = boundingBox(clip);
   const bool ball = clip.shape == DomainShape::Sphere;
-  glUniform4f(uniform("rtClipBall"), float(clip.center[0]), float(clip.center[1]),
+  glUniform4f(uniform("rtBall"), float(clip.center[0]), float(clip.center[1]),
               float(clip.center[2]), ball ? float(clip.radius) : 0.0f);
   glUniform1i(uniform("rtHierarchy"), 0);
   glUniform1i(uniform("rtNodeCount"), hierarchy_.count);
