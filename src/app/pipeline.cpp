@@ -33,21 +33,20 @@ std::optional<Ball> toBall(const Domain& domain) {
 
 TracingMethod resolveMethod(TracingMethod asked, const Formula& formula, std::string& warning) {
   warning.clear();
-  if (asked == TracingMethod::Sampling) return TracingMethod::Sampling;
+  if (asked == TracingMethod::Sampling || asked == TracingMethod::Interval) return asked;
   const std::optional<int> degree = rayPolynomialDegree(formula.graph, formula.root);
   if (degree && *degree <= kMaxBernsteinDegree) return TracingMethod::Bernstein;
-  if (degree) {
+  if (degree && asked == TracingMethod::Bernstein) {
     warning = "warning: degree " + std::to_string(*degree) + " is above " +
               std::to_string(kMaxBernsteinDegree) +
               ", the highest the exact Bernstein method compiles for (its shader grows as the "
-              "degree squared); using sign sampling "
-              "(tracing.method = \"sampling\", which can miss thin features: raise "
-              "tracing.intervals if parts look missing)\n";
+              "degree squared); using interval arithmetic (tracing.method = \"interval\")\n";
   } else if (asked == TracingMethod::Bernstein) {
     warning = "warning: tracing.method = \"bernstein\" needs a polynomial in x, y, z; this "
-              "formula is not one, so it is sign-sampled (tracing.method = \"sampling\")\n";
+              "formula is not one, so it is traced with interval arithmetic "
+              "(tracing.method = \"interval\")\n";
   }
-  return TracingMethod::Sampling;
+  return TracingMethod::Interval;
 }
 
 namespace {
@@ -104,6 +103,9 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bo
   if (s.method == TracingMethod::Bernstein) {
     s.rayPolynomial = emitRayPolynomialGlsl(s.formula.graph, s.formula.root);
     s.fragmentShader = assembleFragmentShader(s.glsl, *s.rayPolynomial, markers);
+  } else if (s.method == TracingMethod::Interval) {
+    s.fragmentShader = assembleFragmentShader(
+        s.glsl, emitIntervalGlsl(s.formula.graph, s.formula.root, s.gradient), markers);
   } else {
     s.fragmentShader = assembleFragmentShader(s.glsl, markers);
   }

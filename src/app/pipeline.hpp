@@ -26,7 +26,7 @@ struct PreparedSurface {
   std::vector<double> params;  // graph.params() order
   Octree octree;
   SphereHierarchy hierarchy;
-  TracingMethod method = TracingMethod::Sampling;  // resolved: never Auto
+  TracingMethod method = TracingMethod::Interval;  // resolved: never Auto
   std::string methodWarning;  // why the method asked for could not be used ("" if it was)
   GlslFormula glsl;
   std::optional<RayPolynomialGlsl> rayPolynomial;  // Bernstein only
@@ -46,8 +46,8 @@ Box toBox(const Domain& domain);
 std::optional<Ball> toBall(const Domain& domain);
 
 // The method `asked` resolves to for this formula: Bernstein for a polynomial of degree up
-// to kMaxBernsteinDegree (Auto or Bernstein asked), sampling otherwise. `warning` explains a
-// fallback from an explicit "bernstein" or from a polynomial above the degree limit.
+// to kMaxBernsteinDegree (Auto or Bernstein asked), interval arithmetic otherwise; sampling
+// and interval when asked for. `warning` explains a fallback from an explicit "bernstein".
 TracingMethod resolveMethod(TracingMethod asked, const Formula& formula, std::string& warning);
 
 // Error text is ready to print (caret formatting, octree budget messages, or an internal

@@ -54,12 +54,14 @@ std::string_view shaderTemplate(std::string_view fileName) {
 namespace {
 
 std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
-                     std::string_view markers) {
+                     const IntervalGlsl* interval, std::string_view markers) {
   const std::string_view prelude = shaderTemplate(kPreludeTemplate);
   const std::string_view raytrace = shaderTemplate(kRaytraceTemplate);
-  const std::string_view march = shaderTemplate(poly ? kBernsteinTemplate : kSamplingTemplate);
+  const std::string_view marchName =
+      poly ? kBernsteinTemplate : (interval ? kIntervalTemplate : kSamplingTemplate);
+  const std::string_view march = shaderTemplate(marchName);
   if (!mentionsIdentifier(march, "zs_F") && !mentionsIdentifier(march, "zs_FGrad")) {
-    throw std::logic_error("internal error in zeroset: shaders/templates/" + std::string(poly ? kBernsteinTemplate : kSamplingTemplate) +
+    throw std::logic_error("internal error in zeroset: shaders/templates/" + std::string(marchName) +
                            " calls neither zs_F nor zs_FGrad, so the generated formula would be unused");
   }
   std::string out(prelude);  // starts with #version, which must come first
@@ -74,23 +76,34 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
     appendPiece(out, "generated ray polynomial (src/codegen/emit_ray_polynomial.cpp)", string++,
                 poly->source);
   }
+  if (interval) {
+    appendPiece(out, "shaders/templates/" + std::string(kIntervalPreludeTemplate), string++,
+                shaderTemplate(kIntervalPreludeTemplate));
+    appendPiece(out, "generated interval block (src/codegen/emit_interval_glsl.cpp)", string++,
+                interval->source);
+  }
   appendPiece(out, "shaders/templates/" + std::string(kFrameTemplate), string++,
               "#define RT_FRAME_STORAGE in\n" + std::string(shaderTemplate(kFrameTemplate)));
   if (!markers.empty()) appendPiece(out, "highlights.singular markers", string++, markers);
   appendPiece(out, "shaders/templates/" + std::string(kRaytraceTemplate), string++, raytrace);
-  appendPiece(out, "shaders/templates/" + std::string(poly ? kBernsteinTemplate : kSamplingTemplate), string, march);
+  appendPiece(out, "shaders/templates/" + std::string(marchName), string, march);
   return out;
 }
 
 }  // namespace
 
 std::string assembleFragmentShader(const GlslFormula& formula, std::string_view markers) {
-  return assemble(formula, nullptr, markers);
+  return assemble(formula, nullptr, nullptr, markers);
 }
 
 std::string assembleFragmentShader(const GlslFormula& formula, const RayPolynomialGlsl& poly,
                                    std::string_view markers) {
-  return assemble(formula, &poly, markers);
+  return assemble(formula, &poly, nullptr, markers);
+}
+
+std::string assembleFragmentShader(const GlslFormula& formula, const IntervalGlsl& interval,
+                                   std::string_view markers) {
+  return assemble(formula, nullptr, &interval, markers);
 }
 
 std::string markerBlock(const std::vector<std::array<double, 3>>& points, double radius,

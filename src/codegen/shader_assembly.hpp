@@ -8,7 +8,11 @@
 //   [ray polynomial block       (zs_FPoly, Bernstein kernels; Bernstein only)]    string 2
 //   frame_params.glsl           (the frame's parameters, flat inputs `rt`)
 //   raytrace_main.frag.glsl     (rays, passes, shading, main; rtMarch prototype)
-//   raytrace_sampling.frag.glsl or raytrace_bernstein.frag.glsl  (rtMarch)
+//   raytrace_sampling.frag.glsl, raytrace_bernstein.frag.glsl or raytrace_interval.frag.glsl
+//                               (rtMarch)
+//
+// The interval method has two more pieces after the formula block: interval_prelude.frag.glsl
+// (the zsi_* rules) and the generated interval block (zs_FInterval, emit_interval_glsl.hpp).
 //
 // A comment naming its origin and `#line 1 <string>` precede pieces 2 and 3, so compiler
 // logs ("0:12", "1:7", "2:40") point into the right piece at the right line.
@@ -18,6 +22,7 @@
 #include <vector>
 
 #include "codegen/emit_glsl.hpp"
+#include "codegen/emit_interval_glsl.hpp"
 #include "codegen/emit_ray_polynomial.hpp"
 
 namespace zs {
@@ -26,6 +31,8 @@ inline constexpr std::string_view kPreludeTemplate = "raytrace_prelude.frag.glsl
 inline constexpr std::string_view kRaytraceTemplate = "raytrace_main.frag.glsl";
 inline constexpr std::string_view kSamplingTemplate = "raytrace_sampling.frag.glsl";
 inline constexpr std::string_view kBernsteinTemplate = "raytrace_bernstein.frag.glsl";
+inline constexpr std::string_view kIntervalTemplate = "raytrace_interval.frag.glsl";
+inline constexpr std::string_view kIntervalPreludeTemplate = "interval_prelude.frag.glsl";
 inline constexpr std::string_view kVertexTemplate = "fullscreen.vert.glsl";
 inline constexpr std::string_view kFrameTemplate = "frame_params.glsl";  // both stages
 
@@ -46,6 +53,10 @@ std::string assembleFragmentShader(const GlslFormula& formula, std::string_view 
 // The same with the exact Bernstein march: the ray polynomial block (emit_ray_polynomial.hpp)
 // follows the formula block.
 std::string assembleFragmentShader(const GlslFormula& formula, const RayPolynomialGlsl& poly,
+                                   std::string_view markers = {});
+
+// The same with the interval march: the interval prelude and block follow the formula block.
+std::string assembleFragmentShader(const GlslFormula& formula, const IntervalGlsl& interval,
                                    std::string_view markers = {});
 
 // fullscreen.vert.glsl with frame_params.glsl (as outputs) after its #version line.

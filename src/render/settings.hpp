@@ -87,12 +87,18 @@ struct Materials {
 };
 
 // How rays find the surface (docs/renderer.md). Auto: Bernstein for polynomials up to
-// kMaxBernsteinDegree, sampling otherwise.
-enum class TracingMethod { Auto, Bernstein, Sampling };
+// kMaxBernsteinDegree, interval otherwise; sampling (the thesis' method) only when asked.
+enum class TracingMethod { Auto, Bernstein, Sampling, Interval };
 
 // As tracing.method spells it in a scene (the schema's table lists them in this order).
 inline const char* tracingMethodName(TracingMethod m) {
-  return m == TracingMethod::Auto ? "auto" : m == TracingMethod::Bernstein ? "bernstein" : "sampling";
+  switch (m) {
+    case TracingMethod::Auto: return "auto";
+    case TracingMethod::Bernstein: return "bernstein";
+    case TracingMethod::Sampling: return "sampling";
+    case TracingMethod::Interval: return "interval";
+  }
+  return "auto";
 }
 
 // Highest degree the Bernstein method takes. Measured exact against a double reference up to

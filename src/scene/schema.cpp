@@ -19,7 +19,7 @@ constexpr std::array<std::string_view, 2> kProjections{"perspective", "orthograp
 constexpr std::array<std::string_view, 2> kCriteria{"thesis", "uniform"};
 constexpr std::array<std::string_view, 2> kShapes{"box", "sphere"};  // order of DomainShape
 // Order of TracingMethod (render/settings.hpp).
-constexpr std::array<std::string_view, 3> kMethods{"auto", "bernstein", "sampling"};
+constexpr std::array<std::string_view, 4> kMethods{"auto", "bernstein", "sampling", "interval"};
 
 // A reference to one Scene member, as a plain function pointer the schema can hold.
 #define ZS_FIELD(member) +[](Scene& s) -> decltype(auto) { return (s.member); }

@@ -269,7 +269,6 @@ std::string inputMarkdownReport(const InputBenchResults& results) {
                results.shaderCache.c_str());
   md += "| Method | Median ms | fps | Min ms | Max ms | First frame ms | of which first draw "
         "| Leaves |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
-  const MethodResult* exact = nullptr;
   const MethodResult* sampled = nullptr;
   for (const MethodResult& r : results.methods) {
     const char* name = tracingMethodName(r.method);
@@ -281,13 +280,16 @@ std::string inputMarkdownReport(const InputBenchResults& results) {
       md += format("| %s | %.2f | %.1f | %.2f | %.2f | %.0f | %.0f | %zu |\n", name,
                    r.stats.medianMs, r.stats.fps(), r.stats.minMs, r.stats.maxMs,
                    r.first.totalMs, r.first.firstDrawMs, r.leaves);
-      (r.method == TracingMethod::Bernstein ? exact : sampled) = &r;
+      if (r.method == TracingMethod::Sampling) sampled = &r;
     }
   }
   md += "\n";
-  if (exact && sampled && exact->stats.medianMs > 0)
-    md += format("bernstein is %.2fx the speed of sampling on this scene.\n",
-                 sampled->stats.medianMs / exact->stats.medianMs);
+  for (const MethodResult& r : results.methods) {
+    if (!sampled || &r == sampled || !r.error.empty() || !r.skipped.empty()) continue;
+    if (r.stats.medianMs > 0)
+      md += format("%s is %.2fx the speed of sampling on this scene.\n",
+                   tracingMethodName(r.method), sampled->stats.medianMs / r.stats.medianMs);
+  }
   for (const MethodResult& r : results.methods) {
     if (!r.skipped.empty()) md += r.skipped + "\n";
     if (!r.error.empty()) md += format("%s failed: %s\n", tracingMethodName(r.method), r.error.c_str());

@@ -238,9 +238,9 @@ InputBenchResults runInputBench(const Scene& input, const BenchOptions& options)
   if (!context) return results;
   RayTracer tracer;
   payDriverStartUp(tracer, options);
-  // Sampling first: where bernstein falls back to sampling, its shader is then sampling's
-  // and compiles warm, and the sampling row keeps the cold first frame.
-  for (TracingMethod method : {TracingMethod::Sampling, TracingMethod::Bernstein}) {
+  // Every method that can trace the input, side by side (bernstein only for polynomials).
+  for (TracingMethod method :
+       {TracingMethod::Sampling, TracingMethod::Bernstein, TracingMethod::Interval}) {
     MethodResult r;
     r.method = method;
     Scene scene = input;
@@ -253,7 +253,7 @@ InputBenchResults runInputBench(const Scene& input, const BenchOptions& options)
     if (!r.first.error.empty()) {
       r.error = r.first.error;
     } else if (prepared->method != method) {
-      r.skipped = prepared->methodWarning;  // e.g. not a polynomial: sampling only
+      r.skipped = prepared->methodWarning;  // e.g. not a polynomial: no bernstein row
       while (!r.skipped.empty() && r.skipped.back() == '\n') r.skipped.pop_back();
     } else {
       r.leaves = prepared->octree.leaves.size();

@@ -79,7 +79,7 @@ void lights(Lights& l) {
 void tracing(Scene& scene) {
   Tracing& t = scene.render.tracing;
   int method = static_cast<int>(t.method);  // rebuilds the shader (viewer_build.cpp)
-  if (ImGui::Combo("method", &method, "auto\0bernstein (exact, polynomials)\0sampling (thesis)\0"))
+  if (ImGui::Combo("method", &method, "auto\0bernstein (exact, polynomials)\0sampling (thesis)\0interval (robust, any formula)\0"))
     t.method = static_cast<TracingMethod>(method);
   dragInt("intervals", t.intervals, 1, 1000);
   dragDouble("epsilon", t.epsilon, 0.0001, 1e-9, 1.0, "%.2g");

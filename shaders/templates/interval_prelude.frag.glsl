@@ -1,0 +1,219 @@
+// ---- interval_prelude.frag.glsl (codegen stage): interval arithmetic for the interval
+// method (tracing.method = "interval"). Joined after raytrace_prelude.frag.glsl, before the
+// generated interval formula (zs_FInterval, src/codegen/emit_interval_glsl.cpp), which calls
+// one zsi_* rule per opcode (src/codegen/op_interval_glsl.cpp). The rules mirror the CPU's
+// (src/interval): an interval is a vec2 (lo, hi); an operand that lies partly outside an
+// operation's domain is restricted to it (zsi_partial records that it happened), one wholly
+// outside sets the flag u (F is defined nowhere there).
+//
+// Rounding (docs/codegen.md, "Interval GLSL"): GLSL has no directed rounding, so every
+// result is widened outward after it is computed: arithmetic by ZSI_REL of its magnitude,
+// the built-in functions by ZSI_FN_REL and ZSI_FN_ABS (plus a share of the argument for
+// sin, cos, tan and exp, whose argument reduction loses accuracy as it grows). The margins
+// are checked against double precision on the GPU that runs the tests
+// (tests/render/interval_rules_test.cpp).
+
+#define ZSI_INF uintBitsToFloat(0x7F800000u)
+const float ZSI_REL = 2.384185791015625e-7;  // 2^-22: 4x the error of one rounded operation
+const float ZSI_TINY = 1.17549435e-38;       // FLT_MIN: results flushed to zero
+const float ZSI_FN_REL = 1.9073486328125e-6; // 2^-19
+const float ZSI_FN_ABS = 1.9073486328125e-6; // 2^-19
+const float ZSI_ARG = 4.76837158203125e-7;   // 2^-21 of |argument|: argument reduction
+const float ZSI_PI = 3.14159265;
+const float ZSI_TWO_PI = 6.28318531;
+
+// Operations that restricted an operand to their domain, or divided by an interval holding
+// 0: F may be undefined or unbounded somewhere on the segment, so no monotonicity proof.
+bool zsi_partial = false;
+
+// Outward by `rel` of the magnitude and `abs`; the multiplicative form keeps infinities.
+vec2 zsi_widen(vec2 r, float rel, float abs_) {
+  vec2 grow = vec2(r.x > 0.0 ? 1.0 - rel : 1.0 + rel, r.y > 0.0 ? 1.0 + rel : 1.0 - rel);
+  return r * grow + vec2(-abs_, abs_);
+}
+vec2 zsi_out(vec2 r) { return zsi_widen(r, ZSI_REL, ZSI_TINY); }
+vec2 zsi_outFn(vec2 r, float arg) {
+  return zsi_widen(r, ZSI_FN_REL, ZSI_FN_ABS + ZSI_ARG * arg);
+}
+// inf - inf and 0 * inf give NaN: an endpoint that is NaN becomes unbounded.
+vec2 zsi_unNaN(vec2 r) { return vec2(isnan(r.x) ? -ZSI_INF : r.x, isnan(r.y) ? ZSI_INF : r.y); }
+float zsi_mag(vec2 a) { return max(abs(a.x), abs(a.y)); }
+
+vec2 zsi_point(float v) { return zsi_out(vec2(v)); }
+vec2 zsi_neg(vec2 a) { return -a.yx; }
+vec2 zsi_add(vec2 a, vec2 b) { return zsi_unNaN(zsi_out(a + b)); }
+vec2 zsi_sub(vec2 a, vec2 b) { return zsi_unNaN(zsi_out(a - b.yx)); }
+
+vec2 zsi_mul(vec2 a, vec2 b) {
+  vec4 c = a.xxyy * b.xyxy;
+  c = mix(c, vec4(0.0), isnan(c));  // a corner 0 * inf: the products around it are 0
+  return zsi_out(vec2(min(min(c.x, c.y), min(c.z, c.w)), max(max(c.x, c.y), max(c.z, c.w))));
+}
+
+vec2 zsi_div(vec2 a, vec2 b) {
+  if (b.x <= 0.0 && b.y >= 0.0) { zsi_partial = true; return vec2(-ZSI_INF, ZSI_INF); }
+  vec4 c = a.xxyy / b.xyxy;  // inf / inf corners are NaN; the others reach their limits
+  vec4 l = mix(c, vec4(ZSI_INF), isnan(c)), h = mix(c, vec4(-ZSI_INF), isnan(c));
+  return zsi_out(vec2(min(min(l.x, l.y), min(l.z, l.w)), max(max(h.x, h.y), max(h.z, h.w))));
+}
+
+// x^k for x >= 0 by binary powering; k is a constant at every call, so it unrolls.
+float zsi_ipow(float x, int k) {
+  float r = 1.0, base = x;
+  for (int n = k; n > 0; n >>= 1) {
+    if ((n & 1) != 0) r *= base;
+    base *= base;
+  }
+  return r;
+}
+
+// Even powers depend on |x| only, so [-1, 2]^2 = [0, 4]; k - 1 roundings per endpoint.
+vec2 zsi_powi(vec2 a, int k) {
+  int m = abs(k);
+  vec2 p;
+  if (m % 2 == 0) {
+    float lo = (a.x <= 0.0 && a.y >= 0.0) ? 0.0 : min(abs(a.x), abs(a.y));
+    p = vec2(zsi_ipow(lo, m), zsi_ipow(zsi_mag(a), m));
+  } else {
+    p = vec2(sign(a.x) * zsi_ipow(abs(a.x), m), sign(a.y) * zsi_ipow(abs(a.y), m));
+  }
+  p = zsi_widen(p, ZSI_REL * float(m), ZSI_TINY);
+  if (k >= 0) return k == 0 ? vec2(1.0) : p;
+  return zsi_div(vec2(1.0), p);
+}
+
+vec2 zsi_sqrt(vec2 a, inout bool u) {
+  u = u || a.y < 0.0;
+  zsi_partial = zsi_partial || a.x < 0.0;
+  vec2 r = zsi_outFn(sqrt(max(a, 0.0)), 0.0);
+  return vec2(max(r.x, 0.0), r.y);
+}
+
+float zsi_logOf(float v) { return v > 0.0 ? log(v) : -ZSI_INF; }
+vec2 zsi_log(vec2 a, inout bool u) {
+  u = u || a.y < 0.0;
+  zsi_partial = zsi_partial || a.x <= 0.0;
+  return zsi_outFn(vec2(zsi_logOf(a.x), zsi_logOf(a.y)), 0.0);
+}
+
+vec2 zsi_exp(vec2 a) {
+  vec2 r = exp(a);
+  r = zsi_widen(r, ZSI_FN_REL + ZSI_ARG * zsi_mag(a), ZSI_TINY);
+  return vec2(max(r.x, 0.0), r.y);
+}
+
+// Could phase + k period (k integer) lie in [lo, hi]? Widened so that rounding can only
+// answer a false "yes" (a looser result), never a false "no".
+bool zsi_mayHit(vec2 a, float phase, float period) {
+  float lo = (a.x - phase) / period, hi = (a.y - phase) / period;
+  float slack = 1e-5 * (1.0 + max(abs(lo), abs(hi)));
+  return floor(hi + slack) >= ceil(lo - slack);
+}
+
+vec2 zsi_sin(vec2 a) {
+  if (!(a.y - a.x < ZSI_TWO_PI)) return vec2(-1.0, 1.0);  // also infinite endpoints
+  float s0 = sin(a.x), s1 = sin(a.y);
+  vec2 r = zsi_outFn(vec2(min(s0, s1), max(s0, s1)), zsi_mag(a));
+  r.x = zsi_mayHit(a, -0.5 * ZSI_PI, ZSI_TWO_PI) ? -1.0 : max(r.x, -1.0);
+  r.y = zsi_mayHit(a, 0.5 * ZSI_PI, ZSI_TWO_PI) ? 1.0 : min(r.y, 1.0);
+  return r;
+}
+
+vec2 zsi_cos(vec2 a) { return zsi_sin(zsi_add(a, vec2(0.5 * ZSI_PI))); }
+
+vec2 zsi_tan(vec2 a) {
+  if (!(a.y - a.x < ZSI_PI) || zsi_mayHit(a, 0.5 * ZSI_PI, ZSI_PI)) {
+    zsi_partial = true;  // a pole: unbounded, not a surface
+    return vec2(-ZSI_INF, ZSI_INF);
+  }
+  return zsi_outFn(vec2(tan(a.x), tan(a.y)), zsi_mag(a));
+}
+
+vec2 zsi_asin(vec2 a, inout bool u) {
+  u = u || a.x > 1.0 || a.y < -1.0;
+  zsi_partial = zsi_partial || a.x < -1.0 || a.y > 1.0;
+  vec2 r = zsi_outFn(asin(clamp(a, -1.0, 1.0)), 0.0);
+  return clamp(r, -0.5 * ZSI_PI - 1e-6, 0.5 * ZSI_PI + 1e-6);
+}
+
+vec2 zsi_acos(vec2 a, inout bool u) {
+  u = u || a.x > 1.0 || a.y < -1.0;
+  zsi_partial = zsi_partial || a.x < -1.0 || a.y > 1.0;
+  vec2 r = zsi_outFn(acos(clamp(a.yx, -1.0, 1.0)), 0.0);
+  return clamp(r, 0.0, ZSI_PI + 1e-6);
+}
+
+vec2 zsi_atan(vec2 a) {
+  return clamp(zsi_outFn(atan(a), 0.0), -0.5 * ZSI_PI - 1e-6, 0.5 * ZSI_PI + 1e-6);
+}
+
+// atan2 jumps across the negative x axis and takes every angle next to the origin.
+vec2 zsi_atan2(vec2 y, vec2 x) {
+  if (y.x <= 0.0 && y.y >= 0.0 && x.x <= 0.0) return vec2(-ZSI_PI - 1e-6, ZSI_PI + 1e-6);
+  vec4 c = vec4(zs_atan2(y.x, x.x), zs_atan2(y.x, x.y), zs_atan2(y.y, x.x), zs_atan2(y.y, x.y));
+  return zsi_outFn(vec2(min(min(c.x, c.y), min(c.z, c.w)), max(max(c.x, c.y), max(c.z, c.w))), 0.0);
+}
+
+vec2 zsi_abs(vec2 a) {
+  return a.x >= 0.0 ? a : (a.y <= 0.0 ? -a.yx : vec2(0.0, max(-a.x, a.y)));
+}
+// sinh and cosh overflow to infinity, which the widening keeps.
+vec2 zsi_sinh(vec2 a) { return zsi_outFn(sinh(a), zsi_mag(a)); }
+vec2 zsi_cosh(vec2 a) {
+  vec2 m = zsi_abs(a);
+  vec2 r = zsi_outFn(cosh(m), zsi_mag(a));
+  return vec2(max(r.x, 1.0), r.y);
+}
+vec2 zsi_tanh(vec2 a) { return clamp(zsi_outFn(vec2(zs_tanh(a.x), zs_tanh(a.y)), 0.0), -1.0, 1.0); }
+vec2 zsi_cbrt(vec2 a) { return zsi_outFn(vec2(zs_cbrt(a.x), zs_cbrt(a.y)), 0.0); }
+
+vec2 zsi_sign(vec2 a) { return sign(a); }
+vec2 zsi_floor(vec2 a) { return floor(a); }
+vec2 zsi_ceil(vec2 a) { return ceil(a); }
+vec2 zsi_min(vec2 a, vec2 b) { return min(a, b); }
+vec2 zsi_max(vec2 a, vec2 b) { return max(a, b); }
+
+// pow(u, v) at one corner of a box with u >= 0, as C defines the limits there.
+float zsi_powCorner(float u, float v) {
+  if (u > 0.0) return pow(u, v);
+  return v > 0.0 ? 0.0 : (v == 0.0 ? 1.0 : ZSI_INF);
+}
+// Non-negative bases: monotone in each argument, so the extremes are at the corners.
+vec2 zsi_powCorners(vec2 x, vec2 y) {
+  float u0 = max(x.x, 0.0);
+  vec4 c = vec4(zsi_powCorner(u0, y.x), zsi_powCorner(u0, y.y), zsi_powCorner(x.y, y.x),
+                zsi_powCorner(x.y, y.y));
+  // pow is exp2(v log2 u): its error grows with |v log2 u|.
+  float spread = zsi_mag(y) * max(abs(log2(max(u0, 1e-30))), abs(log2(max(x.y, 1e-30))));
+  vec2 r = zsi_widen(vec2(min(min(c.x, c.y), min(c.z, c.w)), max(max(c.x, c.y), max(c.z, c.w))),
+                     ZSI_FN_REL + ZSI_ARG * spread, ZSI_TINY);
+  return vec2(max(r.x, 0.0), r.y);
+}
+// Negative bases are outside the domain of a non-integer exponent, but C's pow defines them at
+// integer exponents an exponent interval may hold: |pow(x, n)| = pow(|x|, n) bounds them.
+vec2 zsi_pow(vec2 a, vec2 b, inout bool u) {
+  bool integerInside = ceil(b.x) <= b.y;
+  u = u || (a.y < 0.0 && !integerInside);
+  zsi_partial = zsi_partial || a.x < 0.0;
+  vec2 r = a.y >= 0.0 ? zsi_powCorners(a, b) : vec2(ZSI_INF, -ZSI_INF);
+  if (a.x < 0.0 && integerInside) {
+    vec2 m = zsi_powCorners(vec2(max(-a.y, 0.0), -a.x), b);
+    r = vec2(min(r.x, -m.y), max(r.y, m.y));
+  }
+  return r;
+}
+
+// grad . d over a box, for the exact direction d (a point interval per component).
+vec2 zsi_scale(vec2 a, float s) {
+  return s == 0.0 ? vec2(0.0) : zsi_out(s > 0.0 ? a * s : a.yx * s);  // 0 * inf is 0 here
+}
+vec2 zsi_dot(vec2 gx, vec2 gy, vec2 gz, vec3 d) {
+  return zsi_unNaN(zsi_add(zsi_add(zsi_scale(gx, d.x), zsi_scale(gy, d.y)), zsi_scale(gz, d.z)));
+}
+
+// The results of zs_FInterval: F empty where it is defined nowhere, D whole where the
+// gradient cannot be bounded.
+void zsi_finish(vec2 f, vec2 d, bool u, bool ug, out vec2 F, out vec2 D) {
+  F = u ? vec2(1.0, -1.0) : zsi_unNaN(f);
+  D = (u || ug) ? vec2(-ZSI_INF, ZSI_INF) : zsi_unNaN(d);
+}

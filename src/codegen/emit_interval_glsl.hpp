@@ -1,0 +1,33 @@
+#pragma once
+// Interval GLSL for a formula: takes the expression graph with the roots of F and of its
+// gradient, puts out the block the interval method (tracing.method = "interval") joins after
+// the formula block:
+//
+//   void zs_FInterval(vec2 X, vec2 Y, vec2 Z, vec3 d, out vec2 F, out vec2 D, out bool partial)
+//
+// F encloses F over the box X x Y x Z (empty, F.x > F.y, where F is defined nowhere in it);
+// D encloses the derivative along d, grad F . d, over the same box (whole where it cannot be
+// bounded); `partial` is true where some operation of F was restricted to its domain or
+// divided by an interval holding 0 (F may be undefined or unbounded in part of the box).
+// Every non-leaf node becomes one `vec2 iN = zsi_<rule>(operands);`, with the rules of
+// op_interval_glsl.hpp and shaders/templates/interval_prelude.frag.glsl; constants are
+// rounded outward to floats. docs/codegen.md ("Interval GLSL") states the contract.
+#include <array>
+#include <string>
+
+#include "expr/graph.hpp"
+
+namespace zs {
+
+// The vec2 literal of the smallest float interval that holds `value` ("vec2(lo, hi)", or
+// "vec2(v)" when value is a float); empty for NaN.
+std::string glslIntervalLiteral(double value);
+
+struct IntervalGlsl {
+  std::string source;  // the interval block, ending with a newline
+};
+
+// f and grad must be nodes of g (grad as returned by gradient(g, f)).
+IntervalGlsl emitIntervalGlsl(const Graph& g, NodeId f, const std::array<NodeId, 3>& grad);
+
+}  // namespace zs
