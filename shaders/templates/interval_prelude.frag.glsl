@@ -102,6 +102,28 @@ vec2 zsi_exp(vec2 a) {
   return vec2(max(r.x, 0.0), r.y);
 }
 
+
+// sin and cos by their Taylor form about the middle m with the Lagrange remainder:
+// sin(m + h) = sin m + h cos m - h^2/2 sin(xi), so with |h| <= r the range lies in
+// sin m +- (r |cos m| + r^2/2), and likewise for cos. One sin and one cos of m serve both
+// rules (the compiler shares them when a formula has sin and cos of one argument), against
+// two evaluations and two extremum tests for the endpoint rule; the result is exact at an
+// extremum (cos m = 0) and loses only r^2/2 where the function is steep.
+vec2 zsi_taylorTrig(float value, float slope, vec2 a, float m) {
+  float r = max(a.y - m, m - a.x);  // covers the rounding of m
+  float spread = r * abs(slope) + 0.5 * r * r;
+  vec2 v = zsi_outFn(vec2(value - spread, value + spread), abs(m));
+  return (r < ZSI_PI) ? clamp(v, -1.0, 1.0) : vec2(-1.0, 1.0);  // also infinite endpoints
+}
+vec2 zsi_sin(vec2 a) {
+  float m = 0.5 * a.x + 0.5 * a.y;
+  return zsi_taylorTrig(sin(m), cos(m), a, m);
+}
+vec2 zsi_cos(vec2 a) {
+  float m = 0.5 * a.x + 0.5 * a.y;
+  return zsi_taylorTrig(cos(m), sin(m), a, m);
+}
+
 // Could phase + k period (k integer) lie in [lo, hi]? Widened so that rounding can only
 // answer a false "yes" (a looser result), never a false "no".
 bool zsi_mayHit(vec2 a, float phase, float period) {
@@ -109,17 +131,6 @@ bool zsi_mayHit(vec2 a, float phase, float period) {
   float slack = 1e-5 * (1.0 + max(abs(lo), abs(hi)));
   return floor(hi + slack) >= ceil(lo - slack);
 }
-
-vec2 zsi_sin(vec2 a) {
-  if (!(a.y - a.x < ZSI_TWO_PI)) return vec2(-1.0, 1.0);  // also infinite endpoints
-  float s0 = sin(a.x), s1 = sin(a.y);
-  vec2 r = zsi_outFn(vec2(min(s0, s1), max(s0, s1)), zsi_mag(a));
-  r.x = zsi_mayHit(a, -0.5 * ZSI_PI, ZSI_TWO_PI) ? -1.0 : max(r.x, -1.0);
-  r.y = zsi_mayHit(a, 0.5 * ZSI_PI, ZSI_TWO_PI) ? 1.0 : min(r.y, 1.0);
-  return r;
-}
-
-vec2 zsi_cos(vec2 a) { return zsi_sin(zsi_add(a, vec2(0.5 * ZSI_PI))); }
 
 vec2 zsi_tan(vec2 a) {
   if (!(a.y - a.x < ZSI_PI) || zsi_mayHit(a, 0.5 * ZSI_PI, ZSI_PI)) {

@@ -56,10 +56,12 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     bool monotone = tame && (D.x > 0.0 || D.y < 0.0);
     bool known = dl && dr;
     bool signChange = known && (fl == 0.0 || fr == 0.0 || (fl > 0.0) != (fr > 0.0));
+    // Where F is tame, splitting goes on to tracing.epsilon, which places a tangency or a
+    // thin sheet that precisely; where it is not, it stops at the pixel footprint.
     float footprint = rt.epsilon + pixel * (rt.ortho != 0 ? 1.0 : max(t0, 0.0));
-    bool small = size * len <= footprint;
+    bool small = size * len <= (tame ? rt.epsilon : footprint);
     bool root = !none && signChange && (monotone || (small && tame));
-    // Undecidable at the footprint: drawn where F is tame (header, 3.).
+    // Undecidable that small: drawn where F is tame (header, 3.).
     bool touch = !none && !root && small && tame && !(monotone && known);
     none = none || (monotone && known && !signChange) || (small && !root && !touch);
     found = root || touch;

@@ -126,8 +126,11 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
       }
     }
     if (mode == BISECT_F && !abandon) {
-      // One secant step inside the final bracket: depth accurate far below epsilon.
-      record = true;
+      // One secant step inside the final bracket: depth accurate far below epsilon. A pole
+      // (1/x) changes sign too, but at a root |f(lo)| + |f(hi)| shrinks with the bracket (as
+      // its width, where f is smooth) and at a pole it grows: a bracket 4 times narrower than
+      // the sample step whose ends still hold half of what the samples held is no surface.
+      record = !(hi - lo <= 0.25 * (ts - ta) && abs(flo) + abs(fhi) > 0.5 * (abs(fa) + abs(fs)));
       if (gHit.w != 0.0) tHit = clamp(lo + (hi - lo) * flo / (flo - fhi), lo, hi);
     } else if (!abandon) {
       // A tangent root where the distance estimate |F|/|grad F| at the extremum is

@@ -44,4 +44,17 @@ inline constexpr GoldenCase kEdgeCases[] = {
     {"edge_gyroid", "sin(x)cos(y) + sin(y)cos(z) + sin(z)cos(x)"},
 };
 
+// The interval block (tests/golden/interval_<name>.glsl): every rule of
+// op_interval_glsl.cpp at least once, domain flags, NaN and out-of-float constants.
+inline constexpr GoldenCase kIntervalCases[] = {
+    {"gyroid", "sin(x)cos(y) + sin(y)cos(z) + sin(z)cos(x)"},
+    {"metaballs", "exp(-4((x-0.5)^2+y^2+z^2)) + exp(-4((x+0.5)^2+y^2+z^2)) + exp(-4(x^2+(y-0.7)^2+z^2)) - 0.6"},
+    {"bumpy_sphere", "sqrt(x^2+y^2+z^2) - 1 - 0.08 sin(10x) sin(10y) sin(10z)"},
+    {"poles_and_domains", "1/x - 1 + sqrt(y) + log(z^2) + asin(x/2) + acos(y/2) + tan(z)"},
+    {"other_rules", "atan(x) + atan2(y, x) + sinh(x) + cosh(y) + tanh(z) + cbrt(z) + abs(x) "
+                    "+ sign(y) + floor(z) + ceil(x) + min(x, y) + max(y, z) + pow(x^2+1, y) "
+                    "+ x^2.5 + y^-3 + z^6 - 1"},
+    {"constants", "0.1 x + 1e300 y + 1e-45 z - a + sqrt(-1) * 0"},
+};
+
 }  // namespace zs::test

@@ -10,7 +10,9 @@
 #include <set>
 #include <string>
 
+#include "codegen/emit_interval_glsl.hpp"
 #include "codegen/glsl_validation.hpp"
+#include "expr/derivative.hpp"
 #include "codegen/shader_assembly.hpp"
 #include "codegen_test_util.hpp"
 #include "golden_cases.hpp"
@@ -46,6 +48,30 @@ void checkGolden(const GoldenCase& c) {
   EXPECT_TRUE(result.ok) << formatInternalShaderError("fragment shader", result);
 }
 
+// The interval block (emit_interval_glsl.hpp) of a handful of edge cases, in
+// tests/golden/interval_<name>.glsl, assembled into the interval method's shader.
+void checkIntervalGolden(const GoldenCase& c) {
+  SCOPED_TRACE(std::string(c.name) + ": " + c.formula);
+  std::optional<Formula> formula = parseOrFail(c.formula);
+  ASSERT_TRUE(formula.has_value());
+  const std::array<NodeId, 3> grad = gradient(formula->graph, formula->root);
+  const IntervalGlsl interval = emitIntervalGlsl(formula->graph, formula->root, grad);
+  const std::string actual = std::string("// formula: ") + c.formula + "\n" + interval.source;
+  const std::filesystem::path path = goldenPath(std::string("interval_") + c.name);
+  if (updating()) {
+    std::ofstream(path, std::ios::binary) << actual;
+  } else {
+    ASSERT_TRUE(std::filesystem::exists(path))
+        << path << " is missing; create it with ZS_UPDATE_GOLDEN=1 (docs/codegen.md)";
+    EXPECT_EQ(readFile(path), actual)
+        << path << " differs; if the change is intended, regenerate with ZS_UPDATE_GOLDEN=1";
+  }
+  const GlslFormula glsl = emitFormulaGlsl(formula->graph, formula->root, grad);
+  const ValidationResult result =
+      validateGlsl(assembleFragmentShader(glsl, interval), Stage::Fragment);
+  EXPECT_TRUE(result.ok) << formatInternalShaderError("interval fragment shader", result);
+}
+
 class GoldenThesis : public ::testing::TestWithParam<GoldenCase> {};
 TEST_P(GoldenThesis, MatchesAndValidates) { checkGolden(GetParam()); }
 INSTANTIATE_TEST_SUITE_P(Golden, GoldenThesis, ::testing::ValuesIn(kThesis),
@@ -56,11 +82,17 @@ TEST_P(GoldenEdge, MatchesAndValidates) { checkGolden(GetParam()); }
 INSTANTIATE_TEST_SUITE_P(Golden, GoldenEdge, ::testing::ValuesIn(kEdgeCases),
                          [](const auto& info) { return std::string(info.param.name); });
 
+class GoldenInterval : public ::testing::TestWithParam<GoldenCase> {};
+TEST_P(GoldenInterval, MatchesAndValidates) { checkIntervalGolden(GetParam()); }
+INSTANTIATE_TEST_SUITE_P(Golden, GoldenInterval, ::testing::ValuesIn(kIntervalCases),
+                         [](const auto& info) { return std::string(info.param.name); });
+
 // A golden without a case would never be checked again: stale files fail the suite.
 TEST(Golden, EveryFileHasACase) {
   std::set<std::string> names;
   for (const GoldenCase& c : kThesis) names.insert(std::string(c.name) + ".glsl");
   for (const GoldenCase& c : kEdgeCases) names.insert(std::string(c.name) + ".glsl");
+  for (const GoldenCase& c : kIntervalCases) names.insert("interval_" + std::string(c.name) + ".glsl");
   for (const auto& entry : std::filesystem::directory_iterator(sourceDir() / "tests/golden")) {
     EXPECT_TRUE(names.count(entry.path().filename().string()))
         << entry.path() << " belongs to no golden case";

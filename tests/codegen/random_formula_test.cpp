@@ -12,6 +12,7 @@
 #include <regex>
 #include <vector>
 
+#include "codegen/emit_interval_glsl.hpp"
 #include "codegen/glsl_validation.hpp"
 #include "codegen/shader_assembly.hpp"
 #include "codegen_test_util.hpp"
@@ -74,6 +75,11 @@ TEST(RandomFormula, EveryFormulaParsesAndPassesGlslang) {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
             .count());
     ASSERT_TRUE(result.ok) << formatInternalShaderError("fragment shader", result);
+    // The interval method's shader (the default for every formula that is not a polynomial).
+    const ValidationResult interval = validateGlsl(
+        assembleFragmentShader(glsl, emitIntervalGlsl(formula->graph, formula->root, grad)),
+        Stage::Fragment);
+    ASSERT_TRUE(interval.ok) << formatInternalShaderError("interval fragment shader", interval);
     largestNodes = std::max(largestNodes, formula->graph.size());
   }
   std::sort(millis.begin(), millis.end());
@@ -102,6 +108,10 @@ TEST(RandomFormula, VeryLargeFormulaPassesGlslang) {
   const GlslFormula glsl = emitFormulaGlsl(formula->graph, formula->root, grad);
   const auto start = std::chrono::steady_clock::now();
   const ValidationResult result = validateGlsl(assembleFragmentShader(glsl), Stage::Fragment);
+  const ValidationResult interval = validateGlsl(
+      assembleFragmentShader(glsl, emitIntervalGlsl(formula->graph, formula->root, grad)),
+      Stage::Fragment);
+  EXPECT_TRUE(interval.ok) << formatInternalShaderError("interval fragment shader", interval);
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   ASSERT_TRUE(result.ok) << formatInternalShaderError("fragment shader", result);

@@ -58,41 +58,6 @@ std::string chebyshevSurface(int n) {
   return chebyshev(n, 'x') + "+" + chebyshev(n, 'y') + "+" + chebyshev(n, 'z');
 }
 
-// The first root of f on [t0, t1] (header), NaN if there is none.
-double referenceFirstHit(PointEvaluator& f, const Ray& r, double t0, double t1, int samples) {
-  double out[4];
-  auto at = [&](double t) {  // (f, f')
-    f.eval(r.origin[0] + t * r.direction[0], r.origin[1] + t * r.direction[1],
-           r.origin[2] + t * r.direction[2], {}, out);
-    return std::pair{out[0], out[1] * r.direction[0] + out[2] * r.direction[1] +
-                                 out[3] * r.direction[2]};
-  };
-  auto bisect = [](auto&& g, double lo, double hi) {  // a sign change of g on [lo, hi]
-    const bool negLo = g(lo) < 0;
-    for (int i = 0; i < 60; ++i) {
-      const double m = 0.5 * (lo + hi);
-      (g(m) < 0) == negLo ? lo = m : hi = m;
-    }
-    return 0.5 * (lo + hi);
-  };
-  auto value = [&](double t) { return at(t).first; };
-  auto slope = [&](double t) { return at(t).second; };
-  double a = t0;
-  auto [fa, ga] = at(a);
-  for (int k = 1; k <= samples; ++k) {
-    const double b = t0 + (t1 - t0) * k / samples;
-    const auto [fb, gb] = at(b);
-    if (fa == 0) return a;
-    if ((fa < 0) != (fb < 0)) return bisect(value, a, b);
-    if ((ga < 0) != (gb < 0)) {  // an extremum inside: does f reach the other sign there?
-      const double e = bisect(slope, a, b);
-      if ((value(e) < 0) != (fa < 0)) return bisect(value, a, e);
-    }
-    a = b, fa = fb, ga = gb;
-  }
-  return NAN;
-}
-
 struct Measured {
   int hits = 0, missed = 0, extra = 0, grazing = 0, touching = 0;
   double worstDepth = 0;
@@ -123,7 +88,7 @@ Measured measure(int n) {
     const Vec3 right = basis.right, up = basis.up;
     for (int k = 0; k < 3; ++k) r.direction[k] += turnX * right[k] + turnY * up[k];
     const auto [t0, t1] = test::rayInBox(r, kBox);
-    return t0 <= t1 ? referenceFirstHit(eval, r, t0, t1, 16 * n) : NAN;
+    return t0 <= t1 ? test::sampledFirstHit(eval, r, t0, t1, 16 * n) : NAN;
   };
   const double tolerance = 1e-5 * std::sqrt(3.0) * (kBox.max[0] - kBox.min[0]);
   auto nearTouch = [&](double t, int i, int j) {

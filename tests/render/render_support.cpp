@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "codegen/emit_glsl.hpp"
+#include "expr/derivative.hpp"
 #include "codegen/shader_assembly.hpp"
 #include "interval/octree.hpp"
 #include "interval/sphere_builder.hpp"
@@ -45,16 +46,25 @@ std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& erro
   const std::vector<float> packed = buildSphereHierarchy(std::get<Octree>(tree)).packed();
   const GlslFormula glsl = emitFormulaGlsl(formula);
   // Auto: the method the app would pick (app/pipeline.cpp resolveMethod), without its
-  // warnings. Bernstein is taken for any polynomial, above the degree limit too, so tests
-  // can measure where that limit lies.
+  // warnings: Bernstein for polynomials up to the degree limit, interval otherwise. Bernstein
+  // is taken for any polynomial, above the degree limit too, so tests can measure where that
+  // limit lies.
   const std::optional<int> degree = rayPolynomialDegree(formula.graph, formula.root);
   const bool bernstein = degree && (spec.method == TracingMethod::Bernstein ||
                                     (spec.method == TracingMethod::Auto && *degree <= kMaxBernsteinDegree));
   const std::string markers = markerBlock(spec.markers, spec.markerRadius, spec.markerColor);
-  const std::string fragment =
-      bernstein ? assembleFragmentShader(glsl, *emitRayPolynomialGlsl(formula.graph, formula.root),
-                                         markers)
-                : assembleFragmentShader(glsl, markers);
+  const bool interval = !bernstein && spec.method != TracingMethod::Sampling;
+  std::string fragment;
+  if (bernstein) {
+    fragment = assembleFragmentShader(glsl, *emitRayPolynomialGlsl(formula.graph, formula.root),
+                                      markers);
+  } else if (interval) {
+    const std::array<NodeId, 3> grad = gradient(formula.graph, formula.root);
+    fragment = assembleFragmentShader(glsl, emitIntervalGlsl(formula.graph, formula.root, grad),
+                                      markers);
+  } else {
+    fragment = assembleFragmentShader(glsl, markers);
+  }
   auto tracer = std::make_unique<RayTracer>();
   if (!tracer->build(vertexShaderSource(), fragment, error)) return nullptr;
   if (error = tracer->setHierarchy(packed); !error.empty()) return nullptr;
@@ -73,6 +83,40 @@ std::pair<double, double> rayInBox(const Ray& r, const Domain& box) {
     t1 = std::min(t1, std::max(a, b));
   }
   return {t0, t1};
+}
+
+double sampledFirstHit(PointEvaluator& f, const Ray& r, double t0, double t1, int samples) {
+  double out[4];
+  auto at = [&](double t) {  // (f, f')
+    f.eval(r.origin[0] + t * r.direction[0], r.origin[1] + t * r.direction[1],
+           r.origin[2] + t * r.direction[2], {}, out);
+    return std::pair{out[0], out[1] * r.direction[0] + out[2] * r.direction[1] +
+                                 out[3] * r.direction[2]};
+  };
+  auto bisect = [](auto&& g, double lo, double hi) {  // a sign change of g on [lo, hi]
+    const bool negLo = g(lo) < 0;
+    for (int i = 0; i < 60; ++i) {
+      const double m = 0.5 * (lo + hi);
+      (g(m) < 0) == negLo ? lo = m : hi = m;
+    }
+    return 0.5 * (lo + hi);
+  };
+  auto value = [&](double t) { return at(t).first; };
+  auto slope = [&](double t) { return at(t).second; };
+  double a = t0;
+  auto [fa, ga] = at(a);
+  for (int k = 1; k <= samples; ++k) {
+    const double b = t0 + (t1 - t0) * k / samples;
+    const auto [fb, gb] = at(b);
+    if (fa == 0) return a;
+    if ((fa < 0) != (fb < 0)) return bisect(value, a, b);
+    if ((ga < 0) != (gb < 0)) {  // an extremum inside: does f reach the other sign there?
+      const double e = bisect(slope, a, b);
+      if ((value(e) < 0) != (fa < 0)) return bisect(value, a, e);
+    }
+    a = b, fa = fb, ga = gb;
+  }
+  return NAN;
 }
 
 RenderSettings testSettings(Vec3 eye) {

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "expr/tape.hpp"
 #include "render/gl_context.hpp"
 #include "render/image.hpp"
 #include "render/camera.hpp"
@@ -29,8 +30,8 @@ struct SurfaceSpec {
   int octreeLevel = 3;
   std::vector<double> params{};
   Criteria criteria = Criteria::Thesis;
-  // Auto: Bernstein for polynomials up to the degree limit, as the app; Bernstein: for every
-  // polynomial, beyond the limit too.
+  // Auto: Bernstein for polynomials up to the degree limit and interval otherwise, as the
+  // app; Bernstein: for every polynomial, beyond the limit too.
   TracingMethod method = TracingMethod::Auto;
   // highlights.singular markers (codegen/shader_assembly.hpp markerBlock); none by default.
   std::vector<std::array<double, 3>> markers{};
@@ -47,6 +48,14 @@ RenderSettings testSettings(Vec3 eye = {0, 0, 3});
 
 // The part [t0, t1] of the ray (t >= 0) inside `box`, in double: t0 > t1 when it misses.
 std::pair<double, double> rayInBox(const Ray& r, const Domain& box);
+
+// The first root of F along r in [t0, t1], in double precision; NaN if there is none. f(t) =
+// F(o + t d) and f'(t) = grad F . d (f must be a tape of F and its gradient) are sampled
+// `samples` times: the first step where f changes sign, or where f' changes sign and f at the
+// extremum (found by bisecting f') has the other sign, holds the first root, which bisection
+// then finds. So two roots closer than a step are found too, as long as a step holds at most
+// one extremum of f.
+double sampledFirstHit(PointEvaluator& f, const Ray& r, double t0, double t1, int samples);
 
 // Compares `image` with tests/render/reference/<name>.png within the tolerance of
 // image.hpp; with ZS_UPDATE_REFERENCE=1 writes the reference instead. On mismatch the
