@@ -9,9 +9,9 @@
 // Rounding (docs/codegen.md, "Interval GLSL"): GLSL has no directed rounding, so every
 // result is widened outward after it is computed: arithmetic by ZSI_REL of its magnitude,
 // the built-in functions by ZSI_FN_REL and ZSI_FN_ABS (plus a share of the argument for
-// sin, cos, tan and exp, whose argument reduction loses accuracy as it grows). The margins
-// are checked against double precision on the GPU that runs the tests
-// (tests/render/interval_rules_test.cpp).
+// sin, cos, tan and exp, whose argument reduction loses accuracy as it grows). The render
+// tests compare the method with double precision on the GPU that runs them
+// (tests/render/interval_method_test.cpp).
 
 #define ZSI_INF uintBitsToFloat(0x7F800000u)
 const float ZSI_REL = 2.384185791015625e-7;  // 2^-22: 4x the error of one rounded operation
