@@ -26,10 +26,11 @@ const float ZSI_TWO_PI = 6.28318531;
 // 0: F may be undefined or unbounded somewhere on the segment, so no monotonicity proof.
 bool zsi_partial = false;
 
-// Outward by `rel` of the magnitude and `abs`; the multiplicative form keeps infinities.
+// Outward by `rel` of the magnitude and `abs` (one multiply-add and one add per end). An
+// infinite end stays infinite, except a lower end of +inf (an overflow on both ends), which
+// becomes NaN and then unbounded (zsi_unNaN): only looser.
 vec2 zsi_widen(vec2 r, float rel, float abs_) {
-  vec2 grow = vec2(r.x > 0.0 ? 1.0 - rel : 1.0 + rel, r.y > 0.0 ? 1.0 + rel : 1.0 - rel);
-  return r * grow + vec2(-abs_, abs_);
+  return r + vec2(-1.0, 1.0) * (abs(r) * rel + abs_);
 }
 vec2 zsi_out(vec2 r) { return zsi_widen(r, ZSI_REL, ZSI_TINY); }
 vec2 zsi_outFn(vec2 r, float arg) {
