@@ -6,9 +6,11 @@
 //   odd:  the next 8 bytes seed the random formula generator (tests/support) and the byte
 //         after them picks its depth and parameter count: always-valid formulas, where a
 //         parse error is a generator bug and aborts too.
-// The shader validated is the prelude, the formula block and a minimal main() that calls
-// zs_F and zs_FGrad: the real ray tracer adds ~5 ms of glslang time per input without
-// touching generated code (the ctest validates it with the real template).
+// The shader validated is the prelude, the formula block, the interval prelude and block,
+// and a minimal main() that calls zs_F, zs_FGrad and zs_FInterval: the real ray tracer adds
+// ~5 ms of glslang time per input without touching generated code (the ctest validates it
+// with the real templates).
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -40,13 +42,18 @@ std::string fromGenerator(const std::uint8_t* data, std::size_t size) {
   return zs::test::randomFormula(rng, options);
 }
 
-std::string testShader(const zs::GlslFormula& formula) {
+std::string testShader(const zs::GlslFormula& formula, const zs::IntervalGlsl& interval) {
   std::string s(zs::shaderTemplate(zs::kPreludeTemplate));
   s += "#line 1 1\n" + formula.source;
-  s += "#line 1 2\nout vec4 zs_color;\n"
+  s += "#line 1 2\n" + std::string(zs::shaderTemplate(zs::kIntervalPreludeTemplate));
+  s += "#line 1 3\n" + interval.source;
+  s += "#line 1 4\nout vec4 zs_color;\n"
        "void main() {\n"
        "  vec3 p = gl_FragCoord.xyz;\n"
-       "  zs_color = zs_FGrad(p) + vec4(zs_F(p));\n"
+       "  vec2 F, D;\n"
+       "  bool partial;\n"
+       "  zs_FInterval(p.xx, p.yy, p.zz, vec3(1.0), F, D, partial);\n"
+       "  zs_color = zs_FGrad(p) + vec4(zs_F(p)) + vec4(F, partial ? D : -D);\n"
        "}\n";
   return s;
 }
@@ -67,8 +74,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::abort();
   }
   zs::Formula& formula = std::get<zs::Formula>(parsed);
-  const zs::GlslFormula glsl = zs::emitFormulaGlsl(formula);
-  const zs::ValidationResult result = zs::validateGlsl(testShader(glsl), zs::Stage::Fragment);
+  const std::array<zs::NodeId, 3> grad = zs::gradient(formula.graph, formula.root);
+  const zs::GlslFormula glsl = zs::emitFormulaGlsl(formula.graph, formula.root, grad);
+  const zs::IntervalGlsl interval = zs::emitIntervalGlsl(formula.graph, formula.root, grad);
+  const zs::ValidationResult result =
+      zs::validateGlsl(testShader(glsl, interval), zs::Stage::Fragment);
   if (!result.ok) {
     std::fprintf(stderr, "formula: %s\n%s\n", text.c_str(),
                  zs::formatInternalShaderError("fragment shader", result).c_str());
