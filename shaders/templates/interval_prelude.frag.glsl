@@ -144,14 +144,14 @@ vec2 zsi_tan(vec2 a) {
 vec2 zsi_asin(vec2 a, inout bool u) {
   u = u || a.x > 1.0 || a.y < -1.0;
   zsi_partial = zsi_partial || a.x < -1.0 || a.y > 1.0;
-  vec2 r = zsi_outFn(asin(clamp(a, -1.0, 1.0)), 0.0);
+  vec2 r = zsi_outFn(vec2(zs_asinOf(a.x), zs_asinOf(a.y)), 0.0);
   return clamp(r, -0.5 * ZSI_PI - 1e-6, 0.5 * ZSI_PI + 1e-6);
 }
 
 vec2 zsi_acos(vec2 a, inout bool u) {
   u = u || a.x > 1.0 || a.y < -1.0;
   zsi_partial = zsi_partial || a.x < -1.0 || a.y > 1.0;
-  vec2 r = zsi_outFn(acos(clamp(a.yx, -1.0, 1.0)), 0.0);
+  vec2 r = zsi_outFn(vec2(zs_acosOf(a.y), zs_acosOf(a.x)), 0.0);
   return clamp(r, 0.0, ZSI_PI + 1e-6);
 }
 

@@ -56,14 +56,26 @@ float zs_log(float a, inout bool u) {
   return a > 0.0 ? log(a) : -zs_FLT_MAX;
 }
 
+// asin and acos through atan: llvmpipe's own are off by up to 4e-4 near +-1 (found by
+// tests/render/interval_rules_test.cpp), its atan by less than 1e-6; (1 - a)(1 + a) keeps
+// 1 - a^2 accurate there.
+float zs_asinOf(float a) {
+  float c = clamp(a, -1.0, 1.0);
+  return atan(c, sqrt((1.0 - c) * (1.0 + c)));
+}
+float zs_acosOf(float a) {
+  float c = clamp(a, -1.0, 1.0);
+  return atan(sqrt((1.0 - c) * (1.0 + c)), c);
+}
+
 float zs_asin(float a, inout bool u) {
   u = u || abs(a) > 1.0;
-  return asin(clamp(a, -1.0, 1.0));
+  return zs_asinOf(a);
 }
 
 float zs_acos(float a, inout bool u) {
   u = u || abs(a) > 1.0;
-  return acos(clamp(a, -1.0, 1.0));
+  return zs_acosOf(a);
 }
 
 // a^b as C's pow: GLSL pow is only defined for a > 0. 0^b is 0 (b > 0), 1 (b = 0) or

@@ -1,0 +1,159 @@
+// The interval rules of the GPU (shaders/templates/interval_prelude.frag.glsl, called as the
+// code generator calls them: codegen/op_interval_glsl.hpp) run on the GPU that runs the
+// tests, against double precision on the CPU: for random operand intervals of every opcode,
+// every value the operation takes at points of its operands (the ends and random points
+// between) must lie in the rule's result. This is the rounding contract of docs/codegen.md
+// ("Interval GLSL") checked on real hardware (llvmpipe here), which no CPU test can do.
+#include <gtest/gtest.h>
+#include <glad/gl.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "codegen/op_interval_glsl.hpp"
+#include "codegen/shader_assembly.hpp"
+#include "expr/tape.hpp"
+#include "render/shader_program.hpp"
+#include "render_support.hpp"
+
+namespace zs {
+namespace {
+
+constexpr int kLanes = 256;  // operand pairs per draw: one pixel each
+
+struct Rule {
+  Op op;
+  int ival = 0;  // PowI's exponent
+  double lo, hi;  // where operands are drawn from
+  double maxWidth;  // largest operand width
+};
+
+// Operand ranges reach past each function's domain, so restriction and the undefined flag
+// are exercised too.
+const Rule kRules[] = {
+    {Op::Neg, 0, -1e3, 1e3, 50},     {Op::Add, 0, -1e3, 1e3, 50},
+    {Op::Sub, 0, -1e3, 1e3, 50},     {Op::Mul, 0, -30, 30, 10},
+    {Op::Div, 0, -30, 30, 10},       {Op::PowI, 2, -5, 5, 3},
+    {Op::PowI, 3, -5, 5, 3},         {Op::PowI, 6, -3, 3, 2},
+    {Op::PowI, -3, -5, 5, 3},        {Op::Pow, 0, -3, 3, 2},
+    {Op::Sin, 0, -100, 100, 4},      {Op::Cos, 0, -100, 100, 4},
+    {Op::Sin, 0, -2, 2, 0.01},       {Op::Cos, 0, -2, 2, 0.01},
+    {Op::Tan, 0, -5, 5, 1},          {Op::Asin, 0, -1.5, 1.5, 1},
+    {Op::Acos, 0, -1.5, 1.5, 1},     {Op::Atan, 0, -50, 50, 20},
+    {Op::Atan2, 0, -3, 3, 2},        {Op::Sinh, 0, -10, 10, 3},
+    {Op::Cosh, 0, -10, 10, 3},       {Op::Tanh, 0, -5, 5, 2},
+    {Op::Exp, 0, -20, 20, 3},        {Op::Log, 0, -1, 50, 10},
+    {Op::Sqrt, 0, -1, 100, 10},      {Op::Cbrt, 0, -50, 50, 10},
+    {Op::Abs, 0, -10, 10, 5},        {Op::Sign, 0, -2, 2, 1},
+    {Op::Floor, 0, -10, 10, 3},      {Op::Ceil, 0, -10, 10, 3},
+    {Op::Min, 0, -10, 10, 5},        {Op::Max, 0, -10, 10, 5},
+};
+
+// The interval prelude and a main() that applies rule `rule` (as the emitter writes it) to
+// the operand intervals of its pixel: out (lo, hi, undefined everywhere, restricted).
+std::string fragmentSource(const Rule& rule) {
+  std::string s(shaderTemplate(kPreludeTemplate));
+  s += shaderTemplate(kIntervalPreludeTemplate);
+  s += "uniform vec4 zsTestInput[" + std::to_string(kLanes) + "];\n"
+       "out vec4 zsTestOut;\n"
+       "void main() {\n"
+       "  vec4 in4 = zsTestInput[int(gl_FragCoord.x)];\n"
+       "  vec2 a = in4.xy, b = in4.zw;\n"
+       "  bool u = false;\n"
+       "  zsi_partial = false;\n"
+       "  vec2 r = " + glslIntervalOpExpression(rule.op, "a", "b", rule.ival, "u") + ";\n"
+       "  zsTestOut = vec4(r, u ? 1.0 : 0.0, zsi_partial ? 1.0 : 0.0);\n"
+       "}\n";
+  return s;
+}
+
+const char* kVertex =
+    "#version 330 core\n"
+    "void main() {\n"
+    "  vec2 p = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);\n"
+    "  gl_Position = vec4(p, 0.0, 1.0);\n"
+    "}\n";
+
+// Runs `rule` on the GPU for the given operands (a.lo, a.hi, b.lo, b.hi per lane).
+std::vector<float> runOnGpu(const Rule& rule, const std::vector<float>& operands,
+                            std::string& error) {
+  const unsigned program = compileProgram(kVertex, fragmentSource(rule), error);
+  if (program == 0) return {};
+  GLuint fbo = 0, texture = 0, vao = 0;
+  glGenTextures(1, &texture);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, kLanes, 1, 0, GL_RGBA, GL_FLOAT, nullptr);
+  glGenFramebuffers(1, &fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  glUseProgram(program);
+  glUniform4fv(glGetUniformLocation(program, "zsTestInput"), kLanes, operands.data());
+  glViewport(0, 0, kLanes, 1);
+  glDisable(GL_SCISSOR_TEST);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  std::vector<float> out(4 * kLanes);
+  glReadPixels(0, 0, kLanes, 1, GL_RGBA, GL_FLOAT, out.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glDeleteFramebuffers(1, &fbo);
+  glDeleteTextures(1, &texture);
+  glDeleteVertexArrays(1, &vao);
+  glDeleteProgram(program);
+  if (glGetError() != GL_NO_ERROR) error = "a GL error while running the rule";
+  return out;
+}
+
+TEST(IntervalRules, EveryRuleEnclosesTheOperationOnThisGpu) {
+  std::string error;
+  ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
+  std::mt19937_64 rng(1123);
+  for (const Rule& rule : kRules) {
+    const std::string name = std::string(opInfo(rule.op).enumName) +
+                             (rule.op == Op::PowI ? std::to_string(rule.ival) : "") + " on [" +
+                             std::to_string(rule.lo) + ", " + std::to_string(rule.hi) + "]";
+    SCOPED_TRACE(name);
+    std::uniform_real_distribution<double> at(rule.lo, rule.hi), width(0.0, rule.maxWidth);
+    std::vector<float> operands(4 * kLanes);
+    for (int i = 0; i < kLanes; ++i) {
+      for (int k = 0; k < 2; ++k) {
+        // Every 8th operand is a point; the rest random intervals.
+        const float lo = float(at(rng));
+        const float hi = i % 8 == 0 ? lo : float(lo + width(rng));
+        operands[4 * i + 2 * k] = lo;
+        operands[4 * i + 2 * k + 1] = hi;
+      }
+    }
+    const std::vector<float> out = runOnGpu(rule, operands, error);
+    ASSERT_EQ(error, "");
+    int checked = 0, escaped = 0;
+    for (int i = 0; i < kLanes; ++i) {
+      const double alo = operands[4 * i], ahi = operands[4 * i + 1];
+      const double blo = operands[4 * i + 2], bhi = operands[4 * i + 3];
+      const double rlo = out[4 * i], rhi = out[4 * i + 1];
+      const bool undefinedEverywhere = out[4 * i + 2] != 0.0f;
+      std::uniform_real_distribution<double> pa(0, 1);
+      for (int s = 0; s < 40; ++s) {
+        const double x = s == 0 ? alo : s == 1 ? ahi : alo + (ahi - alo) * pa(rng);
+        const double y = s == 0 ? blo : s == 1 ? bhi : blo + (bhi - blo) * pa(rng);
+        const double v = applyScalar(rule.op, x, y, rule.ival, 0.0);
+        if (std::isnan(v)) continue;  // outside the operation's domain
+        ++checked;
+        const bool inside = !undefinedEverywhere && rlo <= v && v <= rhi;
+        if (!inside && escaped++ < 5) {
+          ADD_FAILURE() << name << ": op(" << x << ", " << y << ") = " << v
+                        << " escapes the GPU's [" << rlo << ", " << rhi << "] for operands ["
+                        << alo << ", " << ahi << "], [" << blo << ", " << bhi << "]"
+                        << (undefinedEverywhere ? " (flagged undefined everywhere)" : "");
+        }
+      }
+    }
+    EXPECT_GT(checked, kLanes * 4) << "too few defined points: the comparison means little";
+  }
+}
+
+}  // namespace
+}  // namespace zs
