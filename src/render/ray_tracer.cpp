@@ -235,6 +235,8 @@ double RayTracer::resolveCurvatureRange(const RenderSettings& settings, const Do
   // A picture a quarter the size, drawn into the corner of the offscreen target (the shader
   // derives its rays from rt.resolution and the pixel, so a smaller resolution is a smaller
   // picture of the same view), then its value attachment read back.
+  GLint bound = 0;  // the viewer traces into its own framebuffer: put it back afterwards
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
   if (!ensureTarget(std::max(width, 1), std::max(height, 1)).empty()) return 1;
   const int w = std::max(width / 4, 1), h = std::max(height / 4, 1);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
@@ -262,7 +264,7 @@ double RayTracer::resolveCurvatureRange(const RenderSettings& settings, const Do
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadBuffer(GL_COLOR_ATTACHMENT2);
   glReadPixels(0, 0, w, h, GL_RED, GL_FLOAT, values.data());
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(bound));
   // Noise floor: 1e-3 of the curvature of a sphere as large as the domain.
   const Domain box = boundingBox(domain);
   const double half = 0.5 * std::hypot(box.max[0] - box.min[0], box.max[1] - box.min[1],
