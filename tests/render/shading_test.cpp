@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 
+#include "render/shading_defines.hpp"
 #include "render_support.hpp"
 
 namespace zs {
@@ -134,6 +135,42 @@ TEST_F(Shading, NormalColoringShowsTheNormalOfTheSideSeen) {
   s.shading.color = ColorMode::Normal;
   const Image image = render(s);
   EXPECT_TRUE(test::pixelNear(image, kSize / 2, kSize / 2, {0.5, 0.5, 1.0}, 4));
+}
+
+int occurrences(const std::string& text, const std::string& word) {
+  int n = 0;
+  for (auto at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) ++n;
+  return n;
+}
+
+TEST(ShadingDefines, OneConstantEntryPerLightThatIsOn) {
+  RenderSettings s;
+  std::string d = shadingDefines(s);
+  EXPECT_EQ(occurrences(d, "RT_DIRECTIONAL("), 1) << d;
+  EXPECT_EQ(occurrences(d, "RT_POINT("), 1) << d;
+  // Default directional light: direction (-0.4, -0.6, -1), so towards it is its negation,
+  // normalized; color 0.8 = white x intensity.
+  EXPECT_NE(d.find("RT_DIRECTIONAL(vec3(0.324442842, 0.486664263, 0.811107106), vec3(0.8, 0.8, 0.8))"),
+            std::string::npos) << d;
+  EXPECT_NE(d.find("RT_POINT(vec3(3.0, 3.0, 4.0), vec3(0.6, 0.6, 0.6))"), std::string::npos) << d;
+  EXPECT_NE(d.find("#define RT_KEY_LIGHT vec3(0.324442842"), std::string::npos) << d;
+  EXPECT_NE(d.find("#define RT_COLOR 0\n"), std::string::npos);
+  s.lights.sources[0].enabled = false;
+  s.shading.color = ColorMode::Mean;
+  d = shadingDefines(s);
+  EXPECT_EQ(occurrences(d, "RT_DIRECTIONAL("), 0) << d;
+  EXPECT_EQ(d.find("RT_KEY_LIGHT"), std::string::npos) << "no directional light is on";
+  EXPECT_NE(d.find("#define RT_COLOR 2\n"), std::string::npos);
+  s.lights.sources.clear();
+  EXPECT_EQ(shadingDefines(s).rfind("#define RT_LIGHTS\n", 0), 0u);
+}
+
+TEST(CurvatureRange, NinetyFifthPercentileOfTheMagnitudesWithAFloor) {
+  std::vector<float> values(100, NAN);  // misses do not count
+  for (int i = 0; i < 20; ++i) values[i] = (i % 2 ? -1.0f : 1.0f) * float(i + 1);  // |v| 1..20
+  EXPECT_EQ(curvatureRangeOf(values, 0.5), 19.0);  // index floor(0.95 * 19) = 18 of 1..20
+  EXPECT_EQ(curvatureRangeOf(std::vector<float>(10, 0.0f), 0.25), 0.25);
+  EXPECT_EQ(curvatureRangeOf(std::vector<float>(10, NAN), 0.25), 1.0);  // nothing hit
 }
 
 }  // namespace
