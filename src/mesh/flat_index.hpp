@@ -39,6 +39,9 @@ class FlatIndex {
   }
 
   std::size_t size() const { return size_; }
+  void reserve(std::size_t n) {
+    if (2 * n > keys_.size()) rehash(capacityFor(n));
+  }
 
  private:
   static std::size_t capacityFor(std::size_t n) {

@@ -39,28 +39,37 @@ void Grid::evaluateNew(std::size_t from) {
   work(0);
 }
 
+void Grid::reserve(std::size_t cells) {
+  cellIndex_.reserve(cells);
+  cells_.reserve(cells);
+  cellCorners_.reserve(8 * cells);
+  vertexIndex_.reserve(2 * cells);
+  vertexKeys_.reserve(2 * cells);
+  values_.reserve(2 * cells);
+}
+
 void Grid::addCells(std::vector<std::uint64_t> pending) {
   while (!pending.empty()) {
-    std::vector<std::uint64_t> added;
+    std::vector<std::size_t> added;  // indices into cells_
     const std::size_t from = vertexKeys_.size();
     for (std::uint64_t c : pending) {
       bool inserted;
       cellIndex_.insert(c, std::uint32_t(cells_.size()), inserted);
       if (!inserted) continue;
+      added.push_back(cells_.size());
       cells_.push_back(c);
-      added.push_back(c);
       for (int corner = 0; corner < 8; ++corner) {
         const std::uint64_t k = c + cornerOffset(corner);
-        vertexIndex_.insert(k, std::uint32_t(vertexKeys_.size()), inserted);
+        cellCorners_.push_back(vertexIndex_.insert(k, std::uint32_t(vertexKeys_.size()), inserted));
         if (inserted) vertexKeys_.push_back(k);
       }
     }
     evaluateNew(from);
     pending.clear();
-    for (std::uint64_t c : added) {
+    for (std::size_t i : added) {
+      const std::uint64_t c = cells_[i];
       int neg = 0;
-      for (int corner = 0; corner < 8; ++corner)
-        neg |= int(negative(vertexIndex_.find(c + cornerOffset(corner)))) << corner;
+      for (int corner = 0; corner < 8; ++corner) neg |= int(negative(cellCorners_[8 * i + std::size_t(corner)])) << corner;
       if (neg == 0 || neg == 0xff) continue;
       for (int axis = 0; axis < 3; ++axis) {
         for (int side = 0; side < 2; ++side) {

@@ -37,11 +37,15 @@ class Grid {
   void evaluate(std::span<const std::uint64_t> vertexKeys);
   // Takes the seeds and every cell the closure rule reaches from them.
   void addCells(std::vector<std::uint64_t> seeds);
+  // Sizes the tables for about this many cells, so they do not grow step by step.
+  void reserve(std::size_t cells);
 
   std::uint32_t vertex(std::uint64_t key) const { return vertexIndex_.find(key); }
   double value(std::uint32_t vertex) const { return values_[vertex]; }
   bool negative(std::uint32_t vertex) const { return values_[vertex] < 0; }
   const std::vector<std::uint64_t>& cells() const { return cells_; }
+  // The corners of cell i (index into cells()), as vertex indices, corner c = bits xyz.
+  const std::uint32_t* cellCorners(std::size_t i) const { return &cellCorners_[8 * i]; }
   std::size_t valueCount() const { return values_.size(); }
 
  private:
@@ -56,6 +60,7 @@ class Grid {
   std::vector<double> values_;
   FlatIndex cellIndex_{1 << 16};
   std::vector<std::uint64_t> cells_;
+  std::vector<std::uint32_t> cellCorners_;  // 8 per cell
 };
 
 }  // namespace zs::mesh

@@ -18,13 +18,13 @@ std::uint64_t edgeKey(std::uint64_t a, std::uint64_t b) {
 Marched marchCells(const Grid& grid) {
   Marched m;
   const auto& edges = cellEdges();
-  for (std::uint64_t cell : grid.cells()) {
-    std::array<std::uint32_t, 8> corner{};
+  m.edgeIndex.reserve(grid.cells().size() * 3 / 2);
+  m.edges.reserve(grid.cells().size() * 3 / 2);
+  for (std::size_t i = 0; i < grid.cells().size(); ++i) {
+    const std::uint64_t cell = grid.cells()[i];
+    const std::uint32_t* corner = grid.cellCorners(i);
     int neg = 0;
-    for (int c = 0; c < 8; ++c) {
-      corner[std::size_t(c)] = grid.vertex(cell + cornerOffset(c));
-      neg |= int(grid.negative(corner[std::size_t(c)])) << c;
-    }
+    for (int c = 0; c < 8; ++c) neg |= int(grid.negative(corner[c])) << c;
     if (neg == 0 || neg == 0xff) continue;
     std::array<std::uint32_t, kCellEdges> local{};
     for (int e = 0; e < kCellEdges; ++e) {
@@ -36,7 +36,7 @@ Marched marchCells(const Grid& grid) {
       local[std::size_t(e)] = m.edgeIndex.insert(key, std::uint32_t(m.edges.size()), inserted);
       if (!inserted) continue;
       const int n = loNeg ? ce.lo : ce.hi, p = loNeg ? ce.hi : ce.lo;
-      m.edges.push_back({corner[std::size_t(n)], corner[std::size_t(p)], cell + cornerOffset(n),
+      m.edges.push_back({corner[n], corner[p], cell + cornerOffset(n),
                          cell + cornerOffset(p)});
     }
     for (int t = 0; t < 6; ++t) {

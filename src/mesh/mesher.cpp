@@ -98,6 +98,7 @@ std::variant<MeshResult, std::string> buildMesh(const Formula& formula,
 
   auto t0 = Clock::now();
   mesh::Grid grid(box, settings.level, evaluators);
+  grid.reserve(tree.leaves.size() + tree.leaves.size() / 8);
   std::vector<std::uint64_t> seeds;
   seeds.reserve(tree.leaves.size());
   for (const OctreeLeaf& leaf : tree.leaves) seeds.push_back(mesh::packKey(leaf.cell[0], leaf.cell[1], leaf.cell[2]));
