@@ -15,11 +15,14 @@ namespace {
 void putFloat(std::ostream& out, float v) { out.write(reinterpret_cast<const char*>(&v), 4); }
 void putU32(std::ostream& out, std::uint32_t v) { out.write(reinterpret_cast<const char*>(&v), 4); }
 
-// STL stores one normal per facet: the triangle's own, which agrees with its winding.
+// STL stores one normal per facet: the triangle's own, which agrees with its winding,
+// computed from the corners as stored (in float), as readers recompute it.
 std::array<float, 3> facetNormal(const Mesh& m, const std::array<std::uint32_t, 3>& t) {
-  const auto& a = m.positions[t[0]];
-  const auto& b = m.positions[t[1]];
-  const auto& c = m.positions[t[2]];
+  auto stored = [&](std::uint32_t v) {
+    const auto& p = m.positions[v];
+    return std::array<double, 3>{double(float(p[0])), double(float(p[1])), double(float(p[2]))};
+  };
+  const auto a = stored(t[0]), b = stored(t[1]), c = stored(t[2]);
   const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
   const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
   const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
