@@ -27,4 +27,8 @@ struct MeshTopology {
 
 MeshTopology checkMesh(const Mesh& mesh);
 
+// Pairs of triangles with no common vertex that cross each other (an edge of one through
+// the other): 0 for a mesh without self-intersections. Binned, for tests and small meshes.
+std::size_t countSelfIntersections(const Mesh& mesh);
+
 }  // namespace zs

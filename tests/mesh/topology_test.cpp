@@ -28,6 +28,8 @@ void expectClosed(const MeshTopology& t, long euler) {
   EXPECT_GT(t.faces, 100u);
 }
 
+void expectNoSelfIntersections(const Mesh& m) { EXPECT_EQ(countSelfIntersections(m), 0u); }
+
 TEST(MeshTopology, SphereIsAClosedManifoldOfEulerCharacteristicTwo) {
   for (int level : {3, 5, 7}) {
     const MeshResult r = meshOf("x^2 + y^2 + z^2 - 1", cube(1.5), level);
@@ -36,6 +38,7 @@ TEST(MeshTopology, SphereIsAClosedManifoldOfEulerCharacteristicTwo) {
     expectClosed(t, 2);
     EXPECT_EQ(t.components, 1u);
     if (level == 7) EXPECT_NEAR(t.volume, 4.0 / 3.0 * kPi, 0.01 * 4.0 / 3.0 * kPi);
+    if (level == 5) expectNoSelfIntersections(r.mesh);
   }
 }
 
@@ -53,6 +56,7 @@ TEST(MeshTopology, TorusHasEulerCharacteristicZeroAndItsVolume) {
   EXPECT_EQ(t.components, 1u);
   const double exact = 2 * kPi * kPi * R * rr * rr;
   EXPECT_NEAR(t.volume, exact, 0.01 * exact);
+  expectNoSelfIntersections(r.mesh);
 }
 
 TEST(MeshTopology, ThickenedFigureEightHasGenusTwo) {
@@ -63,6 +67,7 @@ TEST(MeshTopology, ThickenedFigureEightHasGenusTwo) {
   const MeshTopology t = checkMesh(r.mesh);
   expectClosed(t, -2);
   EXPECT_EQ(t.components, 1u);
+  expectNoSelfIntersections(r.mesh);
 }
 
 TEST(MeshTopology, ManyComponentsEachClosed) {
@@ -99,6 +104,7 @@ TEST(MeshTopology, CappedGyroidCellIsClosed) {
   // The gyroid splits the cube into two congruent labyrinths: half the volume each.
   const double box = std::pow(2 * 3.14159, 3);
   EXPECT_NEAR(t.volume, box / 2, 0.01 * box);
+  expectNoSelfIntersections(r.mesh);
 }
 
 TEST(MeshTopology, CappedBallDomainIsClosed) {
@@ -121,6 +127,39 @@ TEST(MeshTopology, OpenBallDomainEndsOnTheSphere) {
     EXPECT_LE(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), 1.2 * (1 + 1e-9));
     EXPECT_NEAR(p[2], 0.2, 1e-9);
   }
+}
+
+}  // namespace
+}  // namespace zs
+
+namespace zs {
+namespace {
+
+TEST(MeshCheck, FindsWhatItLooksFor) {
+  // Two triangles through each other, and one pair that only shares a vertex.
+  Mesh m;
+  m.positions = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, -1}, {0.5, 0.5, 1}, {1.5, 1.5, 0.5},
+                 {5, 5, 5}, {6, 5, 5}};
+  m.normals.resize(m.positions.size());
+  m.kinds.resize(m.positions.size());
+  m.triangles = {{0, 1, 2}, {3, 4, 5}, {0, 6, 7}};
+  EXPECT_EQ(countSelfIntersections(m), 1u);
+  const MeshTopology t = checkMesh(m);
+  EXPECT_EQ(t.boundaryEdges, 9u);
+  EXPECT_FALSE(t.closedManifold());
+  EXPECT_EQ(t.nonManifoldVertices, 1u);  // vertex 0: two triangles meeting only there
+  // A tetrahedron's surface: closed, Euler 2, and flipping one face is caught.
+  Mesh tet;
+  tet.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  tet.normals.resize(4);
+  tet.kinds.resize(4);
+  tet.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  const MeshTopology c = checkMesh(tet);
+  EXPECT_TRUE(c.closedManifold());
+  EXPECT_EQ(c.euler, 2);
+  EXPECT_NEAR(c.volume, 1.0 / 6.0, 1e-15);
+  tet.triangles[3] = {1, 3, 2};
+  EXPECT_EQ(checkMesh(tet).misorientedEdges, 3u);
 }
 
 }  // namespace

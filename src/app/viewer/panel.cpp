@@ -72,6 +72,18 @@ void drawStats(const PanelStats& s) {
     ImGui::TextWrapped("%s", s.status.c_str());
 }
 
+// A mesh of the surface for printing or other tools: the level and cap, and the button
+// (the M key does the same).
+void drawMeshExport(PanelState& state, PanelResult& result) {
+  ImGui::Separator();
+  ImGui::SetNextItemWidth(120);
+  ImGui::SliderInt("mesh level", &state.meshLevel, 3, 10);
+  ImGui::SameLine();
+  ImGui::Checkbox("cap", &state.meshCap);
+  ImGui::SameLine();
+  if (ImGui::Button("Export mesh (M)")) result.exportMesh = true;
+}
+
 void drawKeys() {
   if (!ImGui::CollapsingHeader("keys and mouse")) return;
   ImGui::TextUnformatted("left drag    rotate (arcball)");
@@ -106,6 +118,7 @@ PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats) 
     drawFormula(state, result);
     drawParams(scene, state);
     drawStats(stats);
+    drawMeshExport(state, result);
     drawSettings(scene);
     drawKeys();
   }
