@@ -37,8 +37,12 @@ TEST(MeshTopology, SphereIsAClosedManifoldOfEulerCharacteristicTwo) {
     SCOPED_TRACE(level);
     expectClosed(t, 2);
     EXPECT_EQ(t.components, 1u);
-    if (level == 7) EXPECT_NEAR(t.volume, 4.0 / 3.0 * kPi, 0.01 * 4.0 / 3.0 * kPi);
-    if (level == 5) expectNoSelfIntersections(r.mesh);
+    if (level == 7) {
+      EXPECT_NEAR(t.volume, 4.0 / 3.0 * kPi, 0.01 * 4.0 / 3.0 * kPi);
+    }
+    if (level == 5) {
+      expectNoSelfIntersections(r.mesh);
+    }
   }
 }
 
