@@ -3,6 +3,7 @@
 // example surface.
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <variant>
 
@@ -37,6 +38,8 @@ int runView(const ViewArgs& args) {
     if (!scene) return 1;
     options.scene = *scene;
     options.title = "zeroset - " + args.scene.input;
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(args.scene.input, ec)) options.sceneFile = args.scene.input;
   }
   const char* envDir = std::getenv("ZS_OUTPUT_DIR");
   options.outputDir = !args.outputDir.empty() ? args.outputDir

@@ -12,6 +12,7 @@ void addRenderCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 void addViewCommand(CLI::App& app);
 void addSingularCommand(CLI::App& app);
+void addMeshCommand(CLI::App& app);
 
 // `zeroset` with no arguments: the formula prompt (repl/prompt.hpp).
 int runPrompt();

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <variant>
 
 #include "scene/scene_io.hpp"
@@ -67,6 +68,18 @@ TEST(Viewer, BorderKeyTogglesTheDomainBorderHighlight) {
   const int plain = countPixels(v.screenshot(), 215, 240);
   EXPECT_GT(highlighted, 200);
   EXPECT_LT(plain, highlighted / 3);
+}
+
+TEST(Viewer, MeshKeyExportsAClosedMesh) {
+  // A typed formula has no file: the mesh goes to the output folder, at the panel's level.
+  ViewerSession v("mesh", {"x^2 + y^2 + z^2 - 1"});
+  START(v);
+  v.key("m");
+  const std::string wrote = v.waitLog("consistently oriented; Euler characteristic 2, 1 piece");
+  ASSERT_FALSE(wrote.empty()) << v.log();
+  const auto file = v.dir() / "zeroset-level7-0001.stl";
+  ASSERT_TRUE(std::filesystem::exists(file)) << v.log();
+  EXPECT_GT(std::filesystem::file_size(file), 84u + 50u * 1000u);
 }
 
 TEST(Viewer, LevelKeysRebuildTheOctreeAndKeepThePicture) {

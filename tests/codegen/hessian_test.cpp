@@ -1,5 +1,5 @@
 // The second derivatives for the curvature colorings: emitted as zs_FHess only on request,
-// and every coloring x lighting variant of the shading template passes glslang, with either
+// and every coloring x lighting variant of the shading template passes glslang, with every
 // tracing method.
 #include "codegen/emit_hessian.hpp"
 
@@ -22,6 +22,7 @@ struct Generated {
   GlslFormula glsl;
   std::string hessian;
   std::optional<RayPolynomialGlsl> poly;
+  IntervalGlsl interval;
 };
 
 Generated generate(const std::string& text) {
@@ -32,6 +33,7 @@ Generated generate(const std::string& text) {
   g.glsl = emitFormulaGlsl(f.graph, f.root, grad);
   g.hessian = emitHessianGlsl(f.graph, grad);
   g.poly = emitRayPolynomialGlsl(f.graph, f.root);
+  g.interval = emitIntervalGlsl(f.graph, f.root, grad);
   return g;
 }
 
@@ -63,6 +65,9 @@ TEST(Hessian, EveryColoringVariantPassesGlslang) {
       const ValidationResult sampling =
           validateGlsl(withDefines(assembleFragmentShader(block), color), Stage::Fragment);
       EXPECT_TRUE(sampling.ok) << formatInternalShaderError("sampling", sampling);
+      const ValidationResult interval = validateGlsl(
+          withDefines(assembleFragmentShader(block, g.interval), color), Stage::Fragment);
+      EXPECT_TRUE(interval.ok) << formatInternalShaderError("interval", interval);
       if (!g.poly) continue;
       const ValidationResult bernstein =
           validateGlsl(withDefines(assembleFragmentShader(block, *g.poly), color), Stage::Fragment);

@@ -15,7 +15,7 @@ namespace {
 constexpr int S = GLFW_MOD_SHIFT;
 constexpr int C = GLFW_MOD_CONTROL;
 
-constexpr std::array<KeyBinding, 23> kBindings{{
+constexpr std::array<KeyBinding, 24> kBindings{{
     {GLFW_KEY_N, 0, Action::NextExample, "N", "next example surface"},
     {GLFW_KEY_P, 0, Action::PrevExample, "P", "previous example surface"},
     {GLFW_KEY_D, 0, Action::DirLightUp, "D", "first directional light brighter (+0.1)"},
@@ -33,6 +33,7 @@ constexpr std::array<KeyBinding, 23> kBindings{{
     {GLFW_KEY_C, 0, Action::Screenshot, "C", "screenshot: write a PNG at window size"},
     {GLFW_KEY_C, S, Action::WindowShot, "Shift+C", "screenshot of the window, panel included"},
     {GLFW_KEY_S, C, Action::SaveScene, "Ctrl+S", "save the current view as a .surf"},
+    {GLFW_KEY_M, 0, Action::ExportMesh, "M", "export a mesh (.stl) at the panel's mesh level"},
     {GLFW_KEY_F, 0, Action::FocusFormula, "F", "type a formula (focus the text box)"},
     {GLFW_KEY_H, 0, Action::TogglePanel, "H", "hide / show the panel"},
     {GLFW_KEY_R, 0, Action::ResetView, "R", "reset camera and lights to the loaded scene"},
@@ -117,6 +118,7 @@ Effect applyAction(Action action, Scene& scene, std::string& message) {
     case Action::Screenshot:
     case Action::WindowShot:
     case Action::SaveScene:
+    case Action::ExportMesh:
     case Action::FocusFormula:
     case Action::TogglePanel:
     case Action::ResetView:

@@ -97,6 +97,18 @@ void drawLegend(const PanelStats& s) {
   ImGui::Text("+%s", range);
 }
 
+// A mesh of the surface for printing or other tools: the level and cap, and the button
+// (the M key does the same).
+void drawMeshExport(PanelState& state, PanelResult& result) {
+  ImGui::Separator();
+  ImGui::SetNextItemWidth(120);
+  ImGui::SliderInt("mesh level", &state.meshLevel, 3, 10);
+  ImGui::SameLine();
+  ImGui::Checkbox("cap", &state.meshCap);
+  ImGui::SameLine();
+  if (ImGui::Button("Export mesh (M)")) result.exportMesh = true;
+}
+
 void drawKeys() {
   if (!ImGui::CollapsingHeader("keys and mouse")) return;
   ImGui::TextUnformatted("left drag    rotate (arcball)");
@@ -132,6 +144,7 @@ PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats) 
     drawParams(scene, state);
     drawStats(stats);
     drawLegend(stats);
+    drawMeshExport(state, result);
     drawSettings(scene);
     drawKeys();
   }

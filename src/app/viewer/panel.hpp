@@ -37,12 +37,15 @@ struct PanelState {
   bool focusFormula = false; // set by the F key: put the cursor in the box next frame
   std::vector<std::string> paramNames;                 // of the shown surface
   std::vector<std::pair<double, double>> paramRanges;  // slider bounds, fixed per surface
+  int meshLevel = 7;         // grid level of "Export mesh" (docs/mesh.md)
+  bool meshCap = false;      // close the solid along the domain for printing
 };
 
 struct PanelResult {
   bool formulaEdited = false;     // the text changed (the viewer debounces the build)
   bool formulaSubmitted = false;  // Enter was pressed in the box
   bool sliderActive = false;      // a widget is being dragged: trace at reduced resolution
+  bool exportMesh = false;        // the "Export mesh" button was pressed
 };
 
 PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats);

@@ -49,6 +49,7 @@ std::unique_ptr<Viewer> Viewer::open(const ViewerOptions& options, std::string& 
   v->examples_ = listExamples(findExamplesDir());
   v->worker_ = std::make_unique<SurfaceWorker>([] { glfwPostEmptyEvent(); });
   v->setScene(options.scene, {});
+  v->sceneFile_ = options.sceneFile;
   if (options.exampleIndex >= 0 && std::size_t(options.exampleIndex) < v->examples_.size()) {
     v->exampleIndex_ = options.exampleIndex;
     v->stats_.example = std::to_string(options.exampleIndex + 1) + " of " +
@@ -165,6 +166,7 @@ void Viewer::frame() {
   PanelResult panel;
   if (panelVisible_) panel = drawPanel(scene_, panel_, stats_);
   sliderActive_ = panel.sliderActive;
+  if (panel.exportMesh) startMeshExport();
   if (scene_ != before) onSceneEdited(before);
   if ((panel.formulaEdited || panel.formulaSubmitted) && panel_.formulaError.empty() &&
       panel_.formula != scene_.formula) {
@@ -180,6 +182,7 @@ void Viewer::frame() {
   if (windowShot_ && !worker_->busy()) captureWindow(width, height);
   window_->swapBuffers();
   answerWaiting();
+  finishMeshExport();
 
   if (options_.log && !readyPrinted_ && hasSurface_ && !refine_ && !worker_->busy()) {
     readyPrinted_ = true;

@@ -29,6 +29,7 @@ struct ViewerOptions {
   Scene scene;
   std::string title = "zeroset";
   std::filesystem::path outputDir = ".";  // screenshots and saved scenes
+  std::filesystem::path sceneFile;  // the scene's file, if any: meshes are written beside it
   int exampleIndex = -1;  // the scene is this entry of listExamples() (N/P go on from it)
   int dragScale = 0;  // fixed resolution divisor while dragging; 0 = adapt to hold ~30 fps
   // Print events on stdout: "ready WxH" once the first surface is on screen at full
@@ -97,6 +98,10 @@ class Viewer {
   std::string save(const std::filesystem::path& path);
   void captureWindow(int width, int height);  // the back buffer, panel included
 
+  // viewer_mesh.cpp: "Export mesh" runs on its own thread; the frame loop collects it
+  void startMeshExport();
+  void finishMeshExport();
+
   ViewerOptions options_;
   std::unique_ptr<GlfwWindowContext> window_;
   std::unique_ptr<SurfaceView> view_;
@@ -145,6 +150,8 @@ class Viewer {
   std::vector<Waiting> waiting_;  // main thread only
   bool windowShot_ = false;        // Shift+C: capture before the next swap
   std::string lastBuildError_;    // of the latest build request, "" when it is on screen
+  std::filesystem::path sceneFile_;      // where the shown scene was loaded from, if anywhere
+  std::future<std::string> meshExport_;  // a running export's summary
 };
 
 }  // namespace zs::app

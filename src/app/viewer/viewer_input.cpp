@@ -88,6 +88,7 @@ void Viewer::showExample(int delta) {
   const std::string label = std::to_string(exampleIndex_ + 1) + " of " + std::to_string(n) +
                             ": " + example.name;
   setScene(std::get<Scene>(loaded), label);
+  sceneFile_ = example.file;
   stats_.status = "example " + label;
   if (options_.log) std::printf("%s\n", stats_.status.c_str());
 }
@@ -100,6 +101,7 @@ void Viewer::runAction(Action action) {
     case Action::Screenshot: waiting_.push_back({{PromptCommand::Kind::Png, {}}, std::nullopt}); break;
     case Action::WindowShot: windowShot_ = true; break;
     case Action::SaveScene: waiting_.push_back({{PromptCommand::Kind::Save, {}}, std::nullopt}); break;
+    case Action::ExportMesh: startMeshExport(); break;
     case Action::FocusFormula:
       panelVisible_ = true;
       panel_.focusFormula = true;

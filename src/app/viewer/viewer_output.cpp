@@ -49,6 +49,7 @@ void Viewer::runPending() {
         }
         if (c.kind == PromptCommand::Kind::Load) {
           setScene(next, c.arg);
+          sceneFile_ = c.arg;
         } else {
           const Scene before = scene_;
           scene_ = next;

@@ -1,0 +1,52 @@
+// "Export mesh" (the panel's button, the M key): the shown scene meshed at the panel's level
+// and written as STL beside the scene's file (or in the output folder when the scene has
+// no file or its folder is not writable), on a thread of its own so the window stays live.
+#include <GLFW/glfw3.h>
+#include <unistd.h>
+
+#include <cstdio>
+
+#include "app/mesh_export.hpp"
+#include "app/repl/scene_edit.hpp"
+#include "app/viewer/viewer.hpp"
+
+namespace zs::app {
+
+void Viewer::startMeshExport() {
+  if (meshExport_.valid()) {
+    stats_.status = "a mesh export is still running";
+    return;
+  }
+  std::filesystem::path dir = options_.outputDir;
+  std::string stem = "zeroset";
+  if (!sceneFile_.empty()) {
+    const std::filesystem::path beside = sceneFile_.parent_path().empty() ? "." : sceneFile_.parent_path();
+    if (::access(beside.c_str(), W_OK) == 0) dir = beside;
+    stem = sceneFile_.stem().string();
+  }
+  MeshExport request;
+  request.level = panel_.meshLevel;
+  request.cap = panel_.meshCap;
+  request.output = nextFreePath(dir, stem + "-level" + std::to_string(request.level), ".stl").string();
+  stats_.status = "exporting a mesh at level " + std::to_string(request.level) + "...";
+  meshExport_ = std::async(std::launch::async, [scene = scene_, request] {
+    MeshExportReport report;
+    std::string text = exportMesh(scene, request, report);
+    if (text.empty()) text = meshSummary(report, request.output);
+    glfwPostEmptyEvent();  // wake the loop to show it
+    return text;
+  });
+}
+
+void Viewer::finishMeshExport() {
+  if (!meshExport_.valid() ||
+      meshExport_.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+    return;
+  const std::string text = meshExport_.get();
+  stats_.status = text.substr(0, text.find('\n'));
+  uiFrames_ = 3;
+  std::fputs(text.c_str(), stdout);
+  std::fflush(stdout);
+}
+
+}  // namespace zs::app

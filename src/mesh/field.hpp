@@ -1,0 +1,50 @@
+#pragma once
+// The function the mesh is the zero set of, at points: F, or for a capped ball domain the
+// solid {F < 0} cut by the ball, max(F, |p - c| - r). A point is negative when the value is
+// < 0; zero and undefined (NaN) count as positive, so the zero set never passes through a
+// grid corner. Also the root of the field on a grid edge, and the gradient there.
+#include <array>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "expr/tape.hpp"
+#include "interval/octree.hpp"
+
+namespace zs::mesh {
+
+using P3 = std::array<double, 3>;
+
+// Not thread-safe (its tapes reuse scratch buffers): one per thread.
+class FieldEvaluator {
+ public:
+  FieldEvaluator(const Tape& value, const Tape& withGradient, std::span<const double> params,
+                 std::optional<Ball> capBall);
+
+  double value(const P3& p);
+  double f(const P3& p);
+  // F and its gradient at p.
+  std::array<double, 4> fAndGradient(const P3& p);
+
+  struct Root {
+    P3 position{};
+    P3 gradient{};     // of the piece that vanishes there (F, or the ball's distance)
+    double residual = 0;  // |F| / |grad F| there; 0 on the ball's sphere
+    bool onBall = false;  // the ball's sphere, not F, vanishes here (the cap)
+  };
+  // The root of the field on the segment a -> b, value(a) < 0 <= value(b) (or NaN at b):
+  // bracketed (Illinois), so it never leaves the segment; kept at least kEdgeMargin of the
+  // segment away from either end so that no two vertices coincide.
+  Root rootOnEdge(const P3& a, const P3& b, double va, double vb);
+
+ private:
+  double ballDistance(const P3& p) const;
+
+  PointEvaluator value_, gradient_;
+  std::vector<double> params_;
+  std::optional<Ball> capBall_;
+};
+
+inline constexpr double kEdgeMargin = 2e-4;
+
+}  // namespace zs::mesh
