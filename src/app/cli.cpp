@@ -20,6 +20,9 @@ void addCommands(CLI::App& app) {
   addBenchCommand(app);
   addViewCommand(app);
   addSingularCommand(app);
+  addImportCommand(app);
+  addExportCommand(app);
+  addGalleryCommand(app);
   // After the subcommands, so they do not inherit the top-level footer.
   app.footer(
       "Run `zeroset SUBCOMMAND --help` for a subcommand's options, or `man zeroset`. "

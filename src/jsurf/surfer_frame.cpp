@@ -125,7 +125,10 @@ SurferView toSurfer(const Camera& camera, double radius) {
   }
   // The eye in the rotated, unscaled frame; camera_transform moves it to the origin.
   const Vec3 eye = scaled(camera.eye, 1.0 / radius);
-  const Vec3 local{dot(right, eye), dot(up, eye), -dot(forward, eye)};
+  Vec3 local{dot(right, eye), dot(up, eye), -dot(forward, eye)};
+  // Rounding leaves crumbs of 1e-17 where the eye is on the axis: SURFER's own files say 0.
+  for (double& c : local)
+    if (std::abs(c) < 1e-12 * length(eye)) c = 0;
   view.cameraTransform = identity4();
   for (int r = 0; r < 3; ++r) view.cameraTransform[r][3] = -local[r];
   view.scaleFactor = std::log10(radius);

@@ -15,7 +15,7 @@ namespace {
 constexpr int S = GLFW_MOD_SHIFT;
 constexpr int C = GLFW_MOD_CONTROL;
 
-constexpr std::array<KeyBinding, 23> kBindings{{
+constexpr std::array<KeyBinding, 24> kBindings{{
     {GLFW_KEY_N, 0, Action::NextExample, "N", "next example surface"},
     {GLFW_KEY_P, 0, Action::PrevExample, "P", "previous example surface"},
     {GLFW_KEY_D, 0, Action::DirLightUp, "D", "directional light brighter (+0.1)"},
@@ -35,6 +35,7 @@ constexpr std::array<KeyBinding, 23> kBindings{{
     {GLFW_KEY_S, C, Action::SaveScene, "Ctrl+S", "save the current view as a .surf"},
     {GLFW_KEY_F, 0, Action::FocusFormula, "F", "type a formula (focus the text box)"},
     {GLFW_KEY_H, 0, Action::TogglePanel, "H", "hide / show the panel"},
+    {GLFW_KEY_G, 0, Action::ToggleGallery, "G", "gallery: search the examples, pick one"},
     {GLFW_KEY_R, 0, Action::ResetView, "R", "reset camera and lights to the loaded scene"},
     {GLFW_KEY_Q, C, Action::Quit, "Ctrl+Q", "quit"},
     {GLFW_KEY_RIGHT, 0, Action::NextExample, "Right", "next example surface"},
@@ -109,6 +110,7 @@ Effect applyAction(Action action, Scene& scene, std::string& message) {
     case Action::SaveScene:
     case Action::FocusFormula:
     case Action::TogglePanel:
+    case Action::ToggleGallery:
     case Action::ResetView:
     case Action::Quit:
       return Effect::None;

@@ -15,7 +15,7 @@ enum class Action {
   DirLightUp, DirLightDown, PointLightUp, PointLightDown,
   ToggleBorder, ToggleSilhouette,
   EpsilonUp, EpsilonDown, LevelUp, LevelDown, IntervalsUp, IntervalsDown,
-  Screenshot, WindowShot, SaveScene, FocusFormula, TogglePanel, ResetView, Quit,
+  Screenshot, WindowShot, SaveScene, FocusFormula, TogglePanel, ToggleGallery, ResetView, Quit,
 };
 
 struct KeyBinding {

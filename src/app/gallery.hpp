@@ -1,0 +1,26 @@
+#pragma once
+// The gallery: the example surfaces (viewer/examples.hpp) with what a person picks by —
+// name, degree and the first sentence of the file's description comment. Used by
+// `zeroset gallery` and the viewer's gallery panel. A file without a description, or one
+// that does not load, is still listed (its summary says so).
+#include <string>
+#include <vector>
+
+#include "app/viewer/examples.hpp"
+
+namespace zs::app {
+
+struct GalleryEntry {
+  std::string name;
+  std::string degree;   // "6"; "-" when F is not a polynomial; "?" when it does not load
+  std::string summary;  // one line; "" when the file has no description
+  std::string description;  // the whole comment block
+};
+
+GalleryEntry describeExample(const Example& example);
+std::vector<GalleryEntry> describeExamples(const std::vector<Example>& examples);
+
+// Case-insensitive: does `needle` occur in the entry's name, summary or description?
+bool galleryMatches(const GalleryEntry& entry, const std::string& needle);
+
+}  // namespace zs::app

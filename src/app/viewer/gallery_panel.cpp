@@ -1,0 +1,57 @@
+#include "app/viewer/gallery_panel.hpp"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+
+namespace zs::app {
+
+int drawGallery(GalleryPanel& g, int current) {
+  int picked = -1;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(std::max(8.0f, display.x - 388), 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(380, std::max(120.0f, display.y - 16)), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowBgAlpha(0.85f);
+  if (ImGui::Begin("gallery", &g.visible)) {
+    if (g.focusSearch) {
+      ImGui::SetKeyboardFocusHere();
+      g.focusSearch = false;
+    }
+    ImGui::SetNextItemWidth(-1);
+    const bool enter = ImGui::InputTextWithHint("##search", "search: name or description",
+                                                &g.search, ImGuiInputTextFlags_EnterReturnsTrue);
+    int firstMatch = -1;
+    ImGui::BeginChild("entries");
+    for (std::size_t i = 0; i < g.entries.size(); ++i) {
+      const GalleryEntry& e = g.entries[i];
+      if (!g.search.empty() && !galleryMatches(e, g.search)) continue;
+      if (firstMatch < 0) firstMatch = static_cast<int>(i);
+      ImGui::PushID(static_cast<int>(i));
+      const std::string label = e.name + "   degree " + e.degree;
+      if (ImGui::Selectable(label.c_str(), static_cast<int>(i) == current)) picked = static_cast<int>(i);
+      if (ImGui::IsItemHovered() && !e.description.empty()) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30);
+        ImGui::TextUnformatted(e.description.c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+      }
+      ImGui::Indent();
+      ImGui::PushTextWrapPos(0);
+      ImGui::TextDisabled("%s", e.summary.empty() ? "(no description)" : e.summary.c_str());
+      ImGui::PopTextWrapPos();
+      ImGui::Unindent();
+      ImGui::PopID();
+    }
+    if (firstMatch < 0) ImGui::TextDisabled("no example matches");
+    ImGui::EndChild();
+    if (enter && firstMatch >= 0) picked = firstMatch;
+    // Give the keyboard back to the viewer, so N/P go on from the pick.
+    if (picked >= 0) ImGui::SetWindowFocus(nullptr);
+  }
+  ImGui::End();
+  return picked;
+}
+
+}  // namespace zs::app
