@@ -10,8 +10,10 @@ namespace zs::app {
 int drawGallery(GalleryPanel& g, int current) {
   int picked = -1;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(std::max(8.0f, display.x - 388), 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(380, std::max(120.0f, display.y - 16)), ImGuiCond_FirstUseEver);
+  // Top right, beside the panel, leaving most of the surface in view.
+  ImGui::SetNextWindowPos(ImVec2(std::max(8.0f, display.x - 348), 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(340, std::max(120.0f, std::min(display.y - 16, display.y * 0.6f))),
+                           ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.85f);
   if (ImGui::Begin("gallery", &g.visible)) {
     if (g.focusSearch) {
