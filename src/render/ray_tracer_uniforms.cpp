@@ -56,16 +56,22 @@ int RayTracer::setUniforms(const RenderSettings& s, const Domain& clip, int widt
   for (int a = 0; a < 3; ++a) diagonal += (domain.max[a] - domain.min[a]) * (domain.max[a] - domain.min[a]);
   glUniform1f(uniform("rtTangentTolerance"), float(1e-5 * std::max(std::sqrt(diagonal), 1e-6)));
 
-  const Lights& l = s.lights;
+  Lights l = s.lights;
   glUniform1f(uniform("rtAmbient"), float(l.ambient));
-  Vec3 dir = l.directional.direction;
+  Light off;
+  off.intensity = 0;
+  const Light* directional = firstLight(l, LightKind::Directional);
+  const Light* point = firstLight(l, LightKind::Point);
+  if (!directional) directional = &off;
+  if (!point) point = &off;
+  Vec3 dir = directional->direction;
   if (dir == Vec3{0, 0, 0}) dir = {0, 0, -1};  // a zero direction would normalize to NaN
   const double dirLength = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
   // The shader wants the unit vector towards the light (normalized once, not per pixel).
   vec3Uniform(uniform("rtDirLightTo"), Vec3{-dir[0] / dirLength, -dir[1] / dirLength, -dir[2] / dirLength});
-  vec3Uniform(uniform("rtDirLight"), l.directional.color, l.directional.intensity);
-  vec3Uniform(uniform("rtPointPos"), l.point.position);
-  vec3Uniform(uniform("rtPointLight"), l.point.color, l.point.intensity);
+  vec3Uniform(uniform("rtDirLight"), directional->color, directional->intensity);
+  vec3Uniform(uniform("rtPointPos"), point->position);
+  vec3Uniform(uniform("rtPointLight"), point->color, point->intensity);
 
   const Materials& m = s.materials;
   vec3Uniform(uniform("rtFrontColor"), m.front.color);

@@ -3,6 +3,7 @@
 // the command line and the viewer edit it, the renderer reads it. Defaults here are the
 // documented defaults of docs/surf-format.md.
 #include <array>
+#include <vector>
 
 namespace zs {
 
@@ -47,43 +48,83 @@ inline Domain boundingBox(const Domain& d) {
   return box;
 }
 
-struct DirectionalLight {
-  Vec3 direction{-0.4, -0.6, -1.0};  // direction the light travels
+enum class LightKind { Directional, Point };
+
+// One light source. A directional light shines from infinitely far along `direction`; a
+// point light from `position`, with no falloff (SURFER's lights have none either). Both keep
+// their unused vector, so switching the kind back and forth loses nothing.
+struct Light {
+  LightKind kind = LightKind::Directional;
+  bool enabled = true;
+  Vec3 direction{-0.4, -0.6, -1.0};  // directional: the direction the light travels
+  Vec3 position{3, 3, 4};             // point
   double intensity = 0.8;
   Vec3 color{1, 1, 1};
 
-  bool operator==(const DirectionalLight&) const = default;
+  bool operator==(const Light&) const = default;
 };
 
-struct PointLight {
-  Vec3 position{3, 3, 4};
-  double intensity = 0.6;
-  Vec3 color{1, 1, 1};
+// At most this many lights (SURFER shows up to 8 at once). Each light is a compile-time
+// constant of the shader (docs/renderer.md), so the bound keeps the unrolled shading short.
+inline constexpr int kMaxLights = 8;
 
-  bool operator==(const PointLight&) const = default;
-};
+// The thesis' two lights: a directional light from the upper left and a point light.
+inline std::vector<Light> thesisLights() {
+  Light point;
+  point.kind = LightKind::Point;
+  point.intensity = 0.6;
+  return {Light{}, point};
+}
 
 struct Lights {
-  double ambient = 0.15;
-  DirectionalLight directional;
-  PointLight point;
+  double ambient = 0.15;                   // ambient light, weighted by each material's ambient
+  std::vector<Light> sources = thesisLights();  // at most kMaxLights; may be empty
 
   bool operator==(const Lights&) const = default;
 };
 
+// The first light of `kind` that is on, or nullptr: what the viewer's keys and drags move.
+inline Light* firstLight(Lights& lights, LightKind kind) {
+  for (Light& l : lights.sources) {
+    if (l.kind == kind && l.enabled) return &l;
+  }
+  return nullptr;
+}
+
+// Phong material. The color is lit as color * (ambient * lights.ambient + diffuse * sum of
+// the lights' n.l terms) + specular highlights (docs/renderer.md has the whole formula).
 struct Material {
   Vec3 color{0.85, 0.55, 0.2};
-  double specular = 0.5;
-  double shininess = 40.0;
+  double specular = 0.5;   // weight of the specular highlights
+  double shininess = 40.0;  // Phong exponent
+  double ambient = 1.0;    // weight of lights.ambient
+  double diffuse = 1.0;    // weight of the lights' diffuse terms
 
   bool operator==(const Material&) const = default;
 };
 
+// front: where the gradient of F points towards the viewer; back: the other side (the
+// inside of a closed surface, seen through a cut).
 struct Materials {
   Material front{};
   Material back{{0.25, 0.55, 0.85}, 0.5, 40.0};
 
   bool operator==(const Materials&) const = default;
+};
+
+// What colors a hit: the materials, the Gaussian or mean curvature of the surface through a
+// diverging color map, or the unit normal as RGB (docs/curvature.md).
+enum class ColorMode { Material, Gauss, Mean, Normal };
+
+inline bool needsCurvature(ColorMode m) { return m == ColorMode::Gauss || m == ColorMode::Mean; }
+
+struct Shading {
+  ColorMode color = ColorMode::Material;
+  // The curvature shown at the ends of the color map (the map is symmetric about 0); 0 picks
+  // it from the picture: the 95th percentile of |curvature| over the visible surface.
+  double curvatureRange = 0;
+
+  bool operator==(const Shading&) const = default;
 };
 
 // How rays find the surface (docs/renderer.md). Auto: Bernstein for polynomials up to
@@ -131,6 +172,7 @@ struct RenderSettings {
   Camera camera;
   Lights lights;
   Materials materials;
+  Shading shading;
   Tracing tracing;
   Highlight silhouette{true, 0.15, {0.05, 0.05, 0.05}};
   Highlight border{true, 0.01, {0.9, 0.9, 0.9}};

@@ -59,7 +59,11 @@ class Reader {
     seen_.push_back({name, &src_, positionOf(node)});
     if (name == kFormulaKey) return formula(node);
     if (name == kParamsKey) return params(node);
-    if (const KeySpec* spec = findKey(name)) return readLeaf(scene_, *spec, node, src_);
+    if (name == kLightSourcesKey) return lightSources(node);
+    if (const KeySpec* spec = findKey(name)) {
+      if (spec->legacyLight >= 0) return legacyLight(*spec, node);
+      return readLeaf(scene_, *spec, node, src_);
+    }
     if (isTableName(name)) {
       if (const toml::table* t = node.as_table()) return table(*t, name);
       return src_.error(positionOf(node), name, name + " must be a table, got " + typeName(node),
@@ -110,9 +114,115 @@ class Reader {
     return std::nullopt;
   }
 
+  // lights.directional.* and lights.point.* name the thesis' two lights, sources[0] and [1];
+  // they make no sense once a file lists its own lights.
+  std::optional<SceneError> legacyLight(const KeySpec& spec, const toml::node& node) {
+    const std::vector<Light>& lights = scene_.render.lights.sources;
+    const auto i = static_cast<std::size_t>(spec.legacyLight);
+    const LightKind kind = i == 0 ? LightKind::Directional : LightKind::Point;
+    const std::string key(spec.name);
+    if (listRead_ || lights.size() != 2 || lights[i].kind != kind) {
+      return src_.error(positionOf(node), key,
+                        key + " names one of the thesis' two default lights, but " +
+                            (listRead_ ? "this file lists its lights in [[lights.source]]"
+                                       : "the scene's lights are no longer those two"),
+                        "set the light in its [[lights.source]] entry instead (--set "
+                        "lights.source.N.KEY=VALUE, N counted from 1)");
+    }
+    legacyRead_ = true;
+    return readLeaf(scene_, spec, node, src_);
+  }
+
+  // [[lights.source]]: an array of tables replaces the whole list; a table of numbered
+  // entries (what --set lights.source.2.intensity=0.3 reads as) changes existing lights.
+  std::optional<SceneError> lightSources(const toml::node& node) {
+    const std::string key(kLightSourcesKey);
+    std::vector<Light>& lights = scene_.render.lights.sources;
+    if (const toml::table* numbered = node.as_table()) {
+      for (const auto& [index, value] : inFileOrder(*numbered)) {
+        const std::string name = key + "." + std::string(index->str());
+        const std::size_t n = lightNumber(index->str());
+        if (n == 0 || n > lights.size()) {
+          return src_.error(positionOf(*index), name,
+                            "the scene has no light " + std::string(index->str()),
+                            "lights are numbered from 1 to " + std::to_string(lights.size()) +
+                                ", in the order of the [[lights.source]] entries");
+        }
+        if (auto err = light(*value, name, lights[n - 1])) return err;
+      }
+      return std::nullopt;
+    }
+    const toml::array* array = node.as_array();
+    if (!array) {
+      return src_.error(positionOf(node), key, key + " must be an array of tables, got " + typeName(node),
+                        "write each light as its own [[lights.source]] table");
+    }
+    if (legacyRead_) {
+      return src_.error(positionOf(node), key,
+                        "[[lights.source]] and lights.directional / lights.point both describe "
+                        "the lights",
+                        "list every light as a [[lights.source]] entry and drop "
+                        "[lights.directional] and [lights.point]");
+    }
+    if (array->size() > static_cast<std::size_t>(kMaxLights)) {
+      return src_.error(positionOf((*array)[kMaxLights]), key,
+                        "at most " + std::to_string(kMaxLights) + " lights, got " +
+                            std::to_string(array->size()),
+                        "switch lights off with enabled = false rather than adding more");
+    }
+    std::vector<Light> list(array->size());
+    for (std::size_t i = 0; i < array->size(); ++i) {
+      if (auto err = light((*array)[i], key + "." + std::to_string(i + 1), list[i])) return err;
+    }
+    lights = std::move(list);
+    listRead_ = true;
+    return std::nullopt;
+  }
+
+  // "3" -> 3; 0 for anything that is not a plain positive number.
+  static std::size_t lightNumber(std::string_view text) {
+    if (text.empty() || text.size() > 2) return 0;
+    std::size_t n = 0;
+    for (const char c : text) {
+      if (c < '0' || c > '9') return 0;
+      n = n * 10 + static_cast<std::size_t>(c - '0');
+    }
+    return n;
+  }
+
+  // The keys of one light onto `out`, through a scratch scene holding just that light (the
+  // schema's light fields address sources.front()).
+  std::optional<SceneError> light(const toml::node& node, const std::string& name, Light& out) {
+    const toml::table* table = node.as_table();
+    if (!table) {
+      return src_.error(positionOf(node), name, name + " must be a table, got " + typeName(node),
+                        "a light is a table: { kind = \"point\", position = [0, 0, 5] }");
+    }
+    Scene scratch;
+    scratch.render.lights.sources = {out};
+    for (const auto& [key, value] : inFileOrder(*table)) {
+      const std::string dotted = name + "." + std::string(key->str());
+      seen_.push_back({dotted, &src_, positionOf(*value)});
+      const KeySpec* spec = findLightKey(key->str());
+      if (!spec) {
+        std::vector<std::string_view> names;
+        for (const KeySpec& k : lightKeySpecs()) names.push_back(k.name);
+        return src_.error(positionOf(*key), dotted, "unknown key \"" + dotted + "\"",
+                          choiceHint(key->str(), names));
+      }
+      KeySpec named = *spec;
+      named.name = dotted;  // messages name the light
+      if (auto err = readLeaf(scratch, named, *value, src_)) return err;
+    }
+    out = scratch.render.lights.sources.front();
+    return std::nullopt;
+  }
+
   Scene& scene_;
   const SourceText& src_;
   KeyHistory& seen_;
+  bool legacyRead_ = false;  // this document set lights.directional.* or lights.point.*
+  bool listRead_ = false;    // this document replaced the list with [[lights.source]]
 };
 
 // An error about keys that constrain each other, placed at the latest-written of `keys`

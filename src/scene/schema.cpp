@@ -20,6 +20,8 @@ constexpr std::array<std::string_view, 2> kCriteria{"thesis", "uniform"};
 constexpr std::array<std::string_view, 2> kShapes{"box", "sphere"};  // order of DomainShape
 // Order of TracingMethod (render/settings.hpp).
 constexpr std::array<std::string_view, 3> kMethods{"auto", "bernstein", "sampling"};
+constexpr std::array<std::string_view, 2> kLightKinds{"directional", "point"};  // LightKind
+constexpr std::array<std::string_view, 4> kColorModes{"material", "gauss", "mean", "normal"};
 
 // A reference to one Scene member, as a plain function pointer the schema can hold.
 #define ZS_FIELD(member) +[](Scene& s) -> decltype(auto) { return (s.member); }
@@ -36,6 +38,14 @@ const EnumRef kShapeRef{[](const Scene& s) { return static_cast<int>(s.domain.sh
 const EnumRef kMethodRef{
     [](const Scene& s) { return static_cast<int>(s.render.tracing.method); },
     [](Scene& s, int v) { s.render.tracing.method = static_cast<TracingMethod>(v); }, kMethods};
+
+const EnumRef kColorModeRef{
+    [](const Scene& s) { return static_cast<int>(s.render.shading.color); },
+    [](Scene& s, int v) { s.render.shading.color = static_cast<ColorMode>(v); }, kColorModes};
+const EnumRef kLightKindRef{
+    [](const Scene& s) { return static_cast<int>(s.render.lights.sources.front().kind); },
+    [](Scene& s, int v) { s.render.lights.sources.front().kind = static_cast<LightKind>(v); },
+    kLightKinds};
 
 // File order: top-level keys first (TOML puts them before any [table]), then each table's
 // keys together, so the writer can emit a header whenever the prefix changes.
@@ -65,18 +75,26 @@ const KeySpec kKeys[] = {
     {"tracing.hits", ZS_FIELD(render.tracing.hits), {1, 16}},
     {"tracing.max_bisections", ZS_FIELD(render.tracing.maxBisections), {1, 200}},
     {"lights.ambient", ZS_FIELD(render.lights.ambient), kUnit},
-    {"lights.directional.direction", ZS_FIELD(render.lights.directional.direction), kAny, true},
-    {"lights.directional.intensity", ZS_FIELD(render.lights.directional.intensity), kNonNegative},
-    {"lights.directional.color", ZS_FIELD(render.lights.directional.color), kUnit},
-    {"lights.point.position", ZS_FIELD(render.lights.point.position), kAny},
-    {"lights.point.intensity", ZS_FIELD(render.lights.point.intensity), kNonNegative},
-    {"lights.point.color", ZS_FIELD(render.lights.point.color), kUnit},
+    // The thesis' two lights under their old names: sources[0] and [1] (reader.cpp checks
+    // that they are still a directional and a point light first). Read, never written.
+    {"lights.directional.direction", ZS_FIELD(render.lights.sources[0].direction), kAny, true, 0},
+    {"lights.directional.intensity", ZS_FIELD(render.lights.sources[0].intensity), kNonNegative, false, 0},
+    {"lights.directional.color", ZS_FIELD(render.lights.sources[0].color), kUnit, false, 0},
+    {"lights.point.position", ZS_FIELD(render.lights.sources[1].position), kAny, false, 1},
+    {"lights.point.intensity", ZS_FIELD(render.lights.sources[1].intensity), kNonNegative, false, 1},
+    {"lights.point.color", ZS_FIELD(render.lights.sources[1].color), kUnit, false, 1},
     {"materials.front.color", ZS_FIELD(render.materials.front.color), kUnit},
+    {"materials.front.ambient", ZS_FIELD(render.materials.front.ambient), kUnit},
+    {"materials.front.diffuse", ZS_FIELD(render.materials.front.diffuse), kUnit},
     {"materials.front.specular", ZS_FIELD(render.materials.front.specular), kUnit},
     {"materials.front.shininess", ZS_FIELD(render.materials.front.shininess), {0, 10000}},
     {"materials.back.color", ZS_FIELD(render.materials.back.color), kUnit},
+    {"materials.back.ambient", ZS_FIELD(render.materials.back.ambient), kUnit},
+    {"materials.back.diffuse", ZS_FIELD(render.materials.back.diffuse), kUnit},
     {"materials.back.specular", ZS_FIELD(render.materials.back.specular), kUnit},
     {"materials.back.shininess", ZS_FIELD(render.materials.back.shininess), {0, 10000}},
+    {"shading.color", kColorModeRef, kAny},
+    {"shading.curvature_range", ZS_FIELD(render.shading.curvatureRange), kNonNegative},
     {"highlights.silhouette.enabled", ZS_FIELD(render.silhouette.enabled), kAny},
     {"highlights.silhouette.threshold", ZS_FIELD(render.silhouette.threshold), kUnit},
     {"highlights.silhouette.color", ZS_FIELD(render.silhouette.color), kUnit},
@@ -90,12 +108,34 @@ const KeySpec kKeys[] = {
     {"reflection.primary_weight", ZS_FIELD(render.reflection.primaryWeight), kUnit},
 };
 
+// One [[lights.source]] entry; the fields address the first light of a scene that holds
+// just that light (schema.hpp).
+const KeySpec kLightKeys[] = {
+    {"kind", kLightKindRef, kAny},
+    {"enabled", ZS_FIELD(render.lights.sources.front().enabled), kAny},
+    {"direction", ZS_FIELD(render.lights.sources.front().direction), kAny, true},
+    {"position", ZS_FIELD(render.lights.sources.front().position), kAny},
+    {"intensity", ZS_FIELD(render.lights.sources.front().intensity), kNonNegative},
+    {"color", ZS_FIELD(render.lights.sources.front().color), kUnit},
+};
+
 #undef ZS_FIELD
 
 }  // namespace
 
 std::span<const KeySpec> keySpecs() {
   return kKeys;
+}
+
+std::span<const KeySpec> lightKeySpecs() {
+  return kLightKeys;
+}
+
+const KeySpec* findLightKey(std::string_view name) {
+  for (const KeySpec& k : kLightKeys) {
+    if (k.name == name) return &k;
+  }
+  return nullptr;
 }
 
 const KeySpec* findKey(std::string_view dottedName) {
@@ -106,7 +146,7 @@ const KeySpec* findKey(std::string_view dottedName) {
 }
 
 bool isTableName(std::string_view dottedName) {
-  if (dottedName == kParamsKey) return true;
+  if (dottedName == kParamsKey || dottedName == kLightSourcesKey) return true;
   return std::any_of(std::begin(kKeys), std::end(kKeys), [&](const KeySpec& k) {
     return k.name.size() > dottedName.size() && k.name.starts_with(dottedName) &&
            k.name[dottedName.size()] == '.';

@@ -42,15 +42,25 @@ struct KeySpec {
   Field field;
   Range range;
   bool nonZero = false;  // vectors that get normalized (up, light direction)
+  // >= 0: an old name of that entry of lights.sources (lights.directional.*, lights.point.*),
+  // read only while the list still has the thesis' shape, and never written.
+  int legacyLight = -1;
 };
 
 std::span<const KeySpec> keySpecs();
 const KeySpec* findKey(std::string_view dottedName);
+
+// The keys of one light of the [[lights.source]] array ("kind", "enabled", ...). Their
+// fields address render.lights.sources.front(): the reader and the writer go through a
+// scratch Scene holding just the light in question.
+std::span<const KeySpec> lightKeySpecs();
+const KeySpec* findLightKey(std::string_view name);
 
 // True for "camera", "lights", "lights.point", ...: names that hold other keys.
 bool isTableName(std::string_view dottedName);
 
 inline constexpr std::string_view kFormulaKey = "formula";
 inline constexpr std::string_view kParamsKey = "params";
+inline constexpr std::string_view kLightSourcesKey = "lights.source";  // [[lights.source]]
 
 }  // namespace zs::scene_detail

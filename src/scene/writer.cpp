@@ -74,6 +74,20 @@ std::string valueText(Scene& scene, const KeySpec& spec) {
       spec.field);
 }
 
+// Right after the keys of [lights]: an empty list must be written inside that table.
+std::string lightSources(const std::vector<Light>& lights) {
+  if (lights.empty()) return "source = []\n";
+  std::string out;
+  for (const Light& light : lights) {
+    Scene scratch;  // the light keys address sources.front() (schema.hpp)
+    scratch.render.lights.sources = {light};
+    out += "\n[[" + std::string(kLightSourcesKey) + "]]\n";
+    for (const KeySpec& spec : lightKeySpecs())
+      out += std::string(spec.name) + " = " + valueText(scratch, spec) + "\n";
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string saveScene(const Scene& scene) {
@@ -85,6 +99,7 @@ std::string saveScene(const Scene& scene) {
   bool paramsWritten = false;
   std::string_view table;
   for (const KeySpec& spec : keySpecs()) {
+    if (spec.legacyLight >= 0) continue;  // the lights are written as [[lights.source]]
     const auto dot = spec.name.rfind('.');
     const std::string_view prefix = dot == std::string_view::npos ? "" : spec.name.substr(0, dot);
     const std::string_view leaf =
@@ -102,6 +117,7 @@ std::string saveScene(const Scene& scene) {
       table = prefix;
     }
     out += std::string(leaf) + " = " + valueText(copy, spec) + "\n";
+    if (spec.name == "lights.ambient") out += lightSources(scene.render.lights.sources);
   }
   return out;
 }

@@ -127,7 +127,7 @@ TEST(Prompt, SaveLoadSaveRoundTripsEveryKey) {
   const Scene a = std::get<Scene>(loadScene(first)), b = std::get<Scene>(loadScene(second));
   EXPECT_EQ(a, b) << c.output();
   EXPECT_EQ(readText(first), readText(second));
-  EXPECT_EQ(a.render.lights.point.intensity, 0.25);
+  EXPECT_EQ(a.render.lights.sources[1].intensity, 0.25);
   EXPECT_FALSE(a.render.silhouette.enabled);
   EXPECT_EQ(a.octree.criteria, Criteria::Uniform);
 }

@@ -64,9 +64,9 @@ TEST(KeyBindings, EveryKeyIsBoundOnceAndDescribed) {
 TEST(KeyBindings, EditsStayInsideTheSceneRanges) {
   Scene s;
   std::string message;
-  s.render.lights.point.intensity = 0.05;
+  s.render.lights.sources[1].intensity = 0.05;
   EXPECT_EQ(applyAction(Action::PointLightDown, s, message), Effect::Redraw);
-  EXPECT_EQ(s.render.lights.point.intensity, 0.0);
+  EXPECT_EQ(s.render.lights.sources[1].intensity, 0.0);
   s.render.tracing.epsilon = 0.5;
   applyAction(Action::EpsilonUp, s, message);
   EXPECT_EQ(s.render.tracing.epsilon, 1.0);

@@ -131,8 +131,8 @@ TEST(Viewer, SavedViewRendersLikeTheWindow) {
   const std::filesystem::path saved = v.save();
   ASSERT_FALSE(saved.empty());
   const Scene scene = loadSaved(saved);
-  EXPECT_NEAR(scene.render.lights.directional.intensity, 1.0, 1e-9);
-  EXPECT_NEAR(scene.render.lights.point.intensity, 0.5, 1e-9);
+  EXPECT_NEAR(scene.render.lights.sources[0].intensity, 1.0, 1e-9);
+  EXPECT_NEAR(scene.render.lights.sources[1].intensity, 0.5, 1e-9);
   EXPECT_LT(distance(scene.render.camera.eye, scene.render.camera.target), 4.0) << "zoomed in";
 
   const auto rendered = v.dir() / "rendered.png";

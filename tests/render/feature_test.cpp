@@ -165,13 +165,13 @@ TEST_F(Feature, BothLightsContributeAndAmbientAloneIsFlat) {
   };
   const double both = brightness(render(sphere_, s));
   RenderSettings noDir = s;
-  noDir.lights.directional.intensity = 0;
+  noDir.lights.sources[0].intensity = 0;
   RenderSettings noPoint = s;
-  noPoint.lights.point.intensity = 0;
+  noPoint.lights.sources[1].intensity = 0;
   EXPECT_LT(brightness(render(sphere_, noDir)), both * 0.97);
   EXPECT_LT(brightness(render(sphere_, noPoint)), both * 0.97);
-  s.lights.directional.intensity = 0;
-  s.lights.point.intensity = 0;
+  s.lights.sources[0].intensity = 0;
+  s.lights.sources[1].intensity = 0;
   const Image flat = render(sphere_, s);
   const auto c = at(flat, kSize / 2, kSize / 2);
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(c[k], 0.15 * s.materials.front.color[k], 1.0 / 255);
@@ -213,8 +213,8 @@ TEST_F(Feature, OrthographicShowsTheTrueRadius) {
 
 TEST_F(Feature, FrontAndBackFacesUseTheirMaterials) {
   RenderSettings s = base();
-  s.lights.directional.intensity = 0;
-  s.lights.point.intensity = 0;
+  s.lights.sources[0].intensity = 0;
+  s.lights.sources[1].intensity = 0;
   s.camera.eye = {0, 0, 0.2};  // inside the sphere: the gradient points away, a back face
   const auto inside = at(render(sphere_, s), kSize / 2, kSize / 2);
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(inside[k], 0.15 * s.materials.back.color[k], 1.0 / 255);

@@ -36,8 +36,8 @@ const Case kCases[] = {
      [](RenderSettings& s) { s.reflection.enabled = false; }},
     {"feature_opacity", "x^2*y^2+y^2*z^2+z^2*x^2-1", [](RenderSettings& s) { s.opacity = 0.45; }},
     {"feature_point_light_only", "x^4+y^4+z^4-1",
-     [](RenderSettings& s) { s.lights.directional.intensity = 0; }},
-    {"feature_directional_only", "x^4+y^4+z^4-1", [](RenderSettings& s) { s.lights.point.intensity = 0; }},
+     [](RenderSettings& s) { s.lights.sources[0].intensity = 0; }},
+    {"feature_directional_only", "x^4+y^4+z^4-1", [](RenderSettings& s) { s.lights.sources[1].intensity = 0; }},
     {"feature_supersampling", "x^3*y+y^3*z+z^3*x", [](RenderSettings& s) { s.samples = 2; }},
     {"feature_orthographic", "x^4-z^4-y", [](RenderSettings& s) {
        s.camera.projection = Projection::Orthographic;

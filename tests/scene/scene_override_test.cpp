@@ -27,9 +27,40 @@ TEST(SceneOverride, SetsVectorsNumbersEnumsAndBooleans) {
   EXPECT_EQ(s.domain.min, (Vec3{-2, -2, -2}));
   EXPECT_EQ(s.octree.level, 3);
   EXPECT_EQ(s.octree.criteria, Criteria::Uniform);
-  EXPECT_EQ(s.render.lights.point.intensity, 0.3);
+  EXPECT_EQ(s.render.lights.sources[1].intensity, 0.3);
   EXPECT_FALSE(s.render.border.enabled);
   EXPECT_EQ(s.render.samples, 2);
+}
+
+TEST(SceneOverride, LightsByNumberAndAsAWholeList) {
+  Scene s;
+  expectApplied(s, "lights.source.2.intensity=0.25");
+  expectApplied(s, "lights.source.1={kind=\"point\", position=[1, 2, 3]}");
+  ASSERT_EQ(s.render.lights.sources.size(), 2u);
+  EXPECT_EQ(s.render.lights.sources[1].intensity, 0.25);
+  EXPECT_EQ(s.render.lights.sources[0].kind, LightKind::Point);
+  EXPECT_EQ(s.render.lights.sources[0].position, (Vec3{1, 2, 3}));
+  EXPECT_EQ(s.render.lights.sources[0].intensity, 0.8);  // kept: only the keys named change
+  expectApplied(s, "lights.source=[{kind=\"directional\", direction=[0,0,-1]}, {}, {enabled=false}]");
+  ASSERT_EQ(s.render.lights.sources.size(), 3u);
+  EXPECT_EQ(s.render.lights.sources[0].direction, (Vec3{0, 0, -1}));
+  EXPECT_FALSE(s.render.lights.sources[2].enabled);
+  expectApplied(s, "materials.back.diffuse=0.5");
+  expectApplied(s, "shading.color=\"gauss\"");
+  EXPECT_EQ(s.render.materials.back.diffuse, 0.5);
+  EXPECT_EQ(s.render.shading.color, ColorMode::Gauss);
+}
+
+TEST(SceneOverride, ALightThatDoesNotExistIsRefusedWithItsColumn) {
+  Scene s;
+  const auto e = applyOverride(s, "lights.source.5.intensity=0.25");
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->file, "--set");
+  EXPECT_EQ(e->line, 1);
+  EXPECT_EQ(e->column, 15);
+  EXPECT_NE(e->message.find("no light 5"), std::string::npos) << e->message;
+  EXPECT_NE(e->hint.find("from 1 to 2"), std::string::npos) << e->hint;
+  EXPECT_EQ(s, Scene{});
 }
 
 TEST(SceneOverride, ParamsAreAddedThenReplaced) {

@@ -26,10 +26,15 @@ Scene everyKeyChanged() {
   RenderSettings& r = s.render;
   r.camera = {{0.1, 4.4, -9e10}, {1, 2, 3}, {0.3, 1, 0}, Projection::Orthographic, 33.3, 2.2};
   r.lights.ambient = 0.05;
-  r.lights.directional = {{1, -1, 0.5}, 1.25, {0.9, 0.8, 0.7}};
-  r.lights.point = {{-3, 2, 1e-5}, 0.45, {0.1, 0.2, 0.3}};
-  r.materials.front = {{0.2, 0.3, 0.4}, 0.11, 12.5};
-  r.materials.back = {{0.6, 0.7, 0.8}, 0.22, 99};
+  // Every light key differs from Light{} in some light (see the test below).
+  r.lights.sources = {
+      {LightKind::Point, false, {1, -1, 0.5}, {-3, 2, 1e-5}, 1.25, {0.9, 0.8, 0.7}},
+      {LightKind::Directional, true, {0.25, 0.5, -1}, {7, 8, 9}, 0.45, {0.1, 0.2, 0.3}},
+      {LightKind::Directional, true, {0, 0, 1}, {3, 3, 4}, 0.0, {1, 1, 1}},
+  };
+  r.materials.front = {{0.2, 0.3, 0.4}, 0.11, 12.5, 0.4, 0.8};
+  r.materials.back = {{0.6, 0.7, 0.8}, 0.22, 99, 0.35, 0.65};
+  r.shading = {ColorMode::Mean, 2.5};
   r.tracing = {TracingMethod::Sampling, 17, 1e-7 / 3, 77, 9};
   r.silhouette = {false, 0.33, {0.5, 0.25, 0.125}};
   r.border = {false, 0.0625, {0.2, 0.1, 0.05}};
@@ -55,6 +60,7 @@ TEST(SceneRoundTrip, EveryKeyOfTheTestSceneDiffersFromItsDefault) {
   Scene changed = everyKeyChanged();
   Scene defaults;
   for (const auto& spec : scene_detail::keySpecs()) {
+    if (spec.legacyLight >= 0) continue;  // old names of the lights, checked below
     const bool same = std::visit(
         [&](const auto& ref) {
           if constexpr (std::is_same_v<std::decay_t<decltype(ref)>, scene_detail::EnumRef>) {
@@ -68,6 +74,69 @@ TEST(SceneRoundTrip, EveryKeyOfTheTestSceneDiffersFromItsDefault) {
   }
   EXPECT_NE(changed.formula, defaults.formula);
   EXPECT_NE(changed.params, defaults.params);
+}
+
+TEST(SceneRoundTrip, EveryLightKeyDiffersFromItsDefaultInTheFirstLight) {
+  const Scene changed = everyKeyChanged();
+  ASSERT_EQ(changed.render.lights.sources.size(), 3u);
+  Scene one, defaults;
+  one.render.lights.sources = {changed.render.lights.sources.front()};
+  defaults.render.lights.sources = {Light{}};
+  for (const auto& spec : scene_detail::lightKeySpecs()) {
+    const bool same = std::visit(
+        [&](const auto& ref) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(ref)>, scene_detail::EnumRef>) {
+            return ref.get(one) == ref.get(defaults);
+          } else {
+            return ref(one) == ref(defaults);
+          }
+        },
+        spec.field);
+    EXPECT_FALSE(same) << spec.name;
+  }
+}
+
+TEST(SceneRoundTrip, NoLightsAtAllRoundTrip) {
+  Scene s;
+  s.render.lights.sources.clear();
+  const std::string text = saveScene(s);
+  EXPECT_NE(text.find("source = []"), std::string::npos) << text;
+  EXPECT_EQ(expectScene(parseScene(text, "dark.surf")), s) << text;
+}
+
+TEST(SceneRoundTrip, EightLightsRoundTrip) {
+  Scene s;
+  s.render.lights.sources.assign(kMaxLights, Light{});
+  for (int i = 0; i < kMaxLights; ++i) s.render.lights.sources[i].intensity = 0.1 * i;
+  EXPECT_EQ(expectScene(parseScene(saveScene(s), "eight.surf")), s);
+}
+
+TEST(SceneRoundTrip, TheThesisLightKeysOfOldFilesStillRead) {
+  const Scene s = expectScene(parseScene(
+      "formula = \"x\"\n[lights.directional]\nintensity = 0.3\ndirection = [0, 0, -1]\n"
+      "[lights.point]\nposition = [1, 2, 3]\ncolor = [0.5, 0.5, 0.5]\n",
+      "old.surf"));
+  ASSERT_EQ(s.render.lights.sources.size(), 2u);
+  EXPECT_EQ(s.render.lights.sources[0].kind, LightKind::Directional);
+  EXPECT_EQ(s.render.lights.sources[0].intensity, 0.3);
+  EXPECT_EQ(s.render.lights.sources[0].direction, (Vec3{0, 0, -1}));
+  EXPECT_EQ(s.render.lights.sources[1].kind, LightKind::Point);
+  EXPECT_EQ(s.render.lights.sources[1].position, (Vec3{1, 2, 3}));
+  EXPECT_EQ(s.render.lights.sources[1].color, (Vec3{0.5, 0.5, 0.5}));
+  EXPECT_EQ(s.render.lights.sources[1].intensity, 0.6);
+}
+
+TEST(SceneRoundTrip, ALightListInTheFileReplacesTheThesisLights) {
+  const Scene s = expectScene(parseScene(
+      "formula = \"x\"\n[[lights.source]]\nkind = \"point\"\nposition = [0, 0, 5]\n"
+      "[[lights.source]]\nenabled = false\n",
+      "list.surf"));
+  ASSERT_EQ(s.render.lights.sources.size(), 2u);
+  EXPECT_EQ(s.render.lights.sources[0].kind, LightKind::Point);
+  EXPECT_EQ(s.render.lights.sources[0].position, (Vec3{0, 0, 5}));
+  EXPECT_EQ(s.render.lights.sources[0].intensity, Light{}.intensity);
+  EXPECT_FALSE(s.render.lights.sources[1].enabled);
+  EXPECT_EQ(s.render.lights.sources[1].kind, LightKind::Directional);
 }
 
 TEST(SceneRoundTrip, EveryKeySurvivesSaveAndParse) {
@@ -93,6 +162,8 @@ TEST(SceneRoundTrip, NegativeZeroKeepsItsSign) {
 TEST(SceneRoundTrip, SavedTextHoldsEveryKey) {
   const std::string text = saveScene(Scene{});
   for (const std::string& key : sceneKeys()) {
+    const auto* spec = scene_detail::findKey(key);
+    if (spec && spec->legacyLight >= 0) continue;  // written as lights.source
     const auto dot = key.rfind('.');
     const std::string leaf = dot == std::string::npos ? key : key.substr(dot + 1);
     if (dot == std::string::npos) {
@@ -107,6 +178,14 @@ TEST(SceneRoundTrip, SavedTextHoldsEveryKey) {
     EXPECT_TRUE(at != std::string::npos && at < next) << key;
   }
   EXPECT_NE(text.find("\n[params]\n"), std::string::npos);
+  // Each light is a [[lights.source]] table holding every light key.
+  const auto light = text.find("\n[[lights.source]]\n");
+  ASSERT_NE(light, std::string::npos) << text;
+  const auto next = text.find("\n[", light + 1);
+  for (const auto& spec : scene_detail::lightKeySpecs()) {
+    const auto at = text.find("\n" + std::string(spec.name) + " = ", light);
+    EXPECT_TRUE(at != std::string::npos && at < next) << spec.name;
+  }
 }
 
 std::string readDoc() {

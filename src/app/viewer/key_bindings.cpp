@@ -18,10 +18,10 @@ constexpr int C = GLFW_MOD_CONTROL;
 constexpr std::array<KeyBinding, 24> kBindings{{
     {GLFW_KEY_N, 0, Action::NextExample, "N", "next example surface"},
     {GLFW_KEY_P, 0, Action::PrevExample, "P", "previous example surface"},
-    {GLFW_KEY_D, 0, Action::DirLightUp, "D", "directional light brighter (+0.1)"},
-    {GLFW_KEY_D, S, Action::DirLightDown, "Shift+D", "directional light dimmer (-0.1)"},
-    {GLFW_KEY_L, 0, Action::PointLightUp, "L", "point light brighter (+0.1)"},
-    {GLFW_KEY_L, S, Action::PointLightDown, "Shift+L", "point light dimmer (-0.1)"},
+    {GLFW_KEY_D, 0, Action::DirLightUp, "D", "first directional light brighter (+0.1)"},
+    {GLFW_KEY_D, S, Action::DirLightDown, "Shift+D", "first directional light dimmer (-0.1)"},
+    {GLFW_KEY_L, 0, Action::PointLightUp, "L", "first point light brighter (+0.1)"},
+    {GLFW_KEY_L, S, Action::PointLightDown, "Shift+L", "first point light dimmer (-0.1)"},
     {GLFW_KEY_B, 0, Action::ToggleBorder, "B", "toggle the domain border highlight"},
     {GLFW_KEY_S, 0, Action::ToggleSilhouette, "S", "toggle the silhouette highlight"},
     {GLFW_KEY_E, 0, Action::EpsilonUp, "E", "epsilon x10 (coarser roots, faster)"},
@@ -69,10 +69,20 @@ const KeyBinding* findBinding(int key, int mods) {
 Effect applyAction(Action action, Scene& scene, std::string& message) {
   RenderSettings& r = scene.render;
   switch (action) {
-    case Action::DirLightUp: return step(r.lights.directional.intensity, 0.1, "directional light", message);
-    case Action::DirLightDown: return step(r.lights.directional.intensity, -0.1, "directional light", message);
-    case Action::PointLightUp: return step(r.lights.point.intensity, 0.1, "point light", message);
-    case Action::PointLightDown: return step(r.lights.point.intensity, -0.1, "point light", message);
+    case Action::DirLightUp:
+    case Action::DirLightDown:
+    case Action::PointLightUp:
+    case Action::PointLightDown: {
+      const bool directional = action == Action::DirLightUp || action == Action::DirLightDown;
+      const bool up = action == Action::DirLightUp || action == Action::PointLightUp;
+      const char* what = directional ? "directional light" : "point light";
+      Light* light = firstLight(r.lights, directional ? LightKind::Directional : LightKind::Point);
+      if (!light) {
+        message = std::string("no ") + what + " is on (the panel's lights section adds one)";
+        return Effect::None;
+      }
+      return step(light->intensity, up ? 0.1 : -0.1, what, message);
+    }
     case Action::ToggleBorder:
       r.border.enabled = !r.border.enabled;
       message = r.border.enabled ? "border highlight on" : "border highlight off";

@@ -4,6 +4,8 @@
 #include <imgui.h>
 
 #include <array>
+#include <cstddef>
+#include <string>
 
 #include "app/viewer/panel.hpp"
 
@@ -44,6 +46,8 @@ void material(const char* name, Material& m) {
   ImGui::PushID(name);
   ImGui::TextUnformatted(name);
   color("color", m.color);
+  dragDouble("ambient", m.ambient, 0.01, 0.0, 1.0);
+  dragDouble("diffuse", m.diffuse, 0.01, 0.0, 1.0);
   dragDouble("specular", m.specular, 0.01, 0.0, 1.0);
   dragDouble("shininess", m.shininess, 0.5, 0.0, 1000.0);
   ImGui::PopID();
@@ -60,20 +64,49 @@ void camera(Camera& c) {
   dragDouble("height", c.height, 0.02, 0.001, 1e4);
 }
 
+// One light's widgets; returns false when its remove button was pressed.
+bool light(Light& l, int number) {
+  ImGui::PushID(number);
+  const std::string name = "light " + std::to_string(number);
+  ImGui::Checkbox(name.c_str(), &l.enabled);
+  ImGui::SameLine();
+  int kind = l.kind == LightKind::Point;
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7);
+  if (ImGui::Combo("##kind", &kind, "directional\0point\0"))
+    l.kind = kind ? LightKind::Point : LightKind::Directional;
+  ImGui::SameLine();
+  const bool keep = !ImGui::SmallButton("remove");
+  if (l.kind == LightKind::Directional)
+    dragVec("direction", l.direction, 0.02);
+  else
+    dragVec("position", l.position, 0.05);
+  dragDouble("intensity", l.intensity, 0.01, 0.0, 10.0);
+  color("color", l.color);
+  ImGui::PopID();
+  return keep;
+}
+
 void lights(Lights& l) {
   dragDouble("ambient", l.ambient, 0.01, 0.0, 1.0);
-  ImGui::TextUnformatted("directional");
-  ImGui::PushID("dir");
-  dragDouble("intensity", l.directional.intensity, 0.01, 0.0, 10.0);
-  dragVec("direction", l.directional.direction, 0.02);
-  color("color", l.directional.color);
-  ImGui::PopID();
-  ImGui::TextUnformatted("point (right drag moves it)");
-  ImGui::PushID("point");
-  dragDouble("intensity", l.point.intensity, 0.01, 0.0, 10.0);
-  dragVec("position", l.point.position, 0.05);
-  color("color", l.point.color);
-  ImGui::PopID();
+  ImGui::TextDisabled("right drag moves the first point light");
+  for (std::size_t i = 0; i < l.sources.size(); ++i) {
+    if (!light(l.sources[i], int(i) + 1)) {
+      l.sources.erase(l.sources.begin() + std::ptrdiff_t(i));
+      break;  // the rest are drawn next frame
+    }
+  }
+  if (l.sources.size() < std::size_t(kMaxLights) && ImGui::Button("add light"))
+    l.sources.push_back(Light{});
+}
+
+void shading(Shading& s) {
+  int mode = static_cast<int>(s.color);  // curvature modes rebuild the shader (viewer_build.cpp)
+  if (ImGui::Combo("color", &mode, "material\0gauss curvature\0mean curvature\0normal\0"))
+    s.color = static_cast<ColorMode>(mode);
+  if (!needsCurvature(s.color)) return;
+  bool automatic = s.curvatureRange == 0;
+  if (ImGui::Checkbox("automatic range", &automatic)) s.curvatureRange = automatic ? 0 : 1;
+  if (!automatic) dragDouble("range", s.curvatureRange, 0.01, 1e-6, 1e6);
 }
 
 void tracing(Scene& scene) {
@@ -122,6 +155,7 @@ void drawSettings(Scene& scene) {
     highlight("singular points", scene.render.singular);
   }
   if (ImGui::CollapsingHeader("lights")) lights(scene.render.lights);
+  if (ImGui::CollapsingHeader("shading")) shading(scene.render.shading);
   if (ImGui::CollapsingHeader("materials")) {
     material("front", scene.render.materials.front);
     material("back", scene.render.materials.back);

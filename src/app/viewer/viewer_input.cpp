@@ -48,7 +48,8 @@ void Viewer::onMouseButton(int button, int action) {
   dragX_ = cursorX_;
   dragY_ = cursorY_;
   dragCamera_ = scene_.render.camera;
-  dragLight_ = scene_.render.lights.point.position;
+  const Light* point = firstLight(scene_.render.lights, LightKind::Point);
+  dragLight_ = point ? point->position : Vec3{};
 }
 
 void Viewer::onCursor(double x, double y) {
@@ -61,8 +62,8 @@ void Viewer::onCursor(double x, double y) {
   const DragPoints drag{dragX_, dragY_, x, y, width, height};
   if (dragButton_ == GLFW_MOUSE_BUTTON_LEFT)
     scene_.render.camera = orbitCamera(dragCamera_, drag);
-  else
-    scene_.render.lights.point.position = orbitPoint(scene_.render.camera, dragLight_, drag);
+  else if (Light* point = firstLight(scene_.render.lights, LightKind::Point))
+    point->position = orbitPoint(scene_.render.camera, dragLight_, drag);
   dirty_ = true;
 }
 
