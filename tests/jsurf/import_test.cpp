@@ -64,22 +64,31 @@ TEST(JsurfImport, RotationTurnsTheCameraAroundTheSurface) {
 TEST(JsurfImport, LightsAreCameraSpacePointsPlacedInTheWorld) {
   const Scene s = load("turned-quartic.jsurf").scene;
   const Lights& l = s.render.lights;
+  // Lights 0, 1 (off) and 2; the five slots the file leaves out are not kept.
+  ASSERT_EQ(l.sources.size(), 3u);
+  for (const Light& light : l.sources) EXPECT_EQ(light.kind, LightKind::Point);
   // light 0 at camera (0, 0, 10): 11 units behind the sphere's centre, turned to +x, scaled 2.
-  expectNear(l.point.position, {22, 0, 0}, 1e-9);
-  EXPECT_DOUBLE_EQ(l.point.intensity, 0.75);
-  expectNear(l.point.color, {1, 0.5, 0.25});
-  // light 1 is off; light 2, far above, shines downwards.
-  const double n = std::sqrt(2.0 * 2.0 + 200.0 * 200.0);
-  expectNear(l.directional.direction, {-2 / n, -200 / n, 0}, 1e-9);
-  EXPECT_DOUBLE_EQ(l.directional.intensity, 0.5);
-  expectNear(l.directional.color, {0.5, 0.5, 1.0});
-  EXPECT_DOUBLE_EQ(l.ambient, 0.25);
+  expectNear(l.sources[0].position, {22, 0, 0}, 1e-9);
+  EXPECT_TRUE(l.sources[0].enabled);
+  EXPECT_DOUBLE_EQ(l.sources[0].intensity, 0.75);
+  expectNear(l.sources[0].color, {1, 0.5, 0.25});
+  // light 1 at camera (5, 5, 5) is off but kept, so that it comes back on export.
+  EXPECT_FALSE(l.sources[1].enabled);
+  expectNear(l.sources[1].position, {12, 10, -10}, 1e-9);
+  // light 2, far above the camera: above the surface.
+  expectNear(l.sources[2].position, {2, 200, 0}, 1e-9);
+  EXPECT_DOUBLE_EQ(l.sources[2].intensity, 0.5);
+  expectNear(l.sources[2].color, {0.5, 0.5, 1.0});
+  // SURFER's ambient term is the material's weight alone.
+  EXPECT_DOUBLE_EQ(l.ambient, 1.0);
 }
 
 TEST(JsurfImport, MaterialsAndBackground) {
   const Scene s = load("turned-quartic.jsurf").scene;
   const Materials& m = s.render.materials;
   expectNear(m.front.color, {0.75, 0.5, 0.25});
+  EXPECT_DOUBLE_EQ(m.front.ambient, 0.25);
+  EXPECT_DOUBLE_EQ(m.front.diffuse, 1.0);
   EXPECT_DOUBLE_EQ(m.front.specular, 0.5);
   EXPECT_DOUBLE_EQ(m.front.shininess, 30.0);
   expectNear(m.back.color, {0.25, 0.5, 0.75});

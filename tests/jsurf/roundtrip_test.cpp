@@ -48,18 +48,32 @@ void expectSurferKeysEqual(const Scene& a, const Scene& b) {
   const Materials& mb = b.render.materials;
   for (const auto& [x, y] : {std::pair{&ma.front, &mb.front}, std::pair{&ma.back, &mb.back}}) {
     expectNear(x->color, y->color, "material color");
+    EXPECT_DOUBLE_EQ(x->ambient, y->ambient);
+    EXPECT_DOUBLE_EQ(x->diffuse, y->diffuse);
     EXPECT_DOUBLE_EQ(x->specular, y->specular);
     EXPECT_DOUBLE_EQ(x->shininess, y->shininess);
   }
   const Lights& la = a.render.lights;
   const Lights& lb = b.render.lights;
   EXPECT_DOUBLE_EQ(la.ambient, lb.ambient);
-  expectNear(la.point.position, lb.point.position, "point light");
-  EXPECT_DOUBLE_EQ(la.point.intensity, lb.point.intensity);
-  expectNear(la.point.color, lb.point.color, "point light color");
-  expectNear(la.directional.direction, lb.directional.direction, "directional light");
-  EXPECT_DOUBLE_EQ(la.directional.intensity, lb.directional.intensity);
-  expectNear(la.directional.color, lb.directional.color, "directional light color");
+  ASSERT_EQ(la.sources.size(), lb.sources.size());
+  for (std::size_t i = 0; i < la.sources.size(); ++i) {
+    EXPECT_EQ(la.sources[i].kind, lb.sources[i].kind);
+    EXPECT_EQ(la.sources[i].enabled, lb.sources[i].enabled);
+    expectNear(la.sources[i].position, lb.sources[i].position, "light position");
+    EXPECT_DOUBLE_EQ(la.sources[i].intensity, lb.sources[i].intensity);
+    expectNear(la.sources[i].color, lb.sources[i].color, "light color");
+  }
+}
+
+Light pointLight(Vec3 position, double intensity, Vec3 color, bool enabled = true) {
+  Light l;
+  l.kind = LightKind::Point;
+  l.position = position;
+  l.intensity = intensity;
+  l.color = color;
+  l.enabled = enabled;
+  return l;
 }
 
 Scene sphereScene() {
@@ -69,12 +83,13 @@ Scene sphereScene() {
   s.domain.shape = DomainShape::Sphere;
   s.domain.radius = 1.7;
   s.render.background = {0.1, 0.2, 0.3};
-  s.render.materials.front = {{0.9, 0.4, 0.1}, 0.6, 25.0};
-  s.render.materials.back = {{0.1, 0.4, 0.9}, 0.2, 80.0};
-  s.render.lights.ambient = 0.3;
-  s.render.lights.point = {{4, -2, 6}, 0.7, {1, 0.9, 0.8}};
-  const double n = std::sqrt(0.2 * 0.2 + 0.5 * 0.5 + 1.0);
-  s.render.lights.directional = {{-0.2 / n, -0.5 / n, -1.0 / n}, 0.4, {0.8, 0.9, 1}};
+  s.render.materials.front = {{0.9, 0.4, 0.1}, 0.6, 25.0, 0.3, 0.8};
+  s.render.materials.back = {{0.1, 0.4, 0.9}, 0.2, 80.0, 0.25, 0.7};
+  // SURFER has no ambient light apart from the materials' weights: 1 keeps them as they are.
+  s.render.lights.ambient = 1.0;
+  s.render.lights.sources = {pointLight({4, -2, 6}, 0.7, {1, 0.9, 0.8}),
+                             pointLight({-30, 50, 20}, 0.4, {0.8, 0.9, 1}),
+                             pointLight({0, 0, -9}, 1.5, {1, 1, 1}, false)};
   return s;
 }
 
@@ -109,6 +124,29 @@ TEST(JsurfRoundTrip, RoundTripOfAnImportedFileIsStable) {
   // .jsurf -> .surf -> .jsurf -> .surf: the second import equals the first.
   const Scene first = roundTrip(sphereScene());
   expectSurferKeysEqual(roundTrip(first), first);
+}
+
+TEST(JsurfRoundTrip, AmbientLightGoesIntoTheMaterialsWeights) {
+  Scene s = sphereScene();
+  s.render.lights.ambient = 0.5;
+  const Scene back = roundTrip(s);
+  EXPECT_DOUBLE_EQ(back.render.lights.ambient, 1.0);
+  EXPECT_DOUBLE_EQ(back.render.materials.front.ambient, 0.15);
+  EXPECT_DOUBLE_EQ(back.render.materials.back.ambient, 0.125);
+}
+
+TEST(JsurfRoundTrip, DirectionalLightBecomesAFarPointLightInItsDirection) {
+  Scene s = sphereScene();
+  Light sun;  // directional, travelling down -y
+  sun.direction = {0, -2, 0};
+  s.render.lights.sources = {sun};
+  const Scene back = roundTrip(s);
+  ASSERT_EQ(back.render.lights.sources.size(), 1u);
+  const Light& l = back.render.lights.sources[0];
+  EXPECT_EQ(l.kind, LightKind::Point);
+  EXPECT_NEAR(l.position[0], 0, 1e-9);
+  EXPECT_NEAR(l.position[1], 1000 * 1.7, 1e-6);  // a thousand clipping radii up
+  EXPECT_NEAR(l.position[2], 0, 1e-9);
 }
 
 TEST(JsurfRoundTrip, UpAndTargetComeBackCanonical) {
