@@ -1,0 +1,38 @@
+// The description comment at the top of a .surf file, and its one-line summary.
+#include <gtest/gtest.h>
+
+#include "scene/description.hpp"
+
+namespace zs {
+namespace {
+
+TEST(SceneDescription, LeadingCommentBlockAsOneParagraph) {
+  EXPECT_EQ(sceneDescription("\n# The Barth sextic, degree 6.\n#   Icosahedral.\n#\nformula = \"x\"\n# late"),
+            "The Barth sextic, degree 6. Icosahedral.");
+  EXPECT_EQ(sceneDescription("## Title ##\r\nformula = \"x\""), "Title ##");
+}
+
+TEST(SceneDescription, NoneWhenTheFileDoesNotOpenWithAComment) {
+  EXPECT_EQ(sceneDescription("formula = \"x\"\n# a comment after the first key\n"), "");
+  EXPECT_EQ(sceneDescription(""), "");
+  EXPECT_EQ(sceneDescription("#\n#\n"), "");
+}
+
+TEST(SceneDescription, SummaryIsTheFirstSentence) {
+  EXPECT_EQ(summaryLine("Thesis, Table 5.1, surface 1: a paraboloid. Degree 2."),
+            "Thesis, Table 5.1, surface 1: a paraboloid.");
+  EXPECT_EQ(summaryLine("No full stop at all"), "No full stop at all");
+}
+
+TEST(SceneDescription, LongSummaryIsShortenedAtAWord) {
+  const std::string s = summaryLine("aaaa bbbb cccc dddd eeee ffff", 16);
+  EXPECT_EQ(s, "aaaa bbbb...");
+  EXPECT_LE(s.size(), 16u);
+  // Code points, not bytes: twenty e-acutes fit in 20.
+  std::string accents;
+  for (int i = 0; i < 20; ++i) accents += "\xC3\xA9";
+  EXPECT_EQ(summaryLine(accents, 20), accents);
+}
+
+}  // namespace
+}  // namespace zs
