@@ -30,6 +30,14 @@ GalleryEntry describeExample(const Example& example) {
     std::ostringstream text;
     text << in.rdbuf();
     entry.description = sceneDescription(text.str());
+    std::string stem = example.name;
+    std::replace(stem.begin(), stem.end(), '/', '-');
+    const std::filesystem::path root = example.name.find('/') == std::string::npos
+                                           ? example.file.parent_path()
+                                           : example.file.parent_path().parent_path();
+    std::error_code ec;
+    if (const auto picture = root / "images" / (stem + ".png"); std::filesystem::is_regular_file(picture, ec))
+      entry.picture = picture;
   }
   entry.summary = summaryLine(entry.description);
   auto loaded = loadExample(example);

@@ -3,6 +3,7 @@
 // name, degree and the first sentence of the file's description comment. Used by
 // `zeroset gallery` and the viewer's gallery panel. A file without a description, or one
 // that does not load, is still listed (its summary says so).
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,9 @@ struct GalleryEntry {
   std::string degree;   // "6"; "-" when F is not a polynomial; "?" when it does not load
   std::string summary;  // one line; "" when the file has no description
   std::string description;  // the whole comment block
+  // examples/images/NAME.png (thesis/N-x: thesis-N-x.png), the gallery's picture of it;
+  // empty when there is none.
+  std::filesystem::path picture;
 };
 
 GalleryEntry describeExample(const Example& example);

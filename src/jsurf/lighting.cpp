@@ -73,7 +73,9 @@ void lightingToSurfer(const RenderSettings& r, const Mat4& worldToCamera, double
     if (l.kind == LightKind::Directional) {
       const double n = std::sqrt(l.direction[0] * l.direction[0] + l.direction[1] * l.direction[1] +
                                  l.direction[2] * l.direction[2]);
-      for (int a = 0; a < 3; ++a) world[a] = -l.direction[a] / n * kFarAway * radius;
+      const Vec3 d = n > 0 ? Vec3{l.direction[0] / n, l.direction[1] / n, l.direction[2] / n}
+                           : Vec3{0, 0, -1};
+      for (int a = 0; a < 3; ++a) world[a] = -d[a] * kFarAway * radius;
       notes.push_back("directional light " + std::to_string(slot + 1) +
                       " becomes a SURFER point light far away in the same direction");
     }

@@ -4,6 +4,7 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cstdint>
 
 namespace zs::app {
 
@@ -30,6 +31,14 @@ int drawGallery(GalleryPanel& g, int current) {
       if (!g.search.empty() && !galleryMatches(e, g.search)) continue;
       if (firstMatch < 0) firstMatch = static_cast<int>(i);
       ImGui::PushID(static_cast<int>(i));
+      float aspect = 1;
+      if (const std::uint32_t tex = e.picture.empty() ? 0 : g.thumbnails.texture(e.picture, aspect)) {
+        constexpr float kHeight = 48;
+        ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(tex)),
+                     ImVec2(kHeight * aspect, kHeight));
+        ImGui::SameLine();
+      }
+      ImGui::BeginGroup();
       const std::string label = e.name + "   degree " + e.degree;
       if (ImGui::Selectable(label.c_str(), static_cast<int>(i) == current)) picked = static_cast<int>(i);
       if (ImGui::IsItemHovered() && !e.description.empty()) {
@@ -39,11 +48,10 @@ int drawGallery(GalleryPanel& g, int current) {
         ImGui::PopTextWrapPos();
         ImGui::EndTooltip();
       }
-      ImGui::Indent();
       ImGui::PushTextWrapPos(0);
       ImGui::TextDisabled("%s", e.summary.empty() ? "(no description)" : e.summary.c_str());
       ImGui::PopTextWrapPos();
-      ImGui::Unindent();
+      ImGui::EndGroup();
       ImGui::PopID();
     }
     if (firstMatch < 0) ImGui::TextDisabled("no example matches");
