@@ -1,10 +1,11 @@
-// `zeroset gallery`: the example surfaces, one per line — name, degree, the first sentence
-// of the file's description — in the order the viewer's next/previous keys visit them.
+// `zeroset gallery`: the example surfaces, one per line — name, degree, the one line of the
+// file's description — in the order the viewer's next/previous keys visit them.
 #include <algorithm>
 #include <iostream>
 
 #include "app/commands.hpp"
 #include "app/gallery.hpp"
+#include "scene/description.hpp"
 
 namespace zs::app {
 namespace {
@@ -20,7 +21,7 @@ int runGallery(const std::string& search) {
     if (!search.empty() && !galleryMatches(e, search)) continue;
     std::cout << e.name << std::string(nameWidth - e.name.size() + 2, ' ') << e.degree
               << std::string(e.degree.size() < 8 ? 8 - e.degree.size() : 1, ' ')
-              << (e.summary.empty() ? "(no description)" : e.summary) << "\n";
+              << (e.summary.empty() ? "(no description)" : shortened(e.summary, 100)) << "\n";
     ++shown;
   }
   if (dir.empty()) std::cout << "(no examples folder found: these are the built-in surfaces)\n";

@@ -30,6 +30,7 @@ GalleryEntry describeExample(const Example& example) {
     std::ostringstream text;
     text << in.rdbuf();
     entry.description = sceneDescription(text.str());
+    entry.summary = summaryLine(text.str());
     std::string stem = example.name;
     std::replace(stem.begin(), stem.end(), '/', '-');
     const std::filesystem::path root = example.name.find('/') == std::string::npos
@@ -39,7 +40,7 @@ GalleryEntry describeExample(const Example& example) {
     if (const auto picture = root / "images" / (stem + ".png"); std::filesystem::is_regular_file(picture, ec))
       entry.picture = picture;
   }
-  entry.summary = summaryLine(entry.description);
+  if (example.file.empty()) entry.summary = entry.description;
   auto loaded = loadExample(example);
   entry.degree = "?";
   if (const Scene* scene = std::get_if<Scene>(&loaded)) {

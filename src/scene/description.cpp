@@ -32,14 +32,22 @@ std::string sceneDescription(std::string_view text) {
   return out;
 }
 
-std::string summaryLine(std::string_view description, std::size_t maxChars) {
+std::string summaryLine(std::string_view text) {
+  const std::string description = sceneDescription(text);
+  // The first comment line, as sceneDescription strips it.
+  const std::string first = sceneDescription(text.substr(0, text.find('#') == std::string_view::npos
+                                                                ? 0
+                                                                : text.find('\n', text.find('#'))));
+  if (first.find(" \u2014 ") != std::string::npos && first.find(": ") != std::string::npos)
+    return first;
   std::string_view s = description;
   for (std::size_t i = 0; i + 1 < s.size(); ++i) {
-    if (s[i] == '.' && (s[i + 1] == ' ' || s[i + 1] == '\t')) {
-      s = s.substr(0, i + 1);
-      break;
-    }
+    if (s[i] == '.' && (s[i + 1] == ' ' || s[i + 1] == '\t')) return std::string(s.substr(0, i + 1));
   }
+  return std::string(s);
+}
+
+std::string shortened(std::string_view s, std::size_t maxChars) {
   std::size_t points = 0;
   std::size_t cut = s.size();  // byte where the (maxChars - 3)th code point ends
   for (std::size_t i = 0; i < s.size(); ++i) {

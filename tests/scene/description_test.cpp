@@ -18,20 +18,28 @@ TEST(SceneDescription, NoneWhenTheFileDoesNotOpenWithAComment) {
   EXPECT_EQ(sceneDescription("#\n#\n"), "");
 }
 
-TEST(SceneDescription, SummaryIsTheFirstSentence) {
-  EXPECT_EQ(summaryLine("Thesis, Table 5.1, surface 1: a paraboloid. Degree 2."),
-            "Thesis, Table 5.1, surface 1: a paraboloid.");
-  EXPECT_EQ(summaryLine("No full stop at all"), "No full stop at all");
+TEST(SceneDescription, SummaryIsTheGalleryLineWhenThereIsOne) {
+  // examples/README.md's form: NAME, an em dash, the degree, a colon, one line.
+  EXPECT_EQ(summaryLine("# Barth sextic \u2014 degree 6, 65 nodes: the most a sextic can have. Really.\n"
+                        "# More.\nformula = \"x\"\n"),
+            "Barth sextic \u2014 degree 6, 65 nodes: the most a sextic can have. Really.");
 }
 
-TEST(SceneDescription, LongSummaryIsShortenedAtAWord) {
-  const std::string s = summaryLine("aaaa bbbb cccc dddd eeee ffff", 16);
+TEST(SceneDescription, SummaryIsTheFirstSentenceOtherwise) {
+  EXPECT_EQ(summaryLine("# Thesis, Table 5.1, surface 1: a paraboloid.\n# Degree 2.\n"),
+            "Thesis, Table 5.1, surface 1: a paraboloid.");
+  EXPECT_EQ(summaryLine("# No full stop at all\n"), "No full stop at all");
+  EXPECT_EQ(summaryLine("formula = \"x\" # not a description\n"), "");
+}
+
+TEST(SceneDescription, ShortenedAtAWord) {
+  const std::string s = shortened("aaaa bbbb cccc dddd eeee ffff", 16);
   EXPECT_EQ(s, "aaaa bbbb...");
   EXPECT_LE(s.size(), 16u);
   // Code points, not bytes: twenty e-acutes fit in 20.
   std::string accents;
   for (int i = 0; i < 20; ++i) accents += "\xC3\xA9";
-  EXPECT_EQ(summaryLine(accents, 20), accents);
+  EXPECT_EQ(shortened(accents, 20), accents);
 }
 
 }  // namespace
