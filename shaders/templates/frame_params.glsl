@@ -25,15 +25,11 @@ RT_FRAME_STORAGE RtFrame {
   flat int maxBisections;
   flat float epsilon;
   flat float tangentTolerance;  // 1e-5 of the domain diagonal (docs/renderer.md)
-  flat float ambient;
-  flat vec3 dirLightTo;  // unit vector towards the directional light
-  flat vec3 dirLight;  // lights: color * intensity
-  flat vec3 pointPos;
-  flat vec3 pointLight;
-  flat vec3 frontColor;
+  flat vec3 frontColor;  // the lights are shader constants (raytrace_shading.frag.glsl)
   flat vec3 backColor;
-  flat vec2 frontPhong;  // (specular, shininess)
-  flat vec2 backPhong;
+  flat vec4 frontPhong;  // (ambient * lights.ambient, diffuse, specular, shininess)
+  flat vec4 backPhong;
+  flat float curvatureRange;  // curvature colorings: the value at the ends of the color map
   flat int silhouetteOn;
   flat int borderOn;
   flat float silhouetteThreshold;

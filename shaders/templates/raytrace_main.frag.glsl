@@ -1,8 +1,9 @@
 // ---- raytrace_main.frag.glsl (render stage): follows the prelude, the generated formula
 // block (zs_F, zs_FGrad) and, for the Bernstein method, the generated ray polynomial. Owns
 // what both tracing methods share: the camera rays, the two passes (primary and one
-// reflection ray), shading and blending, the outputs. The method's file comes after this
-// one and defines rtMarch(), which finds the hits of one ray:
+// reflection ray), blending, the outputs. The method's file comes after this
+// one and defines rtMarch(), which finds the hits of one ray (raytrace_shading.frag.glsl,
+// between the two, defines shade()):
 //   raytrace_sampling.frag.glsl   thesis Algorithm 1: sign samples + bisection per leaf
 //   raytrace_bernstein.frag.glsl  exact root isolation of polynomials, octree front to back
 // docs/renderer.md explains the design; docs/camera.md the camera contract. No array is
@@ -13,6 +14,11 @@
 
 layout(location = 0) out vec4 rtOutColor;
 layout(location = 1) out float rtOutDepth;
+#if RT_COLOR == 1 || RT_COLOR == 2
+// The curvature at the first hit of the pixel-center ray (NaN where nothing is hit): read
+// back for the automatic color range and by the render tests (docs/curvature.md).
+layout(location = 2) out float rtOutValue;
+#endif
 
 // The program variant (render/ray_tracer.cpp defines these after #version): features that
 // are off are absent, not masked. llvmpipe runs every branch and every loop at least once
@@ -25,6 +31,12 @@ layout(location = 1) out float rtOutDepth;
 #endif
 #ifndef RT_REFLECTION
 #define RT_REFLECTION 1  // one reflection ray off the first hit
+#endif
+#ifndef RT_COLOR
+#define RT_COLOR 0       // the coloring (raytrace_shading.frag.glsl)
+#endif
+#ifndef RT_KEY_LIGHT
+#define RT_KEY_LIGHT (-rt.forward)  // towards the first directional light, else the eye
 #endif
 
 // The hits of the ray o + t d with t >= tStart inside the domain, nearest first, at most
@@ -59,35 +71,10 @@ float domainDepth(vec3 p) {
 // 1 / d without infinities: a zero component becomes 1e30 (the slab test stays finite).
 vec3 safeInverse(vec3 d) { return 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0))); }
 
-// Phong with an ambient term, the directional and the point light; front faces (gradient
-// against the ray) and back faces take different materials; highlights replace the color.
-// Written out per light with one normalization each: on llvmpipe shading is a large share
-// of a frame (two pow calls are ~2 ms at 800x600), and a loop over the lights with
-// per-light selects would evaluate both lights' expressions twice.
-float phongSpecular(vec3 n, vec3 L, float nl, vec3 rd, vec2 phong) {
-  // dot(reflect(-L, n), -rd) without forming the reflected vector.
-  float r = max(dot(L, rd) - 2.0 * nl * dot(n, rd), 0.0);
-  return nl > 0.0 ? phong.x * pow(r, phong.y) : 0.0;
-}
-
-vec3 shade(vec3 p, vec4 g, vec3 rd) {
-  float g2 = dot(g.xyz, g.xyz);
-  float inv = g2 > 0.0 ? inversesqrt(g2) : 0.0;
-  float cosine = dot(g.xyz, rd) * inv;
-  bool front = cosine < 0.0;
-  vec3 n = g2 > 0.0 ? g.xyz * (front ? inv : -inv) : -rd;
-  vec2 phong = front ? rt.frontPhong : rt.backPhong;
-  vec3 L0 = rt.dirLightTo;  // towards the directional light, unit length
-  vec3 L1 = normalize(rt.pointPos - p);
-  float nl0 = dot(n, L0), nl1 = dot(n, L1);
-  vec3 diffuse = vec3(rt.ambient) + rt.dirLight * max(nl0, 0.0) + rt.pointLight * max(nl1, 0.0);
-  vec3 specular = rt.dirLight * phongSpecular(n, L0, nl0, rd, phong) +
-                  rt.pointLight * phongSpecular(n, L1, nl1, rd, phong);
-  vec3 color = (front ? rt.frontColor : rt.backColor) * diffuse + specular;
-  if ((rt.silhouetteOn != 0) && abs(cosine) < rt.silhouetteThreshold) color = rt.silhouetteColor;
-  if ((rt.borderOn != 0) && domainDepth(p) < rt.borderThreshold) color = rt.borderColor;
-  return clamp(color, 0.0, 1.0);
-}
+// The color of a hit at p with (grad F, F) = g seen along rd: raytrace_shading.frag.glsl.
+// Curvature colorings leave the curvature there in rtShadeValue.
+vec3 shade(vec3 p, vec4 g, vec3 rd);
+float rtShadeValue = 0.0;
 
 void main() {
   // Pixel (i, j) from the top-left of the full image (docs/camera.md).
@@ -99,6 +86,7 @@ void main() {
   const int passes = RT_REFLECTION != 0 ? 2 : 1;
   float alpha = clamp(rt.opacity, 0.0, 1.0), w = RT_REFLECTION != 0 ? rt.primaryWeight : 1.0;
   float depth = uintBitsToFloat(0x7F800000u);  // +inf: no hit
+  float value = uintBitsToFloat(0x7FC00000u);  // NaN: no hit
   vec3 sum = vec3(0.0);
 
   // do-while, not for: llvmpipe tests a loop's exit only at the end of its body, so a for
@@ -140,6 +128,7 @@ void main() {
 #if RT_MAX_HITS == 1
       // One hit at most: shade it unconditionally (a loop would run its body twice).
       vec3 lit = shade(o + hitT[0] * d, hitG[0], d);
+      if (pass == 0 && s == centerRay) value = rtShadeValue;
       if (found > 0 && colorRay) {
         color += passScale * passAlpha * ((pass == 0) ? w : 1.0) * lit;
         transmit = 1.0 - passAlpha;
@@ -155,6 +144,7 @@ void main() {
         }
         float share = (pass == 0 && j == 0) ? w : 1.0;
         color += passScale * transmit * passAlpha * share * shade(o + tj * d, gj, d);
+        if (pass == 0 && j == 0 && s == centerRay) value = rtShadeValue;
         transmit *= 1.0 - passAlpha;
       }
 #endif
@@ -176,7 +166,7 @@ void main() {
       marked = marked || hit;
     }
     if (marked) {
-      color = rtMarkerColor * (0.35 + 0.65 * max(dot(nMark, rt.dirLightTo), 0.0));
+      color = rtMarkerColor * (0.35 + 0.65 * max(dot(nMark, RT_KEY_LIGHT), 0.0));
       firstT = tMark;
     }
 #endif
@@ -185,4 +175,7 @@ void main() {
   } while (++s < rays);
   rtOutColor = vec4(sum / float(grid), 1.0);
   rtOutDepth = depth;
+#if RT_COLOR == 1 || RT_COLOR == 2
+  rtOutValue = depth < uintBitsToFloat(0x7F800000u) ? value : uintBitsToFloat(0x7FC00000u);
+#endif
 }

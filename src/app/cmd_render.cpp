@@ -104,6 +104,10 @@ int runRender(const RenderArgs& args) {
   std::printf("wrote %s (%dx%d) in %.0f ms: %zu octree leaves, %s\n", args.output.c_str(),
               scene->width, scene->height, renderMs, surface.octree.leaves.size(),
               ctx.context->backendName().c_str());
+  // The picture's color map has no legend: say what its ends stand for.
+  if (frame.curvatureRange > 0)
+    std::printf("curvature color map: blue -%.4g, white 0, red +%.4g\n", frame.curvatureRange,
+                frame.curvatureRange);
   return 0;
 }
 

@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "codegen/emit_hessian.hpp"
 #include "codegen/glsl_validation.hpp"
 #include "codegen/shader_assembly.hpp"
 #include "expr/derivative.hpp"
@@ -94,6 +95,9 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bo
 
   t = std::chrono::steady_clock::now();
   s.glsl = emitFormulaGlsl(s.formula.graph, s.formula.root, s.gradient);
+  // Second derivatives only for the colorings that show curvature (docs/curvature.md).
+  if (needsCurvature(scene.render.shading.color))
+    s.glsl.source += emitHessianGlsl(s.formula.graph, s.gradient);
   s.method = resolveMethod(scene.render.tracing.method, s.formula, s.methodWarning);
   std::string markers;
   if (scene.render.singular.enabled) {

@@ -78,6 +78,8 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
               "#define RT_FRAME_STORAGE in\n" + std::string(shaderTemplate(kFrameTemplate)));
   if (!markers.empty()) appendPiece(out, "highlights.singular markers", string++, markers);
   appendPiece(out, "shaders/templates/" + std::string(kRaytraceTemplate), string++, raytrace);
+  appendPiece(out, "shaders/templates/" + std::string(kShadingTemplate), string++,
+              shaderTemplate(kShadingTemplate));
   appendPiece(out, "shaders/templates/" + std::string(poly ? kBernsteinTemplate : kSamplingTemplate), string, march);
   return out;
 }

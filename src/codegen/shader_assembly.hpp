@@ -7,7 +7,8 @@
 //   generated formula block     (zs_params, zs_F, zs_FGrad)                       string 1
 //   [ray polynomial block       (zs_FPoly, Bernstein kernels; Bernstein only)]    string 2
 //   frame_params.glsl           (the frame's parameters, flat inputs `rt`)
-//   raytrace_main.frag.glsl     (rays, passes, shading, main; rtMarch prototype)
+//   raytrace_main.frag.glsl     (rays, passes, main; rtMarch and shade prototypes)
+//   raytrace_shading.frag.glsl  (shade: lights, materials, curvature colors, highlights)
 //   raytrace_sampling.frag.glsl or raytrace_bernstein.frag.glsl  (rtMarch)
 //
 // A comment naming its origin and `#line 1 <string>` precede pieces 2 and 3, so compiler
@@ -24,6 +25,7 @@ namespace zs {
 
 inline constexpr std::string_view kPreludeTemplate = "raytrace_prelude.frag.glsl";
 inline constexpr std::string_view kRaytraceTemplate = "raytrace_main.frag.glsl";
+inline constexpr std::string_view kShadingTemplate = "raytrace_shading.frag.glsl";
 inline constexpr std::string_view kSamplingTemplate = "raytrace_sampling.frag.glsl";
 inline constexpr std::string_view kBernsteinTemplate = "raytrace_bernstein.frag.glsl";
 inline constexpr std::string_view kVertexTemplate = "fullscreen.vert.glsl";

@@ -5,15 +5,18 @@
 #include <glad/gl.h>
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 #include <cstring>
 #include <utility>
 #include <limits>
 
 #include "render/shader_program.hpp"
+#include "render/shading_defines.hpp"
 
 namespace zs {
 
-RayTracer::RayTracer() { glGenVertexArrays(1, &vao_); }
+RayTracer::RayTracer() : preferred_(variantFor(RenderSettings{})) { glGenVertexArrays(1, &vao_); }
 
 RayTracer::~RayTracer() {
   releaseTarget();
@@ -33,7 +36,7 @@ bool RayTracer::build(std::string_view vertexSource, std::string_view fragmentSo
   std::swap(previous, programs_);
   const std::string oldVertex = std::exchange(vertexSource_, std::string(vertexSource));
   const std::string oldFragment = std::exchange(fragmentSource_, std::string(fragmentSource));
-  const unsigned first = program(variantFor(RenderSettings{}), log);
+  const unsigned first = program(preferred_, log);
   if (!first) {  // keep what worked before
     deletePrograms();
     programs_ = std::move(previous);
@@ -52,17 +55,29 @@ RayTracer::Variant RayTracer::variantFor(const RenderSettings& s) {
   v.samples = std::clamp(s.samples, 1, 16);
   v.maxHits = s.opacity < 1.0 ? std::clamp(s.tracing.hits, 1, 8) : 1;
   v.reflection = s.reflection.enabled;
+  v.shading = shadingDefines(s);
   return v;
 }
 
 unsigned RayTracer::program(const Variant& v, std::string& log) {
   if (auto it = programs_.find(v); it != programs_.end()) return it->second;
+  // Editing a light makes a new variant each time: keep only the current lighting's.
+  for (auto it = programs_.begin(); it != programs_.end();) {
+    if (it->first.shading == v.shading) {
+      ++it;
+      continue;
+    }
+    if (it->second == program_) program_ = 0;
+    glDeleteProgram(it->second);
+    it = programs_.erase(it);
+  }
   // The defines go right after #version, which must stay the first line.
   std::string source = fragmentSource_;
   const std::size_t eol = source.find('\n');
   const std::string defines = "#define RT_SAMPLES " + std::to_string(v.samples) +
                               "\n#define RT_MAX_HITS " + std::to_string(v.maxHits) +
-                              "\n#define RT_REFLECTION " + (v.reflection ? "1" : "0") + "\n#line 2 0\n";
+                              "\n#define RT_REFLECTION " + (v.reflection ? "1" : "0") + "\n" +
+                              v.shading + "#line 2 0\n";
   source.insert(eol == std::string::npos ? source.size() : eol + 1, defines);
   const unsigned p = compileProgram(vertexSource_, source, log);
   if (p) programs_.emplace(v, p);
@@ -113,7 +128,8 @@ void RayTracer::releaseTarget() {
   if (fbo_) glDeleteFramebuffers(1, &fbo_);
   if (colorTex_) glDeleteTextures(1, &colorTex_);
   if (depthTex_) glDeleteTextures(1, &depthTex_);
-  fbo_ = colorTex_ = depthTex_ = 0;
+  if (valueTex_) glDeleteTextures(1, &valueTex_);
+  fbo_ = colorTex_ = depthTex_ = valueTex_ = 0;
   targetWidth_ = targetHeight_ = 0;
 }
 
@@ -136,10 +152,12 @@ std::string RayTracer::ensureTarget(int width, int height) {
   };
   colorTex_ = makeTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE);
   depthTex_ = makeTexture(GL_R32F, GL_RED, GL_FLOAT);  // distance to the first hit
+  valueTex_ = makeTexture(GL_R32F, GL_RED, GL_FLOAT);  // curvature colorings: the curvature
   glGenFramebuffers(1, &fbo_);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colorTex_, 0);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, depthTex_, 0);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, valueTex_, 0);
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
@@ -156,7 +174,8 @@ std::string RayTracer::prepare(const RenderSettings& settings, const Domain& dom
   if (!program_) return "the ray tracer has no shader program (build() first)";
   if (width <= 0 || height <= 0) return "image size must be positive";
   std::string log;
-  const unsigned variant = program(variantFor(settings), log);
+  preferred_ = variantFor(settings);
+  const unsigned variant = program(preferred_, log);
   if (!variant) return "the shader variant for these settings does not compile:\n" + log;
   if (variant != program_) {
     program_ = variant;
@@ -165,10 +184,14 @@ std::string RayTracer::prepare(const RenderSettings& settings, const Domain& dom
   if (offscreen) {
     if (std::string error = ensureTarget(width, height); !error.empty()) return error;
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    glDrawBuffers(2, buffers);
+    const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    glDrawBuffers(3, buffers);
   }
   glUseProgram(program_);
+  curvatureRange_ = needsCurvature(settings.shading.color)
+                        ? resolveCurvatureRange(settings, domain, width, height)
+                        : 0;
+  if (offscreen) glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   vertices_ = setUniforms(settings, domain, width, height);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_BUFFER, nodeTexture_);
@@ -200,8 +223,54 @@ void RayTracer::clearBackground(const RenderSettings& settings, bool offscreen) 
     return;
   }
   const float depth[4] = {std::numeric_limits<float>::infinity(), 0, 0, 0};
+  const float value[4] = {std::numeric_limits<float>::quiet_NaN(), 0, 0, 0};
   glClearBufferfv(GL_COLOR, 0, color);
   glClearBufferfv(GL_COLOR, 1, depth);
+  glClearBufferfv(GL_COLOR, 2, value);
+}
+
+double RayTracer::resolveCurvatureRange(const RenderSettings& settings, const Domain& domain,
+                                        int width, int height) {
+  if (settings.shading.curvatureRange > 0) return settings.shading.curvatureRange;
+  // A picture a quarter the size, drawn into the corner of the offscreen target (the shader
+  // derives its rays from rt.resolution and the pixel, so a smaller resolution is a smaller
+  // picture of the same view), then its value attachment read back.
+  GLint bound = 0;  // the viewer traces into its own framebuffer: put it back afterwards
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+  if (!ensureTarget(std::max(width, 1), std::max(height, 1)).empty()) return 1;
+  const int w = std::max(width / 4, 1), h = std::max(height / 4, 1);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  glDrawBuffers(3, buffers);
+  RenderSettings probe = settings;
+  probe.shading.curvatureRange = 1;
+  const int vertices = setUniforms(probe, domain, w, h);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_BUFFER, nodeTexture_);
+  glBindVertexArray(vao_);
+  glViewport(0, 0, w, h);
+  clearBackground(settings, true);
+  if (proxy_ == Proxy::Box) {
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_FRONT);
+    glFrontFace(GL_CCW);
+  } else {
+    glDisable(GL_CULL_FACE);
+  }
+  if (vertices > 0) glDrawArrays(GL_TRIANGLES, 0, vertices);
+  std::vector<float> values(std::size_t(w) * h);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadBuffer(GL_COLOR_ATTACHMENT2);
+  glReadPixels(0, 0, w, h, GL_RED, GL_FLOAT, values.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(bound));
+  // Noise floor: 1e-3 of the curvature of a sphere as large as the domain.
+  const Domain box = boundingBox(domain);
+  const double half = 0.5 * std::hypot(box.max[0] - box.min[0], box.max[1] - box.min[1],
+                                       box.max[2] - box.min[2]);
+  const double floor = settings.shading.color == ColorMode::Gauss ? 1e-3 / (half * half) : 1e-3 / half;
+  return curvatureRangeOf(std::move(values), floor);
 }
 
 std::string RayTracer::drawOffscreen(const RenderSettings& settings, const Domain& domain,
@@ -254,11 +323,21 @@ Frame RayTracer::render(const RenderSettings& settings, const Domain& domain, in
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   glReadBuffer(GL_COLOR_ATTACHMENT1);
   glReadPixels(0, 0, width, height, GL_RED, GL_FLOAT, depth.data());
+  const bool curvature = needsCurvature(settings.shading.color);
+  std::vector<float> value(curvature ? depth.size() : 0);
+  if (curvature) {
+    glReadBuffer(GL_COLOR_ATTACHMENT2);
+    glReadPixels(0, 0, width, height, GL_RED, GL_FLOAT, value.data());
+    frame.value = {width, height, std::vector<float>(value.size())};
+  }
+  frame.curvatureRange = curvatureRange_;
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   for (int y = 0; y < height; ++y) {
     const std::size_t src = std::size_t(height - 1 - y) * width, dst = std::size_t(y) * width;
     std::memcpy(&frame.color.rgba[dst * 4], &rgba[src * 4], std::size_t(width) * 4);
     std::memcpy(&frame.depth.values[dst], &depth[src], std::size_t(width) * sizeof(float));
+    if (curvature)
+      std::memcpy(&frame.value.values[dst], &value[src], std::size_t(width) * sizeof(float));
   }
   return frame;
 }

@@ -24,6 +24,10 @@ namespace zs {
 struct Frame {
   Image color;     // RGBA8, top row first
   DepthMap depth;  // distance along the unit ray from its origin to the first hit; +inf if none
+  // Curvature colorings only (shading.color "gauss" or "mean"): the curvature at the first
+  // hit of each pixel-center ray, NaN where nothing was hit; empty otherwise.
+  DepthMap value;
+  double curvatureRange = 0;  // the range the color map used (automatic or the scene's)
   std::string error;  // non-empty: nothing was rendered
 };
 
@@ -69,6 +73,8 @@ class RayTracer {
   // docs/renderer.md). On by default; off only to measure what the fix costs.
   void setTangentRoots(bool on) { tangentRoots_ = on; }
   void setProxy(Proxy proxy) { proxy_ = proxy; }
+  // The curvature range of the last frame drawn (the viewer's legend); 0 before any.
+  double curvatureRange() const { return curvatureRange_; }
 
  private:
   std::string prepare(const RenderSettings& settings, const Domain& domain, int width,
@@ -86,20 +92,28 @@ class RayTracer {
   struct Variant {
     int samples = 1, maxHits = 1;
     bool reflection = true;
+    std::string shading;  // lights and coloring (render/shading_defines.hpp)
     bool operator<(const Variant& o) const {
-      return std::tie(samples, maxHits, reflection) < std::tie(o.samples, o.maxHits, o.reflection);
+      return std::tie(samples, maxHits, reflection, shading) <
+             std::tie(o.samples, o.maxHits, o.reflection, o.shading);
     }
   };
   static Variant variantFor(const RenderSettings& settings);
   // The program of `v`, compiling it if needed; 0 with `log` set when it does not compile.
   unsigned program(const Variant& v, std::string& log);
   void deletePrograms();
+  // shading.curvature_range, or for 0 the range measured on a picture a quarter the size
+  // (render/shading_defines.hpp curvatureRangeOf); needs the current program in use.
+  double resolveCurvatureRange(const RenderSettings& settings, const Domain& domain, int width,
+                               int height);
 
   std::map<Variant, unsigned> programs_;
   unsigned program_ = 0, vao_ = 0;  // program_: the one in use
   std::string vertexSource_, fragmentSource_;  // what the programs are built from
   unsigned nodeBuffer_ = 0, nodeTexture_ = 0;
-  unsigned fbo_ = 0, colorTex_ = 0, depthTex_ = 0;
+  Variant preferred_;  // what build() compiles first: the variant of the last frame
+  double curvatureRange_ = 0;
+  unsigned fbo_ = 0, colorTex_ = 0, depthTex_ = 0, valueTex_ = 0;
   int targetWidth_ = 0, targetHeight_ = 0;
   GpuHierarchy hierarchy_;
   std::vector<float> params_;

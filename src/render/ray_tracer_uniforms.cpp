@@ -56,28 +56,18 @@ int RayTracer::setUniforms(const RenderSettings& s, const Domain& clip, int widt
   for (int a = 0; a < 3; ++a) diagonal += (domain.max[a] - domain.min[a]) * (domain.max[a] - domain.min[a]);
   glUniform1f(uniform("rtTangentTolerance"), float(1e-5 * std::max(std::sqrt(diagonal), 1e-6)));
 
-  Lights l = s.lights;
-  glUniform1f(uniform("rtAmbient"), float(l.ambient));
-  Light off;
-  off.intensity = 0;
-  const Light* directional = firstLight(l, LightKind::Directional);
-  const Light* point = firstLight(l, LightKind::Point);
-  if (!directional) directional = &off;
-  if (!point) point = &off;
-  Vec3 dir = directional->direction;
-  if (dir == Vec3{0, 0, 0}) dir = {0, 0, -1};  // a zero direction would normalize to NaN
-  const double dirLength = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
-  // The shader wants the unit vector towards the light (normalized once, not per pixel).
-  vec3Uniform(uniform("rtDirLightTo"), Vec3{-dir[0] / dirLength, -dir[1] / dirLength, -dir[2] / dirLength});
-  vec3Uniform(uniform("rtDirLight"), directional->color, directional->intensity);
-  vec3Uniform(uniform("rtPointPos"), point->position);
-  vec3Uniform(uniform("rtPointLight"), point->color, point->intensity);
-
+  // The lights themselves are shader constants (render/shading_defines.hpp).
   const Materials& m = s.materials;
+  const double ambient = std::max(s.lights.ambient, 0.0);
+  auto phong = [&](const char* name, const Material& material) {
+    glUniform4f(uniform(name), float(material.ambient * ambient), float(material.diffuse),
+                float(material.specular), float(std::max(material.shininess, 0.0)));
+  };
   vec3Uniform(uniform("rtFrontColor"), m.front.color);
   vec3Uniform(uniform("rtBackColor"), m.back.color);
-  glUniform2f(uniform("rtFrontPhong"), float(m.front.specular), float(std::max(m.front.shininess, 0.0)));
-  glUniform2f(uniform("rtBackPhong"), float(m.back.specular), float(std::max(m.back.shininess, 0.0)));
+  phong("rtFrontPhong", m.front);
+  phong("rtBackPhong", m.back);
+  glUniform1f(uniform("rtCurvatureRange"), float(curvatureRange_ > 0 ? curvatureRange_ : 1.0));
 
   glUniform1i(uniform("rtSilhouetteOn"), s.silhouette.enabled);
   glUniform1f(uniform("rtSilhouetteThreshold"), float(s.silhouette.threshold));

@@ -14,7 +14,7 @@ namespace {
 
 TEST(ShaderAssembly, EmbeddedTemplatesEqualTheFilesOnDisk) {
   for (std::string_view name :
-       {kPreludeTemplate, kRaytraceTemplate, kVertexTemplate, kFrameTemplate, kSamplingTemplate,
+       {kPreludeTemplate, kRaytraceTemplate, kShadingTemplate, kVertexTemplate, kFrameTemplate, kSamplingTemplate,
         kBernsteinTemplate}) {
     SCOPED_TRACE(name);
     EXPECT_EQ(shaderTemplate(name), readFile(sourceDir() / "shaders/templates" / name));

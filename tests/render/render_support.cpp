@@ -6,6 +6,8 @@
 #include <variant>
 
 #include "codegen/emit_glsl.hpp"
+#include "codegen/emit_hessian.hpp"
+#include "expr/derivative.hpp"
 #include "codegen/shader_assembly.hpp"
 #include "interval/octree.hpp"
 #include "interval/sphere_builder.hpp"
@@ -43,7 +45,8 @@ std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& erro
     return nullptr;
   }
   const std::vector<float> packed = buildSphereHierarchy(std::get<Octree>(tree)).packed();
-  const GlslFormula glsl = emitFormulaGlsl(formula);
+  GlslFormula glsl = emitFormulaGlsl(formula);
+  if (spec.hessian) glsl.source += emitHessianGlsl(formula.graph, gradient(formula.graph, formula.root));
   // Auto: the method the app would pick (app/pipeline.cpp resolveMethod), without its
   // warnings. Bernstein is taken for any polynomial, above the degree limit too, so tests
   // can measure where that limit lies.

@@ -36,6 +36,9 @@ struct SurfaceSpec {
   std::vector<std::array<double, 3>> markers{};
   double markerRadius = 0.05;
   std::array<double, 3> markerColor{0.9, 0.15, 0.55};
+  // The second derivatives (codegen/emit_hessian.hpp), which shading.color "gauss" and
+  // "mean" need.
+  bool hessian = false;
 };
 
 // Builds a ray tracer for `spec` on the current context. Returns null with `error` set

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <variant>
 
 #include "app/viewer/key_bindings.hpp"
@@ -72,11 +73,35 @@ void drawStats(const PanelStats& s) {
     ImGui::TextWrapped("%s", s.status.c_str());
 }
 
+// The curvature coloring's legend: the diverging map of raytrace_shading.frag.glsl
+// (blue -range, white 0, red +range) with its end values.
+void drawLegend(const PanelStats& s) {
+  if (s.curvatureRange <= 0) return;
+  ImGui::Separator();
+  ImGui::Text("%s curvature (oriented by grad F)", s.gaussian ? "Gaussian" : "mean");
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const float width = ImGui::GetContentRegionAvail().x, height = ImGui::GetFontSize();
+  const ImU32 blue = IM_COL32(38, 77, 217, 255), white = IM_COL32(245, 245, 245, 255),
+              red = IM_COL32(204, 26, 26, 255);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImVec2 mid(at.x + width / 2, at.y + height), end(at.x + width, at.y + height);
+  draw->AddRectFilledMultiColor(at, mid, blue, white, white, blue);
+  draw->AddRectFilledMultiColor(ImVec2(mid.x, at.y), end, white, red, red, white);
+  ImGui::Dummy(ImVec2(width, height));
+  char range[32];
+  std::snprintf(range, sizeof range, "%.3g", s.curvatureRange);
+  ImGui::Text("-%s", range);
+  ImGui::SameLine(width / 2);
+  ImGui::TextUnformatted("0");
+  ImGui::SameLine(width - ImGui::CalcTextSize(range).x);
+  ImGui::Text("+%s", range);
+}
+
 void drawKeys() {
   if (!ImGui::CollapsingHeader("keys and mouse")) return;
   ImGui::TextUnformatted("left drag    rotate (arcball)");
   ImGui::TextUnformatted("wheel        zoom");
-  ImGui::TextUnformatted("right drag   move the point light");
+  ImGui::TextUnformatted("right drag   move the first point light");
   for (const KeyBinding& b : keyBindings()) ImGui::Text("%-12s %s", b.keyName, b.description);
 }
 
@@ -106,6 +131,7 @@ PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats) 
     drawFormula(state, result);
     drawParams(scene, state);
     drawStats(stats);
+    drawLegend(stats);
     drawSettings(scene);
     drawKeys();
   }

@@ -26,6 +26,9 @@ struct PanelStats {
   bool building = false;
   std::string example;     // name of the example on screen, if any
   std::string status;      // the latest action's message
+  // Curvature colorings: the value at the ends of the color map (the legend); 0 otherwise.
+  double curvatureRange = 0;
+  bool gaussian = false;   // which curvature: Gaussian, or mean
 };
 
 struct PanelState {

@@ -35,6 +35,8 @@ class SurfaceView {
   // Draws the latest traced image over the whole default framebuffer (width x height).
   void present(int width, int height);
   int presentedScale() const { return lastScale_; }
+  // The curvature coloring's range in the latest trace (0 for the other colorings).
+  double curvatureRange() const { return tracer_.curvatureRange(); }
   bool hasImage() const { return lastScale_ > 0; }
 
   // A clean full-resolution frame (no panel), for screenshots.

@@ -123,6 +123,8 @@ void Viewer::traceIfNeeded(int width, int height) {
   msPerPixel_ = ms / (double(width / scale) * double(height / scale) * samples);
   stats_.traceMs = ms;
   stats_.traceScale = scale;
+  stats_.curvatureRange = view_->curvatureRange();
+  stats_.gaussian = settings.shading.color == ColorMode::Gauss;
   if (!uncounted_) {
     ++traces_[scale > 1];
     traceMsTotal_[scale > 1] += ms;
