@@ -37,7 +37,8 @@ int runGallery(const std::string& search) {
 void addGalleryCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("gallery", "List the example surfaces: name, degree, description");
   auto search = std::make_shared<std::string>();
-  cmd->add_option("search", *search, "show only examples whose name or description holds this text");
+  cmd->add_option("search", *search,
+                  "show only examples whose name or description holds this text");
   cmd->callback([search] { std::exit(runGallery(*search)); });
 }
 

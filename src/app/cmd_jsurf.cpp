@@ -57,7 +57,8 @@ int runExport(const ExportArgs& args) {
 }  // namespace
 
 void addImportCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("import", "Convert a SURFER .jsurf file to a .surf scene (docs/jsurf.md)");
+  auto* cmd =
+      app.add_subcommand("import", "Convert a SURFER .jsurf file to a .surf scene (docs/jsurf.md)");
   auto args = std::make_shared<ImportArgs>();
   cmd->add_option("input", args->input, "the SURFER file, e.g. kummer.jsurf")->required();
   cmd->add_option("-o,--output", args->output, "the .surf file to write")->required();

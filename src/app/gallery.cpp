@@ -37,7 +37,8 @@ GalleryEntry describeExample(const Example& example) {
                                            ? example.file.parent_path()
                                            : example.file.parent_path().parent_path();
     std::error_code ec;
-    if (const auto picture = root / "images" / (stem + ".png"); std::filesystem::is_regular_file(picture, ec))
+    if (const auto picture = root / "images" / (stem + ".png");
+        std::filesystem::is_regular_file(picture, ec))
       entry.picture = picture;
   }
   if (example.file.empty()) entry.summary = entry.description;

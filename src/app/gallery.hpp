@@ -13,8 +13,8 @@ namespace zs::app {
 
 struct GalleryEntry {
   std::string name;
-  std::string degree;   // "6"; "-" when F is not a polynomial; "?" when it does not load
-  std::string summary;  // the description's one line (scene/description.hpp); "" if none
+  std::string degree;       // "6"; "-" when F is not a polynomial; "?" when it does not load
+  std::string summary;      // the description's one line (scene/description.hpp); "" if none
   std::string description;  // the whole comment block
   // examples/images/NAME.png (thesis/N-x: thesis-N-x.png), the gallery's picture of it;
   // empty when there is none.

@@ -58,8 +58,9 @@ ImportResult loadJsurf(const std::filesystem::path& path) {
 bool isJsurfPath(std::string_view path) {
   constexpr std::string_view ext = ".jsurf";
   if (path.size() < ext.size()) return false;
-  return std::equal(ext.begin(), ext.end(), path.end() - static_cast<std::ptrdiff_t>(ext.size()),
-                    [](char a, char b) { return a == std::tolower(static_cast<unsigned char>(b)); });
+  return std::equal(
+      ext.begin(), ext.end(), path.end() - static_cast<std::ptrdiff_t>(ext.size()),
+      [](char a, char b) { return a == std::tolower(static_cast<unsigned char>(b)); });
 }
 
 namespace {
@@ -96,7 +97,8 @@ std::variant<Exported, std::string> exportJsurf(const Scene& scene) {
   SurferScene s = toSurferScene(scene, out.warnings);
   s.formula = formula.text;
   if (std::abs(s.view.scaleFactor) > 2)
-    out.warnings.push_back("SURFER's zoom goes from a clipping radius of 0.01 to 100; it will clamp this one");
+    out.warnings.push_back(
+        "SURFER's zoom goes from a clipping radius of 0.01 to 100; it will clamp this one");
   out.text = writeSurferScene(s);
   return out;
 }

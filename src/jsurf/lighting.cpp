@@ -13,7 +13,9 @@ namespace {
 
 // A SURFER light nobody touched (all eight are listed in every file SURFER writes): it is
 // left out on import and written back on export as padding.
-bool isUnusedSlot(const SurferLight& l) { return l == SurferLight{}; }
+bool isUnusedSlot(const SurferLight& l) {
+  return l == SurferLight{};
+}
 
 double unit(double v, const char* what, std::vector<std::string>& notes) {
   if (v > 1) notes.push_back(std::string(what) + " above 1 is taken as 1");
@@ -42,8 +44,9 @@ void lightingToScene(const SurferScene& s, const Mat4& cameraToWorld, RenderSett
   out.materials.front = toMaterial(s.front, notes);
   out.materials.back = toMaterial(s.back, notes);
   if (s.back.ambient != s.front.ambient)
-    notes.push_back("SURFER lights back faces with the front material's ambient intensity; "
-                    "zeroset uses the back material's own");
+    notes.push_back(
+        "SURFER lights back faces with the front material's ambient intensity; "
+        "zeroset uses the back material's own");
   out.lights.ambient = 1.0;
   out.lights.sources.clear();
   for (const SurferLight& l : s.lights) {
@@ -73,8 +76,8 @@ void lightingToSurfer(const RenderSettings& r, const Mat4& worldToCamera, double
     if (l.kind == LightKind::Directional) {
       const double n = std::sqrt(l.direction[0] * l.direction[0] + l.direction[1] * l.direction[1] +
                                  l.direction[2] * l.direction[2]);
-      const Vec3 d = n > 0 ? Vec3{l.direction[0] / n, l.direction[1] / n, l.direction[2] / n}
-                           : Vec3{0, 0, -1};
+      const Vec3 d =
+          n > 0 ? Vec3{l.direction[0] / n, l.direction[1] / n, l.direction[2] / n} : Vec3{0, 0, -1};
       for (int a = 0; a < 3; ++a) world[a] = -d[a] * kFarAway * radius;
       notes.push_back("directional light " + std::to_string(slot + 1) +
                       " becomes a SURFER point light far away in the same direction");

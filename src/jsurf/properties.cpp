@@ -9,8 +9,12 @@
 namespace zs::jsurf {
 namespace {
 
-bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\f'; }
-bool isLineEnd(char c) { return c == '\n' || c == '\r'; }
+bool isBlank(char c) {
+  return c == ' ' || c == '\t' || c == '\f';
+}
+bool isLineEnd(char c) {
+  return c == '\n' || c == '\r';
+}
 
 // One character of the logical line with where it came from.
 struct Char {
@@ -153,12 +157,25 @@ std::string escapeProperty(std::string_view text, bool isKey) {
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
     switch (c) {
-      case '\\': out += "\\\\"; break;
-      case '\t': out += "\\t"; break;
-      case '\n': out += "\\n"; break;
-      case '\r': out += "\\r"; break;
-      case '\f': out += "\\f"; break;
-      case '=': case ':': case '#': case '!':
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
+      case '\f':
+        out += "\\f";
+        break;
+      case '=':
+      case ':':
+      case '#':
+      case '!':
         out += '\\';
         out += c;
         break;
@@ -167,7 +184,8 @@ std::string escapeProperty(std::string_view text, bool isKey) {
         if (isKey || i == 0) out += '\\';
         out += ' ';
         break;
-      default: out += c;
+      default:
+        out += c;
     }
   }
   return out;

@@ -17,9 +17,9 @@ struct TextPos {
 
 struct Property {
   std::string key;
-  std::string value;               // escapes decoded (\uXXXX becomes UTF-8)
+  std::string value;  // escapes decoded (\uXXXX becomes UTF-8)
   TextPos keyPos;
-  std::vector<TextPos> valuePos;   // one per byte of `value`, plus one past its end
+  std::vector<TextPos> valuePos;  // one per byte of `value`, plus one past its end
 };
 
 std::vector<Property> readProperties(std::string_view text);

@@ -67,17 +67,24 @@ class Reader {
     for (const Property& p : props) {
       if (seen.at(p.key) != static_cast<std::size_t>(&p - props.data())) continue;
       if (!error_) {
-        if (p.key == "surface_equation") hasFormula = formula(p);
-        else if (p.key.starts_with(kParamPrefix)) param(p);
-        else if (p.key == "camera_transform") cameraTransformGiven = matrix(p, out_.scene.view.cameraTransform);
-        else if (p.key == "rotation_matrix") matrix(p, rotation);
-        else if (p.key == "transform_matrix") matrix(p, transform);
-        else other(p);
+        if (p.key == "surface_equation")
+          hasFormula = formula(p);
+        else if (p.key.starts_with(kParamPrefix))
+          param(p);
+        else if (p.key == "camera_transform")
+          cameraTransformGiven = matrix(p, out_.scene.view.cameraTransform);
+        else if (p.key == "rotation_matrix")
+          matrix(p, rotation);
+        else if (p.key == "transform_matrix")
+          matrix(p, transform);
+        else
+          other(p);
       }
     }
     if (error_) return *error_;
     if (!hasFormula)
-      return values_.nowhere("surface_equation", "no surface_equation: a .jsurf file needs the formula",
+      return values_.nowhere("surface_equation",
+                             "no surface_equation: a .jsurf file needs the formula",
                              "add a line such as surface_equation=x^2+y^2+z^2-1");
     SurferView& view = out_.scene.view;
     view.rotation = multiply(transform, rotation);
@@ -116,8 +123,10 @@ class Reader {
       return;
     }
     SceneError e;
-    if (auto v = values_.number(p, e)) out_.scene.params.emplace_back(name, *v);
-    else fail(std::move(e));
+    if (auto v = values_.number(p, e))
+      out_.scene.params.emplace_back(name, *v);
+    else
+      fail(std::move(e));
   }
 
   bool matrix(const Property& p, Mat4& m) {
@@ -136,7 +145,8 @@ class Reader {
       return false;
     }
     if (!invertAffine(m, inverse)) {
-      fail(values_.at(p, 0, p.key + " cannot be inverted", "a rotation or camera placement is invertible"));
+      fail(values_.at(p, 0, p.key + " cannot be inverted",
+                      "a rotation or camera placement is invertible"));
       return false;
     }
     return true;
@@ -187,10 +197,11 @@ class Reader {
       isA = p.value == a;
       return;
     }
-    fail(values_.at(p, 0, p.key + " is '" + p.value + "'; SURFER knows " + std::string(a) + " and " +
-                               std::string(b),
-                    "write " + std::string(a) + " or " + std::string(b) + " in capitals",
-                    static_cast<int>(std::max<std::size_t>(1, p.value.size()))));
+    fail(values_.at(
+        p, 0,
+        p.key + " is '" + p.value + "'; SURFER knows " + std::string(a) + " and " + std::string(b),
+        "write " + std::string(a) + " or " + std::string(b) + " in capitals",
+        static_cast<int>(std::max<std::size_t>(1, p.value.size()))));
   }
 
   bool light(const Property& p) {
@@ -201,10 +212,14 @@ class Reader {
       const char digit = p.key.back();
       if (digit < '0' || digit >= '0' + kSurferLights) return false;
       SurferLight& l = out_.scene.lights[static_cast<std::size_t>(digit - '0')];
-      if (field == "status") word(p, "ON", "OFF", l.on);
-      else if (field == "position") { if (auto v = vec3(p)) l.position = *v; }
-      else if (field == "color") color(p, l.color);
-      else nonNegative(p, l.intensity);
+      if (field == "status")
+        word(p, "ON", "OFF", l.on);
+      else if (field == "position") {
+        if (auto v = vec3(p)) l.position = *v;
+      } else if (field == "color")
+        color(p, l.color);
+      else
+        nonNegative(p, l.intensity);
       return true;
     }
     return false;
@@ -216,12 +231,18 @@ class Reader {
       if (!p.key.starts_with(prefix)) continue;
       SurferMaterial& m = front ? out_.scene.front : out_.scene.back;
       const std::string field = p.key.substr(prefix.size());
-      if (field == "color") color(p, m.color);
-      else if (field == "ambient_intensity") nonNegative(p, m.ambient);
-      else if (field == "diffuse_intensity") nonNegative(p, m.diffuse);
-      else if (field == "specular_intensity") nonNegative(p, m.specular);
-      else if (field == "shininess") nonNegative(p, m.shininess);
-      else return false;
+      if (field == "color")
+        color(p, m.color);
+      else if (field == "ambient_intensity")
+        nonNegative(p, m.ambient);
+      else if (field == "diffuse_intensity")
+        nonNegative(p, m.diffuse);
+      else if (field == "specular_intensity")
+        nonNegative(p, m.specular);
+      else if (field == "shininess")
+        nonNegative(p, m.shininess);
+      else
+        return false;
       return true;
     }
     return false;
@@ -231,21 +252,27 @@ class Reader {
     SurferView& view = out_.scene.view;
     if (p.key == "scale_factor") {
       if (auto v = number(p)) view.scaleFactor = *v;
-      if (std::abs(view.scaleFactor) > 100) fail(values_.at(p, 0, "scale_factor is the zoom's log10; |scale_factor| <= 100"));
+      if (std::abs(view.scaleFactor) > 100)
+        fail(values_.at(p, 0, "scale_factor is the zoom's log10; |scale_factor| <= 100"));
     } else if (p.key == "camera_type") {
       word(p, "ORTHOGRAPHIC_CAMERA", "PERSPECTIVE_CAMERA", view.orthographic);
     } else if (p.key == "camera_fov_y") {
       auto v = number(p);
-      if (v && (*v <= 0 || *v >= 180)) fail(values_.at(p, 0, "camera_fov_y must lie in (0, 180) degrees"));
-      else if (v) view.fovY = *v;
+      if (v && (*v <= 0 || *v >= 180))
+        fail(values_.at(p, 0, "camera_fov_y must lie in (0, 180) degrees"));
+      else if (v)
+        view.fovY = *v;
     } else if (p.key == "camera_height") {
       auto v = number(p);
-      if (v && *v <= 0) fail(values_.at(p, 0, "camera_height must be above 0"));
-      else if (v) view.height = *v;
+      if (v && *v <= 0)
+        fail(values_.at(p, 0, "camera_height must be above 0"));
+      else if (v)
+        view.height = *v;
     } else if (p.key == "background_color") {
       color(p, out_.scene.background);
     } else if (p.key == "surface_transform_matrix") {
-      warn(values_.atKey(p, "surface_transform_matrix is not supported (SURFER ignores it too); ignored"));
+      warn(values_.atKey(
+          p, "surface_transform_matrix is not supported (SURFER ignores it too); ignored"));
     } else if (!light(p) && !material(p)) {
       const std::string near = closestKey(p.key);
       warn(values_.atKey(p, "unknown key " + p.key + "; ignored (SURFER ignores it too)",
@@ -262,9 +289,9 @@ class Reader {
 
 const std::vector<std::string>& surferKeys() {
   static const std::vector<std::string> keys = [] {
-    std::vector<std::string> k{"surface_equation", "scale_factor",      "rotation_matrix",
-                               "transform_matrix", "camera_type",       "camera_fov_y",
-                               "camera_height",    "camera_transform",  "background_color"};
+    std::vector<std::string> k{"surface_equation", "scale_factor",     "rotation_matrix",
+                               "transform_matrix", "camera_type",      "camera_fov_y",
+                               "camera_height",    "camera_transform", "background_color"};
     for (const char* side : {"front_material_", "back_material_"})
       for (std::string_view f : kMaterialFields) k.push_back(side + std::string(f));
     for (int i = 0; i < kSurferLights; ++i)

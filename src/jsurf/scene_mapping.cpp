@@ -38,11 +38,13 @@ SurferScene toSurferScene(const Scene& scene, std::vector<std::string>& notes) {
       sum += half * half;
     }
     radius = std::sqrt(sum);
-    notes.push_back("SURFER clips to a sphere: the domain box becomes the ball through its corners, radius " +
-                    std::to_string(radius));
+    notes.push_back(
+        "SURFER clips to a sphere: the domain box becomes the ball through its corners, radius " +
+        std::to_string(radius));
   }
   if (center[0] != 0 || center[1] != 0 || center[2] != 0)
-    notes.push_back("SURFER's clipping sphere is centred at the origin; the domain's centre is not kept");
+    notes.push_back(
+        "SURFER's clipping sphere is centred at the origin; the domain's centre is not kept");
   const Camera& cam = scene.render.camera;
   s.view = toSurfer(cam, radius);
   Mat4 worldToCamera = identity4();

@@ -15,8 +15,8 @@ namespace zs::jsurf {
 inline constexpr int kSurferLights = 8;  // AlgebraicSurfaceRenderer.MAX_LIGHTS
 
 struct SurferLight {
-  bool on = false;           // SURFER switches every light off before reading a file
-  Vec3 position{0, 0, 0};    // camera space: the lights move with the camera
+  bool on = false;         // SURFER switches every light off before reading a file
+  Vec3 position{0, 0, 0};  // camera space: the lights move with the camera
   Vec3 color{1, 1, 1};
   double intensity = 1.0;
 

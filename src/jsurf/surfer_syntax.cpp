@@ -10,9 +10,9 @@ namespace {
 
 constexpr int kMaxDepth = 200;
 
-constexpr std::array<std::string_view, 13> kFunctions{
-    "sin", "cos", "tan", "asin", "acos", "atan", "exp", "log", "sqrt", "ceil", "floor",
-    "abs", "sign"};
+constexpr std::array<std::string_view, 13> kFunctions{"sin",   "cos", "tan", "asin", "acos",
+                                                      "atan",  "exp", "log", "sqrt", "ceil",
+                                                      "floor", "abs", "sign"};
 
 enum class Tok { Number, Integer, Name, Op, End, Bad };
 
@@ -22,8 +22,12 @@ struct Token {
   std::string_view text;
 };
 
-bool isLetter(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool isDigit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+bool isLetter(char c) {
+  return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
+}
+bool isDigit(char c) {
+  return std::isdigit(static_cast<unsigned char>(c)) != 0;
+}
 
 // What a subexpression is, for the walker's checks.
 struct Value {
@@ -170,7 +174,8 @@ class Recognizer {
         next();
         Value arg;
         if (!add(arg, depth + 1)) return false;
-        if (!isOp(')')) return fail(tok_.begin, "SURFER expects ')' (its functions take one argument)");
+        if (!isOp(')'))
+          return fail(tok_.begin, "SURFER expects ')' (its functions take one argument)");
         next();
         if (arg.variable)
           return fail(name.begin, "SURFER applies '" + std::string(name.text) +
@@ -193,10 +198,12 @@ class Recognizer {
       next();
       return true;
     }
-    if (tok_.kind == Tok::End) return fail(tok_.begin, "the formula ends where SURFER expects an operand");
+    if (tok_.kind == Tok::End)
+      return fail(tok_.begin, "the formula ends where SURFER expects an operand");
     if (tok_.kind == Tok::Bad && isDigit(tok_.text[0]))
       return fail(tok_.begin, "SURFER does not read integers with a leading zero");
-    return fail(tok_.begin, "SURFER does not read '" + std::string(tok_.text.substr(0, 1)) + "' here");
+    return fail(tok_.begin,
+                "SURFER does not read '" + std::string(tok_.text.substr(0, 1)) + "' here");
   }
 
   std::string_view s_;

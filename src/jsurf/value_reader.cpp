@@ -7,7 +7,9 @@
 namespace zs::jsurf {
 namespace {
 
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f'; }
+bool isSpace(char c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f';
+}
 
 }  // namespace
 
@@ -85,10 +87,10 @@ std::optional<std::vector<double>> ValueReader::numbers(const Property& p, std::
     i = end;
   }
   if (out.size() < count) {
-    error = at(p, v.size(),
-               p.key + " takes " + std::to_string(count) + " numbers, found " +
-                   std::to_string(out.size()),
-               count == 16 ? "a 4x4 matrix is 16 numbers, row by row" : "");
+    error = at(
+        p, v.size(),
+        p.key + " takes " + std::to_string(count) + " numbers, found " + std::to_string(out.size()),
+        count == 16 ? "a 4x4 matrix is 16 numbers, row by row" : "");
     return std::nullopt;
   }
   return out;

@@ -18,7 +18,9 @@ std::string num(double v) {
   return s;
 }
 
-std::string vec(const Vec3& v) { return num(v[0]) + " " + num(v[1]) + " " + num(v[2]); }
+std::string vec(const Vec3& v) {
+  return num(v[0]) + " " + num(v[1]) + " " + num(v[2]);
+}
 
 std::string matrix(const Mat4& m) {
   std::string s;

@@ -7,7 +7,8 @@ namespace {
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
+    s.remove_suffix(1);
   return s;
 }
 
@@ -24,7 +25,8 @@ std::string sceneDescription(std::string_view text) {
     if (line.empty() || line.front() != '#') break;
     started = true;
     const std::size_t hashes = line.find_first_not_of('#');
-    const std::string_view words = trim(hashes == std::string_view::npos ? "" : line.substr(hashes));
+    const std::string_view words =
+        trim(hashes == std::string_view::npos ? "" : line.substr(hashes));
     if (words.empty()) continue;
     if (!out.empty()) out += ' ';
     out += words;
@@ -35,14 +37,14 @@ std::string sceneDescription(std::string_view text) {
 std::string summaryLine(std::string_view text) {
   const std::string description = sceneDescription(text);
   // The first comment line, as sceneDescription strips it.
-  const std::string first = sceneDescription(text.substr(0, text.find('#') == std::string_view::npos
-                                                                ? 0
-                                                                : text.find('\n', text.find('#'))));
+  const std::string first = sceneDescription(text.substr(
+      0, text.find('#') == std::string_view::npos ? 0 : text.find('\n', text.find('#'))));
   if (first.find(" \u2014 ") != std::string::npos && first.find(": ") != std::string::npos)
     return first;
   std::string_view s = description;
   for (std::size_t i = 0; i + 1 < s.size(); ++i) {
-    if (s[i] == '.' && (s[i + 1] == ' ' || s[i + 1] == '\t')) return std::string(s.substr(0, i + 1));
+    if (s[i] == '.' && (s[i + 1] == ' ' || s[i + 1] == '\t'))
+      return std::string(s.substr(0, i + 1));
   }
   return std::string(s);
 }

@@ -107,7 +107,8 @@ TEST(JsurfImport, LooksLikeSurfer) {
 
 TEST(JsurfImport, PerspectiveCameraWithoutTransformSitsWhereTheSphereFits) {
   const ImportResult r = importJsurf(
-      "surface_equation=x^2+y^2-z^2-0.25\ncamera_type=PERSPECTIVE_CAMERA\ncamera_fov_y=60\n", "p.jsurf");
+      "surface_equation=x^2+y^2-z^2-0.25\ncamera_type=PERSPECTIVE_CAMERA\ncamera_fov_y=60\n",
+      "p.jsurf");
   ASSERT_TRUE(std::holds_alternative<Imported>(r));
   const Camera c = std::get<Imported>(r).scene.render.camera;
   EXPECT_EQ(c.projection, Projection::Perspective);
@@ -123,7 +124,8 @@ TEST(JsurfImport, UnknownKeyIsAWarningWithItsPlaceAndAHint) {
   EXPECT_EQ(w.column, 1);
   EXPECT_NE(w.message.find("camera_heigth"), std::string::npos);
   EXPECT_NE(w.hint.find("camera_height"), std::string::npos);
-  EXPECT_NE(formatWarning(w).find("misspelled-key.jsurf:2:1: warning: unknown key"), std::string::npos);
+  EXPECT_NE(formatWarning(w).find("misspelled-key.jsurf:2:1: warning: unknown key"),
+            std::string::npos);
 }
 
 TEST(JsurfImport, ShortMatrixIsAnErrorAtItsEnd) {

@@ -1,8 +1,8 @@
 // Java .properties reading: separators, comments, continued lines, escapes, and the place
 // of every value byte in the file.
-#include <gtest/gtest.h>
-
 #include "jsurf/properties.hpp"
+
+#include <gtest/gtest.h>
 
 namespace zs::jsurf {
 namespace {

@@ -25,9 +25,15 @@ std::string damage(std::string text, std::mt19937& rng) {
   for (int i = 0; i < edits && !text.empty(); ++i) {
     const std::size_t at = rng() % text.size();
     switch (rng() % 3) {
-      case 0: text[at] = kBytes[rng() % kBytes.size()]; break;
-      case 1: text.erase(at, 1 + rng() % 8); break;
-      default: text.insert(at, text.substr(at, 1 + rng() % 16)); break;
+      case 0:
+        text[at] = kBytes[rng() % kBytes.size()];
+        break;
+      case 1:
+        text.erase(at, 1 + rng() % 8);
+        break;
+      default:
+        text.insert(at, text.substr(at, 1 + rng() % 16));
+        break;
     }
   }
   return text;
@@ -44,7 +50,8 @@ TEST(JsurfRobustness, DamagedFilesAreRefusedOrImportedNeverCrash) {
     if (const auto* err = std::get_if<SceneError>(&r)) {
       ++refused;
       EXPECT_FALSE(err->message.empty());
-      EXPECT_EQ(err->message.find("a bug in zeroset"), std::string::npos) << err->message << "\n" << text;
+      EXPECT_EQ(err->message.find("a bug in zeroset"), std::string::npos) << err->message << "\n"
+                                                                          << text;
       continue;
     }
     ++imported;

@@ -27,7 +27,8 @@ Scene roundTrip(const Scene& s) {
 }
 
 void expectNear(const Vec3& a, const Vec3& b, const char* what) {
-  for (int i = 0; i < 3; ++i) EXPECT_NEAR(a[i], b[i], 1e-9 * (1 + std::abs(b[i]))) << what << "[" << i << "]";
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(a[i], b[i], 1e-9 * (1 + std::abs(b[i]))) << what << "[" << i << "]";
 }
 
 void expectSurferKeysEqual(const Scene& a, const Scene& b) {

@@ -1,8 +1,8 @@
 // Which formulas SURFER's parser reads (jsurf's AlgebraicExpression.g and its tree walker),
 // and where the first thing it would refuse stands.
-#include <gtest/gtest.h>
-
 #include "jsurf/surfer_syntax.hpp"
+
+#include <gtest/gtest.h>
 
 namespace zs::jsurf {
 namespace {

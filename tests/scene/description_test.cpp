@@ -1,13 +1,14 @@
 // The description comment at the top of a .surf file, and its one-line summary.
-#include <gtest/gtest.h>
-
 #include "scene/description.hpp"
+
+#include <gtest/gtest.h>
 
 namespace zs {
 namespace {
 
 TEST(SceneDescription, LeadingCommentBlockAsOneParagraph) {
-  EXPECT_EQ(sceneDescription("\n# The Barth sextic, degree 6.\n#   Icosahedral.\n#\nformula = \"x\"\n# late"),
+  EXPECT_EQ(sceneDescription(
+                "\n# The Barth sextic, degree 6.\n#   Icosahedral.\n#\nformula = \"x\"\n# late"),
             "The Barth sextic, degree 6. Icosahedral.");
   EXPECT_EQ(sceneDescription("## Title ##\r\nformula = \"x\""), "Title ##");
 }
@@ -20,9 +21,10 @@ TEST(SceneDescription, NoneWhenTheFileDoesNotOpenWithAComment) {
 
 TEST(SceneDescription, SummaryIsTheGalleryLineWhenThereIsOne) {
   // examples/README.md's form: NAME, an em dash, the degree, a colon, one line.
-  EXPECT_EQ(summaryLine("# Barth sextic \u2014 degree 6, 65 nodes: the most a sextic can have. Really.\n"
-                        "# More.\nformula = \"x\"\n"),
-            "Barth sextic \u2014 degree 6, 65 nodes: the most a sextic can have. Really.");
+  EXPECT_EQ(
+      summaryLine("# Barth sextic \u2014 degree 6, 65 nodes: the most a sextic can have. Really.\n"
+                  "# More.\nformula = \"x\"\n"),
+      "Barth sextic \u2014 degree 6, 65 nodes: the most a sextic can have. Really.");
 }
 
 TEST(SceneDescription, SummaryIsTheFirstSentenceOtherwise) {

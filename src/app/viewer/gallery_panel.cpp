@@ -13,8 +13,9 @@ int drawGallery(GalleryPanel& g, int current) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   // Top right, beside the panel, leaving most of the surface in view.
   ImGui::SetNextWindowPos(ImVec2(std::max(8.0f, display.x - 348), 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(340, std::max(120.0f, std::min(display.y - 16, display.y * 0.6f))),
-                           ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(
+      ImVec2(340, std::max(120.0f, std::min(display.y - 16, display.y * 0.6f))),
+      ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.85f);
   if (ImGui::Begin("gallery", &g.visible)) {
     if (g.focusSearch) {
@@ -32,7 +33,8 @@ int drawGallery(GalleryPanel& g, int current) {
       if (firstMatch < 0) firstMatch = static_cast<int>(i);
       ImGui::PushID(static_cast<int>(i));
       float aspect = 1;
-      if (const std::uint32_t tex = e.picture.empty() ? 0 : g.thumbnails.texture(e.picture, aspect)) {
+      if (const std::uint32_t tex =
+              e.picture.empty() ? 0 : g.thumbnails.texture(e.picture, aspect)) {
         constexpr float kHeight = 48;
         ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(tex)),
                      ImVec2(kHeight * aspect, kHeight));
@@ -40,7 +42,8 @@ int drawGallery(GalleryPanel& g, int current) {
       }
       ImGui::BeginGroup();
       const std::string label = e.name + "   degree " + e.degree;
-      if (ImGui::Selectable(label.c_str(), static_cast<int>(i) == current)) picked = static_cast<int>(i);
+      if (ImGui::Selectable(label.c_str(), static_cast<int>(i) == current))
+        picked = static_cast<int>(i);
       if (ImGui::IsItemHovered() && !e.description.empty()) {
         ImGui::BeginTooltip();
         ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30);

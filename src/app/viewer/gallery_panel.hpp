@@ -1,8 +1,9 @@
 #pragma once
 // The viewer's gallery window (the G key): a search box over the example surfaces and the
 // list of those that match — a thumbnail of the gallery's picture where there is one, name,
-// degree and the first sentence of each description (the whole description on hover). A click on an entry, or Enter in the search box (the first
-// match), picks it; the viewer then shows it as the N/P keys would.
+// degree and the first sentence of each description (the whole description on hover). A click on an
+// entry, or Enter in the search box (the first match), picks it; the viewer then shows it as the
+// N/P keys would.
 #include <string>
 #include <vector>
 

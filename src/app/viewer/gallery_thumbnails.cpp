@@ -19,9 +19,11 @@ Image shrink(const Image& src, int width) {
   out.height = std::max(1, src.height * out.width / std::max(1, src.width));
   out.rgba.resize(std::size_t(out.width) * out.height * 4);
   for (int y = 0; y < out.height; ++y) {
-    const int y0 = y * src.height / out.height, y1 = std::max(y0 + 1, (y + 1) * src.height / out.height);
+    const int y0 = y * src.height / out.height,
+              y1 = std::max(y0 + 1, (y + 1) * src.height / out.height);
     for (int x = 0; x < out.width; ++x) {
-      const int x0 = x * src.width / out.width, x1 = std::max(x0 + 1, (x + 1) * src.width / out.width);
+      const int x0 = x * src.width / out.width,
+                x1 = std::max(x0 + 1, (x + 1) * src.width / out.width);
       unsigned sum[4] = {0, 0, 0, 0};
       for (int sy = y0; sy < y1; ++sy)
         for (int sx = x0; sx < x1; ++sx)
