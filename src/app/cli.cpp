@@ -21,6 +21,9 @@ void addCommands(CLI::App& app) {
   addViewCommand(app);
   addSingularCommand(app);
   addMeshCommand(app);
+  addImportCommand(app);
+  addExportCommand(app);
+  addGalleryCommand(app);
   // After the subcommands, so they do not inherit the top-level footer.
   app.footer(
       "Run `zeroset SUBCOMMAND --help` for a subcommand's options, or `man zeroset`. "

@@ -13,6 +13,9 @@ void addBenchCommand(CLI::App& app);
 void addViewCommand(CLI::App& app);
 void addSingularCommand(CLI::App& app);
 void addMeshCommand(CLI::App& app);
+void addImportCommand(CLI::App& app);
+void addExportCommand(CLI::App& app);
+void addGalleryCommand(CLI::App& app);
 
 // `zeroset` with no arguments: the formula prompt (repl/prompt.hpp).
 int runPrompt();

@@ -3,13 +3,15 @@
 #include <iostream>
 
 #include "app/formula_args.hpp"
+#include "jsurf/jsurf.hpp"
 #include "scene/scene_io.hpp"
 
 namespace zs::app {
 
 void addSceneOptions(CLI::App& cmd, SceneArgs& args, bool inputRequired) {
   auto* input = cmd.add_option("input", args.input,
-                               "a .surf scene file, or a formula such as \"x^2+y^2+z^2-1\"");
+                               "a .surf scene file, a SURFER .jsurf file, or a formula such as "
+                               "\"x^2+y^2+z^2-1\"");
   if (inputRequired) input->required();
   unprotectFormula(*input);
   cmd.add_option("--set", args.sets,
@@ -19,8 +21,21 @@ void addSceneOptions(CLI::App& cmd, SceneArgs& args, bool inputRequired) {
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 }
 
+namespace {
+
+// A SURFER file is imported (its warnings printed); anything else is a scene or a formula.
+SceneResult loadAnyScene(const std::string& input) {
+  if (!jsurf::isJsurfPath(input)) return loadSceneOrFormula(input);
+  jsurf::ImportResult r = jsurf::loadJsurf(input);
+  if (auto* err = std::get_if<SceneError>(&r)) return *err;
+  for (const SceneError& w : std::get<jsurf::Imported>(r).warnings) std::cerr << jsurf::formatWarning(w);
+  return std::get<jsurf::Imported>(std::move(r)).scene;
+}
+
+}  // namespace
+
 std::optional<Scene> loadSceneArgs(const SceneArgs& args) {
-  SceneResult loaded = loadSceneOrFormula(args.input);
+  SceneResult loaded = loadAnyScene(args.input);
   if (auto* err = std::get_if<SceneError>(&loaded)) {
     std::cerr << formatSceneError(*err);
     return std::nullopt;

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <variant>
 
 #include "scene/scene_io.hpp"
@@ -172,6 +173,35 @@ TEST(Viewer, ExampleKeysCycleThroughTheThesisSurfaces) {
   EXPECT_EQ(saved.formula, "x^4 - z^4 - y");
   EXPECT_EQ(saved.render.tracing.intervals, 10);
   EXPECT_DOUBLE_EQ(saved.render.tracing.epsilon, 0.01);
+}
+
+TEST(Viewer, GalleryKeySearchesTheExamplesAndOpensOne) {
+  // Three examples of our own: one without a description, to show it is listed anyway.
+  const auto root = freshDir("gallery-examples");
+  const auto examples = root / "examples";
+  std::filesystem::create_directories(examples);
+  auto write = [&](const char* name, const char* text) {
+    std::ofstream(examples / name) << text;
+  };
+  write("a-sphere.surf", "# The unit sphere, degree 2.\nformula = \"x^2 + y^2 + z^2 - 1\"\n");
+  write("b-cubic.surf", "# The Cayley cubic with its four nodes.\nformula = \"4*(x^2 + y^2 + z^2) + 16*x*y*z - 1\"\n");
+  write("c-bare.surf", "formula = \"x^4 + y^4 + z^4 - 1\"\n");
+  ViewerSession v("gallery", {"x^2 + y^2 - z^2 - 0.2"}, {{"ZS_SOURCE_DIR", root.string()}});
+  START(v);
+  v.key("g");
+  ASSERT_FALSE(v.waitLog("gallery: 3 examples").empty()) << v.log();
+  // The search box has the keyboard: typing filters, Enter opens the first match.
+  v.type("cayley");
+  v.key("Return");
+  ASSERT_FALSE(v.waitLog("example 2 of 3: b-cubic").empty()) << v.log();
+  ASSERT_FALSE(v.waitLog("built ").empty());
+  EXPECT_EQ(loadSaved(v.save()).formula, "4*(x^2 + y^2 + z^2) + 16*x*y*z - 1");
+  // The pick gives the keyboard back: N and P go on from it.
+  v.key("n");
+  ASSERT_FALSE(v.waitLog("example 3 of 3: c-bare").empty()) << v.log();
+  v.key("p p");
+  ASSERT_FALSE(v.waitLog("example 1 of 3: a-sphere").empty()) << v.log();
+  ASSERT_FALSE(v.waitLog("built x^2 + y^2 + z^2 - 1").empty()) << v.log();
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // Bash and zsh completion: subcommands, each one's options, the choices of IsMember options,
-// --set's scene keys, files and folders where an option names one, and .surf files for
+// --set's scene keys, files and folders where an option names one, and .surf and .jsurf files for
 // INPUT. A formula is typed, not completed.
 #include <sstream>
 
@@ -83,7 +83,7 @@ std::string zshAction(const OptionDoc& o) {
     case ValueKind::SceneKey:
       return "_zeroset_scene_keys";
     case ValueKind::SceneFile:
-      return "_files -g \"*.surf(-.)\"";
+      return "_files -g \"*.(surf|jsurf)(-.)\"";
     case ValueKind::None:
       return " ";
   }
@@ -185,7 +185,7 @@ std::string bashCompletion(const CliDoc& doc, const std::vector<std::string>& sc
     out << "            options=\"" << allNames(c) << "\"\n";
     const OptionDoc* input = positional(c);
     if (input && valueKind(*input) == ValueKind::SceneFile) {
-      out << "            [[ $cur == -* ]] || { _zeroset_files 'surf'; return; } ;;\n";
+      out << "            [[ $cur == -* ]] || { _zeroset_files 'surf|jsurf'; return; } ;;\n";
     } else {
       out << "            [[ $cur == -* ]] || return ;;\n";
     }

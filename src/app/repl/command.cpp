@@ -54,7 +54,7 @@ std::variant<PromptCommand, std::string> parsePromptLine(std::string_view line) 
 
 std::string promptHelp() {
   return "Type a formula F(x,y,z) (e.g. x^2 + y^2 - z^2 - 0.3) to show its zero set, or:\n"
-         "  :load FILE       load a .surf scene\n"
+         "  :load FILE       load a .surf scene or a SURFER .jsurf file\n"
          "  :save FILE       save the current scene (formula, parameters, camera, lights,\n"
          "                   every setting) as a .surf\n"
          "  :set KEY=VALUE   change one scene key, e.g. :set tracing.epsilon=0.01,\n"

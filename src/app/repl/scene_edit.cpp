@@ -5,6 +5,7 @@
 #include <system_error>
 #include <variant>
 
+#include "jsurf/jsurf.hpp"
 #include "parser/parser.hpp"
 #include "scene/scene_io.hpp"
 
@@ -19,6 +20,15 @@ std::string applyToScene(const PromptCommand& command, Scene& scene) {
       return {};
     }
     case PromptCommand::Kind::Load: {
+      if (jsurf::isJsurfPath(command.arg)) {
+        jsurf::ImportResult imported = jsurf::loadJsurf(command.arg);
+        if (auto* err = std::get_if<SceneError>(&imported)) return formatSceneError(*err);
+        // What SURFER shows differently is worth saying, but the load goes ahead.
+        for (const SceneError& w : std::get<jsurf::Imported>(imported).warnings)
+          std::fputs(jsurf::formatWarning(w).c_str(), stderr);
+        scene = std::get<jsurf::Imported>(std::move(imported)).scene;
+        return {};
+      }
       SceneResult loaded = loadScene(command.arg);
       if (auto* err = std::get_if<SceneError>(&loaded)) return formatSceneError(*err);
       scene = std::get<Scene>(std::move(loaded));

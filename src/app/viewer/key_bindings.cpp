@@ -36,6 +36,7 @@ constexpr std::array<KeyBinding, 24> kBindings{{
     {GLFW_KEY_M, 0, Action::ExportMesh, "M", "export a mesh (.stl) at the panel's mesh level"},
     {GLFW_KEY_F, 0, Action::FocusFormula, "F", "type a formula (focus the text box)"},
     {GLFW_KEY_H, 0, Action::TogglePanel, "H", "hide / show the panel"},
+    {GLFW_KEY_G, 0, Action::ToggleGallery, "G", "gallery: search the examples, pick one"},
     {GLFW_KEY_R, 0, Action::ResetView, "R", "reset camera and lights to the loaded scene"},
     {GLFW_KEY_Q, C, Action::Quit, "Ctrl+Q", "quit"},
     {GLFW_KEY_RIGHT, 0, Action::NextExample, "Right", "next example surface"},
@@ -121,6 +122,7 @@ Effect applyAction(Action action, Scene& scene, std::string& message) {
     case Action::ExportMesh:
     case Action::FocusFormula:
     case Action::TogglePanel:
+    case Action::ToggleGallery:
     case Action::ResetView:
     case Action::Quit:
       return Effect::None;

@@ -156,8 +156,8 @@ void Viewer::frame() {
   if (width <= 0 || height <= 0) return;  // minimized
 
   const auto frameStart = Clock::now();
-  // The F key that asks for the formula box also queued an 'f' character: drop it.
-  if (panel_.focusFormula) ImGui::GetIO().InputQueueCharacters.resize(0);
+  // The F (G) key that asks for the formula (search) box also queued its character: drop it.
+  if (panel_.focusFormula || gallery_.focusSearch) ImGui::GetIO().InputQueueCharacters.resize(0);
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
@@ -165,6 +165,9 @@ void Viewer::frame() {
   const Scene before = scene_;
   PanelResult panel;
   if (panelVisible_) panel = drawPanel(scene_, panel_, stats_);
+  if (gallery_.visible) {
+    if (const int picked = drawGallery(gallery_, exampleIndex_); picked >= 0) showExampleAt(picked);
+  }
   sliderActive_ = panel.sliderActive;
   if (panel.exportMesh) startMeshExport();
   if (scene_ != before) onSceneEdited(before);

@@ -17,6 +17,7 @@
 
 #include "app/repl/command.hpp"
 #include "app/viewer/examples.hpp"
+#include "app/viewer/gallery_panel.hpp"
 #include "app/viewer/key_bindings.hpp"
 #include "app/viewer/panel.hpp"
 #include "app/viewer/surface_view.hpp"
@@ -89,6 +90,8 @@ class Viewer {
   void onScroll(double dy);
   void runAction(Action action);
   void showExample(int delta);
+  void showExampleAt(int index);
+  void toggleGallery();
 
   // viewer_output.cpp: screenshots, saves and prompt commands
   void runPending();
@@ -117,6 +120,7 @@ class Viewer {
   PanelState panel_;
   PanelStats stats_;
   bool panelVisible_ = true;
+  GalleryPanel gallery_;
 
   // Tracing state: `dirty_` = the scene changed since the last trace; `refine_` = the image
   // on screen is a reduced-resolution one.

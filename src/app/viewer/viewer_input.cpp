@@ -78,7 +78,26 @@ void Viewer::onScroll(double dy) {
 void Viewer::showExample(int delta) {
   const int n = int(examples_.size());
   if (n == 0) return;
-  exampleIndex_ = exampleIndex_ < 0 ? (delta > 0 ? 0 : n - 1) : ((exampleIndex_ + delta) % n + n) % n;
+  showExampleAt(exampleIndex_ < 0 ? (delta > 0 ? 0 : n - 1) : ((exampleIndex_ + delta) % n + n) % n);
+}
+
+void Viewer::toggleGallery() {
+  gallery_.visible = !gallery_.visible;
+  if (!gallery_.visible) return;
+  // Described on first use: reading every example's file is not worth it for a viewer that
+  // never opens the gallery.
+  if (gallery_.entries.size() != examples_.size()) gallery_.entries = describeExamples(examples_);
+  gallery_.focusSearch = true;
+  if (options_.log) {
+    std::printf("gallery: %zu examples\n", gallery_.entries.size());
+    std::fflush(stdout);
+  }
+}
+
+void Viewer::showExampleAt(int index) {
+  const int n = int(examples_.size());
+  if (index < 0 || index >= n) return;
+  exampleIndex_ = index;
   const Example& example = examples_[std::size_t(exampleIndex_)];
   auto loaded = loadExample(example);
   if (auto* err = std::get_if<std::string>(&loaded)) {
@@ -90,7 +109,10 @@ void Viewer::showExample(int delta) {
   setScene(std::get<Scene>(loaded), label);
   sceneFile_ = example.file;
   stats_.status = "example " + label;
-  if (options_.log) std::printf("%s\n", stats_.status.c_str());
+  if (options_.log) {
+    std::printf("%s\n", stats_.status.c_str());
+    std::fflush(stdout);
+  }
 }
 
 void Viewer::runAction(Action action) {
@@ -107,6 +129,7 @@ void Viewer::runAction(Action action) {
       panel_.focusFormula = true;
       break;
     case Action::TogglePanel: panelVisible_ = !panelVisible_; break;
+    case Action::ToggleGallery: toggleGallery(); break;
     case Action::ResetView:
       scene_.render.camera = loaded_.render.camera;
       scene_.render.lights = loaded_.render.lights;

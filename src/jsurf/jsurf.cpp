@@ -1,0 +1,113 @@
+#include "jsurf/jsurf.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "expr/degree.hpp"
+#include "expr/printer.hpp"
+#include "jsurf/read_surfer.hpp"
+#include "jsurf/scene_mapping.hpp"
+#include "jsurf/surfer_syntax.hpp"
+#include "jsurf/write_surfer.hpp"
+#include "parser/parser.hpp"
+
+namespace zs::jsurf {
+
+ImportResult importJsurf(std::string_view text, std::string_view fileName) {
+  auto read = readSurferScene(text, fileName);
+  if (auto* err = std::get_if<SceneError>(&read)) return *err;
+  SurferRead& r = std::get<SurferRead>(read);
+  Imported out;
+  out.warnings = std::move(r.warnings);
+  std::vector<std::string> notes;
+  out.scene = toScene(r.scene, notes);
+  for (std::string& n : notes) {
+    SceneError w;
+    w.file = std::string(fileName);
+    w.message = std::move(n);
+    out.warnings.push_back(std::move(w));
+  }
+  // The mapped scene must be one a .surf file may hold; a failure here is a bug in the
+  // mapping, said as such rather than passed on to the renderer.
+  const SceneResult check = parseScene(saveScene(out.scene), fileName);
+  if (const auto* err = std::get_if<SceneError>(&check)) {
+    SceneError e = *err;
+    e.line = 0;
+    e.message = "the imported scene is not valid (a bug in zeroset's .jsurf import): " + e.message;
+    return e;
+  }
+  return out;
+}
+
+ImportResult loadJsurf(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  if (in) text << in.rdbuf();
+  if (!in || in.bad()) {
+    SceneError e;
+    e.file = path.string();
+    e.message = "cannot open .jsurf file";
+    return e;
+  }
+  return importJsurf(text.str(), path.string());
+}
+
+bool isJsurfPath(std::string_view path) {
+  constexpr std::string_view ext = ".jsurf";
+  if (path.size() < ext.size()) return false;
+  return std::equal(
+      ext.begin(), ext.end(), path.end() - static_cast<std::ptrdiff_t>(ext.size()),
+      [](char a, char b) { return a == std::tolower(static_cast<unsigned char>(b)); });
+}
+
+namespace {
+
+// The formula as SURFER must see it: the scene's own text when SURFER reads it, else
+// zeroset's normal form of it when SURFER reads that; otherwise why not.
+struct SurferFormula {
+  std::string text;
+  std::string error;  // empty when text is good
+};
+
+SurferFormula surferFormula(const std::string& formula, std::vector<std::string>& notes) {
+  const ParseResult parsed = parseFormula(formula);
+  if (const auto* err = std::get_if<ParseError>(&parsed)) return {{}, formatError(formula, *err)};
+  const Formula& f = std::get<Formula>(parsed);
+  if (!polynomialDegree(f.graph, f.root))
+    return {{}, "SURFER draws polynomials in x, y and z only; this formula is not one\n"};
+  const auto problem = checkSurferSyntax(formula);
+  if (!problem) return {formula, {}};
+  if (auto printed = print(f.graph, f.root); printed && !checkSurferSyntax(*printed)) {
+    notes.push_back("the formula is written in SURFER's syntax as " + *printed);
+    return {*printed, {}};
+  }
+  ParseError shown{{problem->offset, problem->offset + 1}, problem->message, ""};
+  return {{}, formatError(formula, shown)};
+}
+
+}  // namespace
+
+std::variant<Exported, std::string> exportJsurf(const Scene& scene) {
+  Exported out;
+  const SurferFormula formula = surferFormula(scene.formula, out.warnings);
+  if (!formula.error.empty()) return "error: cannot export to SURFER:\n" + formula.error;
+  SurferScene s = toSurferScene(scene, out.warnings);
+  s.formula = formula.text;
+  if (std::abs(s.view.scaleFactor) > 2)
+    out.warnings.push_back(
+        "SURFER's zoom goes from a clipping radius of 0.01 to 100; it will clamp this one");
+  out.text = writeSurferScene(s);
+  return out;
+}
+
+std::string formatWarning(const SceneError& warning) {
+  std::string text = formatSceneError(warning);
+  const std::size_t at = text.find(": error: ");
+  if (at != std::string::npos) text.replace(at, 9, ": warning: ");
+  return text;
+}
+
+}  // namespace zs::jsurf
