@@ -15,7 +15,7 @@ namespace {
 constexpr int S = GLFW_MOD_SHIFT;
 constexpr int C = GLFW_MOD_CONTROL;
 
-constexpr std::array<KeyBinding, 24> kBindings{{
+constexpr std::array<KeyBinding, 25> kBindings{{
     {GLFW_KEY_N, 0, Action::NextExample, "N", "next example surface"},
     {GLFW_KEY_P, 0, Action::PrevExample, "P", "previous example surface"},
     {GLFW_KEY_D, 0, Action::DirLightUp, "D", "first directional light brighter (+0.1)"},
