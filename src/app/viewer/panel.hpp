@@ -34,12 +34,15 @@ struct PanelState {
   bool focusFormula = false; // set by the F key: put the cursor in the box next frame
   std::vector<std::string> paramNames;                 // of the shown surface
   std::vector<std::pair<double, double>> paramRanges;  // slider bounds, fixed per surface
+  // Per parameter: 0 at rest, +1 or -1 while its play button sweeps it up or down.
+  std::vector<int> playing;
 };
 
 struct PanelResult {
   bool formulaEdited = false;     // the text changed (the viewer debounces the build)
   bool formulaSubmitted = false;  // Enter was pressed in the box
   bool sliderActive = false;      // a widget is being dragged: trace at reduced resolution
+  bool animating = false;         // a play button is sweeping a parameter
 };
 
 PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats);
@@ -49,6 +52,11 @@ void checkFormulaText(PanelState& state);
 
 // Slider bounds for a parameter's value: value ± max(1, |value|).
 std::pair<double, double> paramRange(double value);
+
+// One step of a play button's sweep: `value` moves by `dt / seconds` of the range [lo, hi]
+// in `direction` (+1 or -1) and turns back at either end, so a full sweep up and down takes
+// 2 * seconds. Returns the new value; `direction` is flipped at a bound.
+double sweepStep(double value, double lo, double hi, double dt, double seconds, int& direction);
 
 // The render settings, octree and domain sections (panel_settings.cpp).
 void drawSettings(Scene& scene);

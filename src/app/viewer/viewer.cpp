@@ -162,7 +162,8 @@ void Viewer::frame() {
   const Scene before = scene_;
   PanelResult panel;
   if (panelVisible_) panel = drawPanel(scene_, panel_, stats_);
-  sliderActive_ = panel.sliderActive;
+  // A sweeping play button counts as a drag: reduced-resolution traces keep it fluid.
+  sliderActive_ = panel.sliderActive || panel.animating;
   if (scene_ != before) onSceneEdited(before);
   if ((panel.formulaEdited || panel.formulaSubmitted) && panel_.formulaError.empty() &&
       panel_.formula != scene_.formula) {
