@@ -126,8 +126,8 @@ void addRenderCommand(CLI::App& app) {
                   "the PNG to write (with --animate: the folder of the frames)")
       ->required();
   cmd->add_option("--size", args->size, "image size WIDTHxHEIGHT (default: the scene's)");
-  auto* depth = cmd->add_option("--depth", args->depth,
-                  "also write a PFM with the distance from the eye to the first hit");
+  auto* depth = cmd->add_option(
+      "--depth", args->depth, "also write a PFM with the distance from the eye to the first hit");
   cmd->add_option("--backend", args->backend, "egl (default) or osmesa")
       ->check(CLI::IsMember({"egl", "osmesa"}));
   auto* animate = cmd->add_option(

@@ -47,11 +47,11 @@ TEST(Animate, KummerFamilyFramesAreNumberedAndEachIsThatParametersPicture) {
   const fs::path dir = freshDir("animate_kummer");
   const fs::path frames = dir / "frames";
   std::string out;
-  ASSERT_EQ(runZeroset({"render", example("kummer-quartic.surf").string(), "--animate",
-                        "params.mu=1.0:1.6", "--frames", "3", "--size", "64x48", "-o",
-                        frames.string()},
-                       dir, out),
-            0)
+  ASSERT_EQ(
+      runZeroset({"render", example("kummer-quartic.surf").string(), "--animate",
+                  "params.mu=1.0:1.6", "--frames", "3", "--size", "64x48", "-o", frames.string()},
+                 dir, out),
+      0)
       << out;
   for (int i = 0; i < 3; ++i)
     EXPECT_TRUE(fs::exists(frames / ("frame-000" + std::to_string(i) + ".png"))) << out;
@@ -69,8 +69,8 @@ TEST(Animate, KummerFamilyFramesAreNumberedAndEachIsThatParametersPicture) {
 
   // The middle frame is what a plain render with mu = 1.3 draws.
   const fs::path single = dir / "single.png";
-  ASSERT_EQ(runZeroset({"render", example("kummer-quartic.surf").string(), "--set",
-                        "params.mu=1.3", "--size", "64x48", "-o", single.string()},
+  ASSERT_EQ(runZeroset({"render", example("kummer-quartic.surf").string(), "--set", "params.mu=1.3",
+                        "--size", "64x48", "-o", single.string()},
                        dir, out),
             0)
       << out;
@@ -80,10 +80,10 @@ TEST(Animate, KummerFamilyFramesAreNumberedAndEachIsThatParametersPicture) {
 TEST(Animate, CameraOrbitKeepsOneOctree) {
   const fs::path dir = freshDir("animate_orbit");
   std::string out;
-  ASSERT_EQ(runZeroset({"render", example("dupin-cyclide.surf").string(), "--animate",
-                        "camera.orbit=0:90", "--frames", "2", "--size", "48x36", "-o",
-                        (dir / "orbit").string()},
-                       dir, out),
+  ASSERT_EQ(runZeroset(
+                {"render", example("dupin-cyclide.surf").string(), "--animate", "camera.orbit=0:90",
+                 "--frames", "2", "--size", "48x36", "-o", (dir / "orbit").string()},
+                dir, out),
             0)
       << out;
   EXPECT_EQ(out.find("(rebuilt)"), std::string::npos) << out;
@@ -124,9 +124,9 @@ TEST(Animate, VideoHandsTheFramePatternToFfmpegOnThePath) {
   fs::permissions(fake, fs::perms::owner_all);
   std::string out;
   const fs::path video = dir / "k.mp4";
-  ASSERT_EQ(runZeroset({"render", "x^2 + y^2 + z^2 - r", "--animate", "params.r=0.5:1",
-                        "--frames", "2", "--size", "16x12", "-o", (dir / "frames").string(),
-                        "--video", video.string(), "--fps", "12"},
+  ASSERT_EQ(runZeroset({"render", "x^2 + y^2 + z^2 - r", "--animate", "params.r=0.5:1", "--frames",
+                        "2", "--size", "16x12", "-o", (dir / "frames").string(), "--video",
+                        video.string(), "--fps", "12"},
                        dir, out, {{"PATH", bin.string()}}),
             0)
       << out;
@@ -157,18 +157,17 @@ TEST(Animate, VideoWithoutFfmpegIsRefusedBeforeRendering) {
 TEST(Animate, BadSpecsAndStrayOptionsAreErrorsWithHints) {
   const fs::path dir = freshDir("animate_errors");
   std::string out;
-  EXPECT_EQ(runZeroset({"render", "x^2+y^2+z^2-a", "--animate", "params.a=1", "-o",
-                        (dir / "f").string()},
-                       dir, out),
-            1);
+  EXPECT_EQ(
+      runZeroset({"render", "x^2+y^2+z^2-a", "--animate", "params.a=1", "-o", (dir / "f").string()},
+                 dir, out),
+      1);
   EXPECT_NE(out.find("hint: write KEY=FROM:TO"), std::string::npos) << out;
-  EXPECT_NE(runZeroset({"render", "x^2+y^2+z^2-1", "--frames", "3", "-o", "x.png"}, dir, out),
-            0)
+  EXPECT_NE(runZeroset({"render", "x^2+y^2+z^2-1", "--frames", "3", "-o", "x.png"}, dir, out), 0)
       << "--frames needs --animate";
   // -o names an existing file: it cannot be the folder of frames.
   std::ofstream(dir / "taken") << "x";
-  EXPECT_EQ(runZeroset({"render", "x^2+y^2+z^2-a", "--animate", "params.a=0.5:1", "--frames",
-                        "2", "--size", "16x12", "-o", (dir / "taken").string()},
+  EXPECT_EQ(runZeroset({"render", "x^2+y^2+z^2-a", "--animate", "params.a=0.5:1", "--frames", "2",
+                        "--size", "16x12", "-o", (dir / "taken").string()},
                        dir, out),
             1);
   EXPECT_NE(out.find("-o names a folder"), std::string::npos) << out;

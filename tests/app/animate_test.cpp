@@ -99,10 +99,19 @@ TEST(Animation, FrameNamesSortAndMatchTheFfmpegPattern) {
 
 TEST(Video, FfmpegGetsTheFramesRatePaddingAndOutput) {
   const auto args = ffmpegArgs("/usr/bin/ffmpeg", "f/frame-%04d.png", "out.mp4", 24);
-  const std::vector<std::string> expected{
-      "/usr/bin/ffmpeg", "-y", "-loglevel", "error", "-framerate", "24", "-i",
-      "f/frame-%04d.png", "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p",
-      "out.mp4"};
+  const std::vector<std::string> expected{"/usr/bin/ffmpeg",
+                                          "-y",
+                                          "-loglevel",
+                                          "error",
+                                          "-framerate",
+                                          "24",
+                                          "-i",
+                                          "f/frame-%04d.png",
+                                          "-vf",
+                                          "pad=ceil(iw/2)*2:ceil(ih/2)*2",
+                                          "-pix_fmt",
+                                          "yuv420p",
+                                          "out.mp4"};
   EXPECT_EQ(args, expected);
   const auto gif = ffmpegArgs("ffmpeg", "p", "a.gif", 10);
   EXPECT_EQ(gif.back(), "a.gif");

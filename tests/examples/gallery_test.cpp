@@ -119,21 +119,40 @@ TEST(Gallery, HoldsTheSurfacesOfIssue12) {
   std::set<std::string> names;
   for (const fs::path& file : scenes()) names.insert(fs::relative(file, examplesDir()).string());
   EXPECT_GE(names.size(), 40u);
-  for (const char* want :
-       {"thesis/1-cross-channel.surf", "thesis/2-cayley-cubic.surf", "thesis/3-cuboid.surf",
-        "thesis/4-peninsula.surf", "thesis/5-klein-quartic.surf", "thesis/6-quartic-saddle.surf",
-        "thesis/7-racor.surf", "cayley-cubic.surf", "kummer-quartic.surf",
-        "togliatti-quintic.surf", "barth-sextic.surf", "labs-septic.surf", "endrass-octic.surf",
-        "barth-decic.surf", "sarti-dodecic.surf", "chmutov-octic.surf", "clebsch-cubic.surf",
-        "roman-surface.surf", "whitney-umbrella.surf", "dupin-cyclide.surf", "ding-dong.surf",
-        "zitrus.surf", "kiss.surf", "heart.surf", "tanglecube.surf", "gyroid.surf",
-        "schwarz-p.surf", "metaballs.surf"})
+  for (const char* want : {"thesis/1-cross-channel.surf",
+                           "thesis/2-cayley-cubic.surf",
+                           "thesis/3-cuboid.surf",
+                           "thesis/4-peninsula.surf",
+                           "thesis/5-klein-quartic.surf",
+                           "thesis/6-quartic-saddle.surf",
+                           "thesis/7-racor.surf",
+                           "cayley-cubic.surf",
+                           "kummer-quartic.surf",
+                           "togliatti-quintic.surf",
+                           "barth-sextic.surf",
+                           "labs-septic.surf",
+                           "endrass-octic.surf",
+                           "barth-decic.surf",
+                           "sarti-dodecic.surf",
+                           "chmutov-octic.surf",
+                           "clebsch-cubic.surf",
+                           "roman-surface.surf",
+                           "whitney-umbrella.surf",
+                           "dupin-cyclide.surf",
+                           "ding-dong.surf",
+                           "zitrus.surf",
+                           "kiss.surf",
+                           "heart.surf",
+                           "tanglecube.surf",
+                           "gyroid.surf",
+                           "schwarz-p.surf",
+                           "metaballs.surf"})
     EXPECT_TRUE(names.count(want)) << want;
   // The record surfaces state the node counts of the literature.
   const std::vector<std::pair<std::string, int>> records{
-      {"cayley-cubic.surf", 4},     {"kummer-quartic.surf", 16}, {"togliatti-quintic.surf", 31},
-      {"barth-sextic.surf", 65},    {"labs-septic.surf", 99},    {"endrass-octic.surf", 168},
-      {"barth-decic.surf", 345},    {"sarti-dodecic.surf", 600}, {"chmutov-octic.surf", 144}};
+      {"cayley-cubic.surf", 4},  {"kummer-quartic.surf", 16}, {"togliatti-quintic.surf", 31},
+      {"barth-sextic.surf", 65}, {"labs-septic.surf", 99},    {"endrass-octic.surf", 168},
+      {"barth-decic.surf", 345}, {"sarti-dodecic.surf", 600}, {"chmutov-octic.surf", 144}};
   for (const auto& [file, nodes] : records) {
     const auto header = readHeader(readAll(examplesDir() / file));
     ASSERT_TRUE(header) << file;

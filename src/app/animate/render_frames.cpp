@@ -122,7 +122,8 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
         return 1;
       }
       if (perFrameOctree) {
-        error = markers ? rebuildAll(surface, scene, tracer) : rebuildForParams(surface, scene, tracer);
+        error =
+            markers ? rebuildAll(surface, scene, tracer) : rebuildForParams(surface, scene, tracer);
         if (!error.empty()) {
           std::cerr << "frame " << i << ": " << error;
           return 1;
@@ -139,8 +140,9 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
       std::cerr << "error: " << err << "\n";
       return 1;
     }
-    const double ms = std::chrono::duration<double, std::milli>(
-                          std::chrono::steady_clock::now() - frameStart).count();
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart)
+            .count();
     std::printf("wrote %s: %s = %.6g, %zu octree leaves%s, %.0f ms\n", path.c_str(),
                 anim->key().c_str(), anim->valueAt(i), surface.octree.leaves.size(),
                 perFrameOctree && i > 0 ? " (rebuilt)" : "", ms);

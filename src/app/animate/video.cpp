@@ -24,8 +24,8 @@ std::optional<std::string> findFfmpeg() {
 
 std::vector<std::string> ffmpegArgs(const std::string& ffmpeg, const std::string& pattern,
                                     const std::string& video, int fps) {
-  std::vector<std::string> args{ffmpeg, "-y", "-loglevel", "error", "-framerate",
-                                std::to_string(fps), "-i", pattern};
+  std::vector<std::string> args{
+      ffmpeg, "-y", "-loglevel", "error", "-framerate", std::to_string(fps), "-i", pattern};
   const std::string ext = std::filesystem::path(video).extension().string();
   if (ext != ".gif") {
     // yuv420p is what players expect; it needs even sizes.
