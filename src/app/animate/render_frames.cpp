@@ -68,6 +68,13 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
     std::cerr << error;
     return 1;
   }
+  const std::filesystem::path dir(opt.outDir);
+  if (dir.extension() == ".png") {
+    // Almost surely meant as one picture: a folder named like a file would surprise.
+    std::cerr << "error: with --animate, -o names the folder of the frames, not a PNG ('"
+              << opt.outDir << "')\nhint: e.g. -o frames/ writes frames/frame-0000.png, ...\n";
+    return 1;
+  }
   std::optional<std::string> ffmpeg;
   if (!opt.video.empty() && !(ffmpeg = findFfmpeg())) {
     std::cerr << missingFfmpegMessage(opt.outDir);
@@ -91,7 +98,6 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
   PreparedSurface surface = std::get<PreparedSurface>(std::move(prepared));
   std::cerr << surface.methodWarning << surface.singularNote;
 
-  const std::filesystem::path dir(opt.outDir);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir)) {

@@ -62,7 +62,7 @@ std::string missingFfmpegMessage(const std::string& framesDir) {
   return "error: --video needs ffmpeg, and there is no ffmpeg on the PATH\n"
          "hint: install it (Debian: sudo apt install ffmpeg), or leave out --video: the "
          "frames are written to " +
-         framesDir + "/ and any encoder can join them\n";
+         framesDir + (framesDir.ends_with('/') ? "" : "/") + " and any encoder can join them\n";
 }
 
 }  // namespace zs::app
