@@ -164,6 +164,13 @@ TEST(Animate, BadSpecsAndStrayOptionsAreErrorsWithHints) {
   EXPECT_NE(out.find("hint: write KEY=FROM:TO"), std::string::npos) << out;
   EXPECT_NE(runZeroset({"render", "x^2+y^2+z^2-1", "--frames", "3", "-o", "x.png"}, dir, out), 0)
       << "--frames needs --animate";
+  // -o names a PNG: surely a mistake, refused before anything is made.
+  EXPECT_EQ(runZeroset({"render", "x^2+y^2+z^2-a", "--animate", "params.a=0.5:1", "-o",
+                        (dir / "one.png").string()},
+                       dir, out),
+            1);
+  EXPECT_NE(out.find("-o names the folder of the frames"), std::string::npos) << out;
+  EXPECT_FALSE(fs::exists(dir / "one.png"));
   // -o names an existing file: it cannot be the folder of frames.
   std::ofstream(dir / "taken") << "x";
   EXPECT_EQ(runZeroset({"render", "x^2+y^2+z^2-a", "--animate", "params.a=0.5:1", "--frames", "2",

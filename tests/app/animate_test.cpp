@@ -122,7 +122,8 @@ TEST(Video, MissingFfmpegMessageSaysHowToGetItAndWhereTheFramesAre) {
   const std::string msg = missingFfmpegMessage("frames");
   EXPECT_NE(msg.find("error: --video needs ffmpeg"), std::string::npos);
   EXPECT_NE(msg.find("apt install ffmpeg"), std::string::npos);
-  EXPECT_NE(msg.find("frames/"), std::string::npos);
+  EXPECT_NE(msg.find("written to frames/ and"), std::string::npos);
+  EXPECT_NE(missingFfmpegMessage("out/").find("written to out/ and"), std::string::npos);
 }
 
 TEST(PlayButton, SweepsUpTurnsAtTheTopAndComesBack) {
