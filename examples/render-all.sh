@@ -3,7 +3,7 @@
 # each took. Usage: examples/render-all.sh [ZEROSET] [WIDTHxHEIGHT]
 #   ZEROSET       the zeroset binary (default: build/src/app/zeroset or
 #                 build-examples/src/app/zeroset, the first that can render)
-#   WIDTHxHEIGHT  picture size (default 400x300)
+#   WIDTHxHEIGHT  picture size (default 320x240: the pictures are committed, so they stay small)
 # A scene in a subfolder gets the folder in its picture's name: thesis/3-cuboid.surf ->
 # images/thesis-3-cuboid.png.
 set -euo pipefail
@@ -22,7 +22,7 @@ if [[ -z "$zeroset" || ! -x "$zeroset" ]]; then
   echo "render-all.sh: no zeroset binary; build it or pass its path" >&2
   exit 1
 fi
-size="${2:-400x300}"
+size="${2:-320x240}"
 mkdir -p "$here/images"
 cd "$here"
 find . -name '*.surf' | sed 's|^\./||' | sort | while read -r scene; do

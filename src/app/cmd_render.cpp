@@ -1,11 +1,14 @@
 // `zeroset render SCENE|FORMULA -o out.png [--size WxH] [--depth out.pfm]
-// [--backend egl|osmesa] [--set KEY=VALUE]...`: one picture, headless.
+// [--backend egl|osmesa] [--set KEY=VALUE]...`: one picture, headless. With
+// `--animate KEY=FROM:TO [--frames N] [--video out.mp4]`, -o is a folder of numbered
+// frames (animate/render_frames.hpp).
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <unistd.h>
 
+#include "app/animate/render_frames.hpp"
 #include "app/commands.hpp"
 #include "app/load_surface.hpp"
 #include "app/pipeline.hpp"
@@ -23,6 +26,7 @@ struct RenderArgs {
   std::string size;
   std::string depth;
   std::string backend = "egl";
+  AnimateOptions animate;  // used when animate.spec is set
 };
 
 bool parseSize(const std::string& text, int& w, int& h) {
@@ -44,6 +48,11 @@ int runRender(const RenderArgs& args) {
   if (!parseBackend(args.backend, backend)) {
     std::cerr << "error: unknown backend '" << args.backend << "'\nhint: egl or osmesa\n";
     return 1;
+  }
+  if (!args.animate.spec.empty()) {
+    AnimateOptions animate = args.animate;
+    animate.outDir = args.output;
+    return renderAnimation(*scene, animate, backend);
   }
   // Everything that can fail on the user's input fails here, before any GL context exists.
   auto prepared = prepareSurface(*scene);
@@ -117,12 +126,28 @@ void addRenderCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("render", "Render a surface to a PNG, without a window");
   auto args = std::make_shared<RenderArgs>();
   addSceneOptions(*cmd, args->scene);
-  cmd->add_option("-o,--output", args->output, "the PNG to write")->required();
+  cmd->add_option("-o,--output", args->output,
+                  "the PNG to write (with --animate: the folder of the frames)")
+      ->required();
   cmd->add_option("--size", args->size, "image size WIDTHxHEIGHT (default: the scene's)");
-  cmd->add_option("--depth", args->depth,
-                  "also write a PFM with the distance from the eye to the first hit");
+  auto* depth = cmd->add_option(
+      "--depth", args->depth, "also write a PFM with the distance from the eye to the first hit");
   cmd->add_option("--backend", args->backend, "egl (default) or osmesa")
       ->check(CLI::IsMember({"egl", "osmesa"}));
+  auto* animate = cmd->add_option(
+      "--animate", args->animate.spec,
+      "sweep KEY from FROM to TO over the frames and write numbered PNGs into the folder -o "
+      "names: params.NAME=FROM:TO, or camera.orbit=FROM:TO in degrees");
+  animate->excludes(depth);
+  cmd->add_option("--frames", args->animate.frames, "number of frames for --animate (default 60)")
+      ->check(CLI::Range(1, 100000))
+      ->needs(animate);
+  cmd->add_option("--video", args->animate.video,
+                  "also join the frames into this video with ffmpeg (which must be installed)")
+      ->needs(animate);
+  cmd->add_option("--fps", args->animate.fps, "frames per second of --video (default 30)")
+      ->check(CLI::Range(1, 240))
+      ->needs(animate);
   cmd->callback([args] { std::exit(runRender(*args)); });
 }
 

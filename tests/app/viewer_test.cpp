@@ -206,3 +206,34 @@ TEST(Viewer, GalleryKeySearchesTheExamplesAndOpensOne) {
 
 }  // namespace
 }  // namespace zs::test
+
+namespace zs::test {
+namespace {
+
+// Where the play button of the first parameter is, in window pixels (panel at (8, 8)).
+constexpr int kPlayX = 26, kPlayY = 104;
+
+TEST(Viewer, PlayButtonSweepsTheParameterUntilStopped) {
+  ViewerSession v("play", {"x^2 + y^2 + z^2 - r", "--set", "params.r=0.5"});
+  START(v);
+  v.click(kPlayX, kPlayY);
+  // Each step of the sweep is a new value: the worker builds again and again.
+  ASSERT_FALSE(v.waitLog("built x^2 + y^2 + z^2 - r").empty()) << v.log();
+  ASSERT_FALSE(v.waitLog("built x^2 + y^2 + z^2 - r").empty()) << v.log();
+  v.click(kPlayX, kPlayY);  // stop
+  // The button acts on release, a frame after the press, and a save can come between:
+  // the first save may hold the value of the frame before the sweep stopped.
+  loadSaved(v.save());
+  const Scene first = loadSaved(v.save());
+  ASSERT_EQ(first.params.size(), 1u);
+  const double r = first.params[0].second;
+  EXPECT_NE(r, 0.5) << "the sweep moved r";
+  EXPECT_GE(r, -0.5) << "within the slider's range 0.5 +- 1";
+  EXPECT_LE(r, 1.5);
+  // Stopped: the value stays.
+  const Scene second = loadSaved(v.save());
+  EXPECT_EQ(second.params, first.params);
+}
+
+}  // namespace
+}  // namespace zs::test

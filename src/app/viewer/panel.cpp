@@ -1,6 +1,7 @@
-// The panel's own sections: formula, parameters, statistics, keys. Settings widgets live in
-// panel_settings.cpp. Parameter values are edited in the scene's params list, which the
-// viewer turns into shader uniforms (and a rebuilt hierarchy).
+// The panel's own sections: formula, parameters (each slider with a play button that sweeps
+// it), statistics, keys. Settings widgets live in panel_settings.cpp. Parameter values are
+// edited in the scene's params list, which the viewer turns into shader uniforms (and a
+// rebuilt hierarchy).
 #include "app/viewer/panel.hpp"
 
 #include <imgui.h>
@@ -48,14 +49,31 @@ void drawFormula(PanelState& state, PanelResult& result) {
   }
 }
 
-void drawParams(Scene& scene, PanelState& state) {
+// Seconds for one sweep from one end of a slider to the other.
+constexpr double kSweepSeconds = 4.0;
+
+void drawParams(Scene& scene, PanelState& state, PanelResult& result) {
   if (state.paramNames.empty()) return;
   ImGui::Separator();
   ImGui::TextUnformatted("parameters");
+  state.playing.resize(state.paramNames.size(), 0);
   for (std::size_t i = 0; i < state.paramNames.size(); ++i) {
     const std::string& name = state.paramNames[i];
     double& value = paramSlot(scene, name);
     auto [lo, hi] = i < state.paramRanges.size() ? state.paramRanges[i] : paramRange(value);
+    ImGui::PushID(int(i));
+    int& playing = state.playing[i];
+    if (ImGui::Button(playing != 0 ? "||" : ">")) playing = playing != 0 ? 0 : 1;
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip(playing != 0 ? "stop" : "play: sweep %s back and forth", name.c_str());
+    ImGui::PopID();
+    ImGui::SameLine();
+    if (playing != 0) {
+      // Each step edits the scene like a drag would: the viewer shows the value through the
+      // uniforms at once and rebuilds the octree on its worker (latest wins).
+      value = sweepStep(value, lo, hi, ImGui::GetIO().DeltaTime, kSweepSeconds, playing);
+      result.animating = true;
+    }
     ImGui::SliderScalar(name.c_str(), ImGuiDataType_Double, &value, &lo, &hi, "%.4g");
   }
 }
@@ -119,6 +137,20 @@ void drawKeys() {
 
 }  // namespace
 
+double sweepStep(double value, double lo, double hi, double dt, double seconds, int& direction) {
+  if (!(hi > lo) || seconds <= 0) return value;
+  double v = std::clamp(value, lo, hi) + direction * (hi - lo) * std::max(0.0, dt) / seconds;
+  // Reflect at the bounds; a long dt (a slow frame) cannot carry it past both.
+  if (v > hi) {
+    v = std::max(lo, 2 * hi - v);
+    direction = -1;
+  } else if (v < lo) {
+    v = std::min(hi, 2 * lo - v);
+    direction = 1;
+  }
+  return v;
+}
+
 std::pair<double, double> paramRange(double value) {
   const double half = std::max(1.0, std::abs(value));
   return {value - half, value + half};
@@ -141,7 +173,7 @@ PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats) 
   ImGui::SetNextWindowBgAlpha(0.85f);
   if (ImGui::Begin("zeroset", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     drawFormula(state, result);
-    drawParams(scene, state);
+    drawParams(scene, state, result);
     drawStats(stats);
     drawLegend(stats);
     drawMeshExport(state, result);

@@ -39,6 +39,8 @@ struct PanelState {
   std::vector<std::pair<double, double>> paramRanges;  // slider bounds, fixed per surface
   int meshLevel = 7;         // grid level of "Export mesh" (docs/mesh.md)
   bool meshCap = false;      // close the solid along the domain for printing
+  // Per parameter: 0 at rest, +1 or -1 while its play button sweeps it up or down.
+  std::vector<int> playing;
 };
 
 struct PanelResult {
@@ -46,6 +48,7 @@ struct PanelResult {
   bool formulaSubmitted = false;  // Enter was pressed in the box
   bool sliderActive = false;      // a widget is being dragged: trace at reduced resolution
   bool exportMesh = false;        // the "Export mesh" button was pressed
+  bool animating = false;         // a play button is sweeping a parameter
 };
 
 PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats);
@@ -55,6 +58,11 @@ void checkFormulaText(PanelState& state);
 
 // Slider bounds for a parameter's value: value ± max(1, |value|).
 std::pair<double, double> paramRange(double value);
+
+// One step of a play button's sweep: `value` moves by `dt / seconds` of the range [lo, hi]
+// in `direction` (+1 or -1) and turns back at either end, so a full sweep up and down takes
+// 2 * seconds. Returns the new value; `direction` is flipped at a bound.
+double sweepStep(double value, double lo, double hi, double dt, double seconds, int& direction);
 
 // The render settings, octree and domain sections (panel_settings.cpp).
 void drawSettings(Scene& scene);

@@ -168,7 +168,8 @@ void Viewer::frame() {
   if (gallery_.visible) {
     if (const int picked = drawGallery(gallery_, exampleIndex_); picked >= 0) showExampleAt(picked);
   }
-  sliderActive_ = panel.sliderActive;
+  // A sweeping play button counts as a drag: reduced-resolution traces keep it fluid.
+  sliderActive_ = panel.sliderActive || panel.animating;
   if (panel.exportMesh) startMeshExport();
   if (scene_ != before) onSceneEdited(before);
   if ((panel.formulaEdited || panel.formulaSubmitted) && panel_.formulaError.empty() &&

@@ -92,6 +92,7 @@ void Viewer::takeBuild() {
       if (names != panel_.paramNames) {
         panel_.paramNames = names;
         panel_.paramRanges.clear();
+        panel_.playing.clear();  // a new surface's parameters start at rest
         for (double v : surface.params) panel_.paramRanges.push_back(paramRange(v));
       }
       // Every parameter gets an entry, so the sliders edit it and a save records it.

@@ -1,0 +1,175 @@
+#include "app/animate/render_frames.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <system_error>
+#include <variant>
+
+#include "app/animate/animation.hpp"
+#include "app/animate/video.hpp"
+#include "app/load_surface.hpp"
+#include "app/pipeline.hpp"
+#include "interval/sphere_builder.hpp"
+#include "render/ray_tracer.hpp"
+#include "scene/scene_io.hpp"
+
+namespace zs::app {
+
+namespace {
+
+int digitsFor(int frames) {
+  int digits = 4;
+  for (int n = 10000; n < frames; n *= 10) ++digits;
+  return digits;
+}
+
+// A new parameter value for a surface whose shader stays: F's parameters are uniforms, so
+// only the octree and the hierarchy are built again, and uploaded.
+std::string rebuildForParams(PreparedSurface& s, const Scene& scene, RayTracer& tracer) {
+  s.params = paramValues(scene, s.formula.graph);
+  OctreeResult tree =
+      buildOctree(s.formula, s.params, toBox(scene.domain), scene.octree, toBall(scene.domain));
+  if (auto* err = std::get_if<OctreeError>(&tree)) return "error: " + err->message + "\n";
+  s.octree = std::get<Octree>(std::move(tree));
+  s.hierarchy = buildSphereHierarchy(s.octree);
+  if (std::string err = tracer.setHierarchy(s.hierarchy.packed()); !err.empty())
+    return "error: " + err + "\n";
+  tracer.setParams(s.paramsAsFloats());
+  return {};
+}
+
+// The singular-point markers are constants of the shader: with them on, a new parameter
+// value needs the whole surface again (the tracer recompiles only if the text changed).
+std::string rebuildAll(PreparedSurface& s, const Scene& scene, RayTracer& tracer) {
+  auto prepared = prepareSurface(scene, /*validate=*/false);
+  if (auto* err = std::get_if<std::string>(&prepared)) return *err;
+  s = std::get<PreparedSurface>(std::move(prepared));
+  return loadSurface(tracer, s);
+}
+
+}  // namespace
+
+std::string frameFileName(int i, int frames) {
+  char name[64];
+  std::snprintf(name, sizeof name, "frame-%0*d.png", digitsFor(frames), i);
+  return name;
+}
+
+std::string frameFilePattern(int frames) {
+  return "frame-%0" + std::to_string(digitsFor(frames)) + "d.png";
+}
+
+int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backend) {
+  std::string error;
+  const std::optional<Animation> anim = parseAnimation(opt.spec, opt.frames, error);
+  if (!anim) {
+    std::cerr << error;
+    return 1;
+  }
+  const std::filesystem::path dir(opt.outDir);
+  if (dir.extension() == ".png") {
+    // Almost surely meant as one picture: a folder named like a file would surprise.
+    std::cerr << "error: with --animate, -o names the folder of the frames, not a PNG ('"
+              << opt.outDir << "')\nhint: e.g. -o frames/ writes frames/frame-0000.png, ...\n";
+    return 1;
+  }
+  std::optional<std::string> ffmpeg;
+  if (!opt.video.empty() && !(ffmpeg = findFfmpeg())) {
+    std::cerr << missingFfmpegMessage(opt.outDir);
+    return 1;
+  }
+  Scene scene;
+  if (std::string err = frameScene(*anim, base, 0, scene); !err.empty()) {
+    std::cerr << err;
+    return 1;
+  }
+  const bool perFrameOctree = changesOctree(*anim, base);
+  if (anim->kind == Animation::Kind::Param && !perFrameOctree) {
+    std::cerr << "note: the formula does not use the parameter '" << anim->param
+              << "': every frame shows the same surface\n";
+  }
+  auto prepared = prepareSurface(scene);
+  if (auto* err = std::get_if<std::string>(&prepared)) {
+    std::cerr << *err;
+    return 1;
+  }
+  PreparedSurface surface = std::get<PreparedSurface>(std::move(prepared));
+  std::cerr << surface.methodWarning << surface.singularNote;
+
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) {
+    std::cerr << "error: cannot make the folder '" << opt.outDir << "' for the frames"
+              << (ec ? ": " + ec.message() : std::string(": a file of that name exists"))
+              << "\nhint: with --animate, -o names a folder, e.g. -o frames/\n";
+    return 1;
+  }
+  ContextResult ctx = createHeadlessContext(backend);
+  if (!ctx.context) {
+    std::cerr << "error: " << ctx.error << "\n"
+              << (backend == Backend::Egl ? "hint: try --backend osmesa\n" : "");
+    return 1;
+  }
+  RayTracer tracer;
+  if (std::string err = loadSurface(tracer, surface); !err.empty()) {
+    std::cerr << err;
+    return 1;
+  }
+
+  const bool markers = base.render.singular.enabled;
+  const auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < anim->frames; ++i) {
+    const auto frameStart = std::chrono::steady_clock::now();
+    if (i > 0) {
+      if (std::string err = frameScene(*anim, base, i, scene); !err.empty()) {
+        std::cerr << err;
+        return 1;
+      }
+      if (perFrameOctree) {
+        error =
+            markers ? rebuildAll(surface, scene, tracer) : rebuildForParams(surface, scene, tracer);
+        if (!error.empty()) {
+          std::cerr << "frame " << i << ": " << error;
+          return 1;
+        }
+      }
+    }
+    Frame frame = tracer.render(scene.render, scene.domain, scene.width, scene.height);
+    if (!frame.error.empty()) {
+      std::cerr << "error: frame " << i << ": " << frame.error << "\n";
+      return 1;
+    }
+    const std::string path = (dir / frameFileName(i, anim->frames)).string();
+    if (std::string err = writePng(path, frame.color); !err.empty()) {
+      std::cerr << "error: " << err << "\n";
+      return 1;
+    }
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart)
+            .count();
+    std::printf("wrote %s: %s = %.6g, %zu octree leaves%s, %.0f ms\n", path.c_str(),
+                anim->key().c_str(), anim->valueAt(i), surface.octree.leaves.size(),
+                perFrameOctree && i > 0 ? " (rebuilt)" : "", ms);
+    std::fflush(stdout);
+  }
+  const double totalMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  std::printf("wrote %d frames (%dx%d) to %s in %.0f ms, %s; %s\n", anim->frames, scene.width,
+              scene.height, opt.outDir.c_str(), totalMs,
+              perFrameOctree ? "octree rebuilt per frame (the parameter is in F)"
+                             : "octree built once (F does not change)",
+              ctx.context->backendName().c_str());
+  if (ffmpeg) {
+    const std::string pattern = (dir / frameFilePattern(anim->frames)).string();
+    if (std::string err = encodeVideo(*ffmpeg, pattern, opt.video, opt.fps); !err.empty()) {
+      std::cerr << "error: " << err << "\n";
+      return 1;
+    }
+    std::printf("wrote %s (%d frames at %d fps)\n", opt.video.c_str(), anim->frames, opt.fps);
+  }
+  return 0;
+}
+
+}  // namespace zs::app
