@@ -1,7 +1,7 @@
 // ---- raytrace_bernstein.frag.glsl (render stage): exact root isolation for polynomial F
 // (tracing.method = "bernstein", docs/renderer.md). Follows raytrace_main.frag.glsl and the
 // generated ray polynomial block (zs_FPoly and the Bernstein kernels of degree zs_DEGREE)
-// and defines rtMarch():
+// and defines rtFirstRoot() (raytrace_first_roots.frag.glsl, after it, defines rtMarch()):
 //  1. The ray is clipped to the domain (box or ball) and to the box of the octree's leaves. On that
 //     segment f(s) = F(o + t(s) d), s in [0, 1], comes from ONE call of zs_FPoly (a Taylor
 //     expansion about the segment's midpoint), in the Bernstein basis.
@@ -103,37 +103,5 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   if (isolated && b[0] == 0.0) x = lo;
   tHit = ta + len * x;
   tAfter = ta + len * hi;
-  return found;
-}
-
-int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS],
-            out vec4 hitG[RT_MAX_HITS]) {
-  for (int m = 0; m < RT_MAX_HITS; ++m) { hitT[m] = 0.0; hitG[m] = vec4(0.0); }
-  vec3 inv = safeInverse(d);
-  vec2 dom = domainInterval(o, d, inv);
-  vec2 box = slab(rt.rootMin - rt.pad, rt.rootMax + rt.pad, o, inv);
-  float t = max(max(dom.x, box.x), tStart), tEnd = min(dom.y, box.y);
-  int found = 0;
-#if RT_MAX_HITS == 1
-  float tHit, tAfter;
-  if (rtFirstRoot(o, d, t, tEnd, tHit, tAfter) && t < tEnd) {
-    found = 1;
-    hitT[0] = tHit;
-  }
-  hitG[0] = zs_FGrad(o + hitT[0] * d);
-#else
-  // Further hits: the segment restarts past the bracket of the last root (it holds no other).
-  for (int k = 0; k < RT_MAX_HITS && k < wanted && t < tEnd; ++k) {
-    float tHit, tAfter;
-    if (!rtFirstRoot(o, d, t, tEnd, tHit, tAfter)) break;
-    vec4 g = zs_FGrad(o + tHit * d);
-    for (int m = 0; m < RT_MAX_HITS; ++m) {  // constant indices: registers, not memory
-      if (m == found) { hitT[m] = tHit; hitG[m] = g; }
-    }
-    ++found;
-    // Past the tolerance too: a restart right at a root could find that root again.
-    t = max(max(tAfter, tHit + rt.tangentTolerance), t + 1e-6 * (tEnd - t));
-  }
-#endif
   return found;
 }

@@ -1,6 +1,7 @@
 // ---- raytrace_interval.frag.glsl (render stage): robust root finding for every formula
 // (tracing.method = "interval", docs/renderer.md). Follows raytrace_main.frag.glsl, the
-// interval prelude and the generated interval block (zs_FInterval) and defines rtMarch():
+// interval prelude and the generated interval block (zs_FInterval) and defines rtFirstRoot()
+// (raytrace_first_roots.frag.glsl, after it, defines rtMarch()):
 //  1. The ray is clipped to the domain (box or ball) and to the box of the octree's leaves.
 //  2. Its segment is classified with interval arithmetic, walking the implicit binary tree
 //     of subsegments [k, k+1] 2^-level left to right with no stack (as the Bernstein method
@@ -76,9 +77,9 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     dl = none ? dr : dl;
     u = none ? w : u;
     size = found ? size : (none ? climbed : 0.5 * size);
-    done = found || u >= 1.0;
+    done = done || found || u >= 1.0;
   } while (!done && ++step < RT_MAX_STEPS);
-  found = found && u < 1.0;
+  found = found && u < 1.0 && len > 0.0;
   float lo = u, hi = u + size, flo = fl, fhi = fr;
   float x = (bracketed && flo == 0.0) ? lo : ((bracketed && fhi == 0.0) ? hi : u + 0.5 * size);
 
@@ -110,37 +111,5 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   if (bracketed && flo != 0.0 && fhi != 0.0) x = clamp((lo * fhi - hi * flo) / (fhi - flo), lo, hi);
   tHit = ta + len * x;
   tAfter = ta + len * hi;
-  return found;
-}
-
-int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS],
-            out vec4 hitG[RT_MAX_HITS]) {
-  for (int m = 0; m < RT_MAX_HITS; ++m) { hitT[m] = 0.0; hitG[m] = vec4(0.0); }
-  vec3 inv = safeInverse(d);
-  vec2 dom = domainInterval(o, d, inv);
-  vec2 box = slab(rt.rootMin - rt.pad, rt.rootMax + rt.pad, o, inv);
-  float t = max(max(dom.x, box.x), tStart), tEnd = min(dom.y, box.y);
-  int found = 0;
-#if RT_MAX_HITS == 1
-  float tHit, tAfter;
-  if (t < tEnd && rtFirstRoot(o, d, t, tEnd, tHit, tAfter)) {
-    found = 1;
-    hitT[0] = tHit;
-  }
-  hitG[0] = zs_FGrad(o + hitT[0] * d);
-#else
-  // Further hits: the segment restarts past the bracket of the last root (it holds no other).
-  for (int k = 0; k < RT_MAX_HITS && k < wanted && t < tEnd; ++k) {
-    float tHit, tAfter;
-    if (!rtFirstRoot(o, d, t, tEnd, tHit, tAfter)) break;
-    vec4 g = zs_FGrad(o + tHit * d);
-    for (int m = 0; m < RT_MAX_HITS; ++m) {  // constant indices: registers, not memory
-      if (m == found) { hitT[m] = tHit; hitG[m] = g; }
-    }
-    ++found;
-    // Past the tolerance too: a restart right at a root could find that root again.
-    t = max(max(tAfter, tHit + rt.tangentTolerance), t + 1e-6 * (tEnd - t));
-  }
-#endif
   return found;
 }

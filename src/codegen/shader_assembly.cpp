@@ -60,7 +60,10 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
   const std::string_view marchName =
       poly ? kBernsteinTemplate : (interval ? kIntervalTemplate : kSamplingTemplate);
   const std::string_view march = shaderTemplate(marchName);
-  if (!mentionsIdentifier(march, "zs_F") && !mentionsIdentifier(march, "zs_FGrad")) {
+  // The first-root methods share their rtMarch (raytrace_first_roots.frag.glsl).
+  const std::string_view firstRoots = (poly || interval) ? shaderTemplate(kFirstRootsTemplate) : "";
+  if (!mentionsIdentifier(march, "zs_F") && !mentionsIdentifier(march, "zs_FGrad") &&
+      !mentionsIdentifier(firstRoots, "zs_FGrad")) {
     throw std::logic_error("internal error in zeroset: shaders/templates/" + std::string(marchName) +
                            " calls neither zs_F nor zs_FGrad, so the generated formula would be unused");
   }
@@ -88,7 +91,9 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
   appendPiece(out, "shaders/templates/" + std::string(kRaytraceTemplate), string++, raytrace);
   appendPiece(out, "shaders/templates/" + std::string(kShadingTemplate), string++,
               shaderTemplate(kShadingTemplate));
-  appendPiece(out, "shaders/templates/" + std::string(marchName), string, march);
+  appendPiece(out, "shaders/templates/" + std::string(marchName), string++, march);
+  if (!firstRoots.empty())
+    appendPiece(out, "shaders/templates/" + std::string(kFirstRootsTemplate), string, firstRoots);
   return out;
 }
 

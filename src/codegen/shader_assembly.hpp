@@ -9,8 +9,8 @@
 //   frame_params.glsl           (the frame's parameters, flat inputs `rt`)
 //   raytrace_main.frag.glsl     (rays, passes, main; rtMarch and shade prototypes)
 //   raytrace_shading.frag.glsl  (shade: lights, materials, curvature colors, highlights)
-//   raytrace_sampling.frag.glsl, raytrace_bernstein.frag.glsl or raytrace_interval.frag.glsl
-//                               (rtMarch)
+//   raytrace_sampling.frag.glsl (rtMarch), or raytrace_bernstein.frag.glsl or
+//   raytrace_interval.frag.glsl (rtFirstRoot) and raytrace_first_roots.frag.glsl (rtMarch)
 //
 // The interval method has two more pieces after the formula block: interval_prelude.frag.glsl
 // (the zsi_* rules) and the generated interval block (zs_FInterval, emit_interval_glsl.hpp).
@@ -34,6 +34,7 @@ inline constexpr std::string_view kShadingTemplate = "raytrace_shading.frag.glsl
 inline constexpr std::string_view kSamplingTemplate = "raytrace_sampling.frag.glsl";
 inline constexpr std::string_view kBernsteinTemplate = "raytrace_bernstein.frag.glsl";
 inline constexpr std::string_view kIntervalTemplate = "raytrace_interval.frag.glsl";
+inline constexpr std::string_view kFirstRootsTemplate = "raytrace_first_roots.frag.glsl";
 inline constexpr std::string_view kIntervalPreludeTemplate = "interval_prelude.frag.glsl";
 inline constexpr std::string_view kVertexTemplate = "fullscreen.vert.glsl";
 inline constexpr std::string_view kFrameTemplate = "frame_params.glsl";  // both stages

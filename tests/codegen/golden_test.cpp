@@ -29,20 +29,23 @@ std::filesystem::path goldenPath(const std::string& name) {
   return sourceDir() / "tests" / "golden" / (name + ".glsl");
 }
 
+// `actual` against the golden file at `path`; with ZS_UPDATE_GOLDEN=1 writes it instead.
+void expectGolden(const std::filesystem::path& path, const std::string& actual) {
+  if (updating()) {
+    std::ofstream(path, std::ios::binary) << actual;
+    return;
+  }
+  ASSERT_TRUE(std::filesystem::exists(path))
+      << path << " is missing; create it with ZS_UPDATE_GOLDEN=1 (docs/codegen.md)";
+  EXPECT_EQ(readFile(path), actual)
+      << path << " differs; if the change is intended, regenerate with ZS_UPDATE_GOLDEN=1";
+}
+
 void checkGolden(const GoldenCase& c) {
   SCOPED_TRACE(std::string(c.name) + ": " + c.formula);
   const std::optional<GlslFormula> glsl = generate(c.formula);
   ASSERT_TRUE(glsl.has_value());
-  const std::string actual = std::string("// formula: ") + c.formula + "\n" + glsl->source;
-  const std::filesystem::path path = goldenPath(c.name);
-  if (updating()) {
-    std::ofstream(path, std::ios::binary) << actual;
-  } else {
-    ASSERT_TRUE(std::filesystem::exists(path))
-        << path << " is missing; create it with ZS_UPDATE_GOLDEN=1 (docs/codegen.md)";
-    EXPECT_EQ(readFile(path), actual)
-        << path << " differs; if the change is intended, regenerate with ZS_UPDATE_GOLDEN=1";
-  }
+  expectGolden(goldenPath(c.name), std::string("// formula: ") + c.formula + "\n" + glsl->source);
   const ValidationResult result =
       validateGlsl(assembleFragmentShader(*glsl), Stage::Fragment);
   EXPECT_TRUE(result.ok) << formatInternalShaderError("fragment shader", result);
@@ -56,16 +59,8 @@ void checkIntervalGolden(const GoldenCase& c) {
   ASSERT_TRUE(formula.has_value());
   const std::array<NodeId, 3> grad = gradient(formula->graph, formula->root);
   const IntervalGlsl interval = emitIntervalGlsl(formula->graph, formula->root, grad);
-  const std::string actual = std::string("// formula: ") + c.formula + "\n" + interval.source;
-  const std::filesystem::path path = goldenPath(std::string("interval_") + c.name);
-  if (updating()) {
-    std::ofstream(path, std::ios::binary) << actual;
-  } else {
-    ASSERT_TRUE(std::filesystem::exists(path))
-        << path << " is missing; create it with ZS_UPDATE_GOLDEN=1 (docs/codegen.md)";
-    EXPECT_EQ(readFile(path), actual)
-        << path << " differs; if the change is intended, regenerate with ZS_UPDATE_GOLDEN=1";
-  }
+  expectGolden(goldenPath(std::string("interval_") + c.name),
+               std::string("// formula: ") + c.formula + "\n" + interval.source);
   const GlslFormula glsl = emitFormulaGlsl(formula->graph, formula->root, grad);
   const ValidationResult result =
       validateGlsl(assembleFragmentShader(glsl, interval), Stage::Fragment);

@@ -58,10 +58,7 @@ std::string chebyshevSurface(int n) {
   return chebyshev(n, 'x') + "+" + chebyshev(n, 'y') + "+" + chebyshev(n, 'z');
 }
 
-struct Measured {
-  int hits = 0, missed = 0, extra = 0, grazing = 0, touching = 0;
-  double worstDepth = 0;
-};
+using Measured = test::DepthComparison;
 
 Measured measure(int n) {
   Measured m;
@@ -80,59 +77,17 @@ Measured measure(int n) {
   Formula f = std::get<Formula>(parseFormula(formula));
   const std::array<NodeId, 3> g = gradient(f.graph, f.root);
   PointEvaluator eval(compileTape(f.graph, {f.root, g[0], g[1], g[2]}));
-  // The reference for the ray through (i, j), its direction turned by `turn` radians about
-  // the camera's vertical and horizontal axes.
-  auto reference = [&](double i, double j, double turnX = 0, double turnY = 0) {
-    Ray r = primaryRay(s.camera, kSize, kSize, i, j);
-    const CameraBasis basis = cameraBasis(s.camera);
-    const Vec3 right = basis.right, up = basis.up;
-    for (int k = 0; k < 3; ++k) r.direction[k] += turnX * right[k] + turnY * up[k];
-    const auto [t0, t1] = test::rayInBox(r, kBox);
-    return t0 <= t1 ? test::sampledFirstHit(eval, r, t0, t1, 16 * n) : NAN;
-  };
+  // A ray that passes within the tangent tolerance of a sheet (1e-5 of the domain diagonal,
+  // docs/renderer.md) counts as touching it.
   const double tolerance = 1e-5 * std::sqrt(3.0) * (kBox.max[0] - kBox.min[0]);
-  auto nearTouch = [&](double t, int i, int j) {
-    const Ray r = primaryRay(s.camera, kSize, kSize, i, j);
-    double v[4];
-    eval.eval(r.origin[0] + t * r.direction[0], r.origin[1] + t * r.direction[1],
-              r.origin[2] + t * r.direction[2], {}, v);
-    return std::abs(v[0]) <= 1.5 * tolerance * std::sqrt(v[1] * v[1] + v[2] * v[2] + v[3] * v[3]);
-  };
-  auto same = [](double a, double b) {
-    return std::isnan(a) ? std::isnan(b) : !std::isnan(b) && std::abs(a - b) <= 1e-3;
-  };
-  for (int j = 0; j < kSize; ++j) {
-    for (int i = 0; i < kSize; ++i) {
-      const double depth = reference(i, j);
-      const bool hit = !std::isnan(depth);
-      bool stable = true;
-      for (auto [di, dj] : {std::pair{-0.5, 0.0}, {0.5, 0.0}, {0.0, -0.5}, {0.0, 0.5}})
-        stable = stable && !std::isnan(reference(i + di, j + dj)) == hit;
-      if (!stable) continue;
-      // The shader builds its rays in float: directions within ~1e-7 of these. A pixel whose
-      // first hit moves when the ray turns by 1e-6 grazes a sheet (the ray passes within
-      // about a millionth of tangency): either answer is right there.
-      bool grazing = false;
-      for (auto [tx, ty] : {std::pair{1e-6, 0.0}, {-1e-6, 0.0}, {0.0, 1e-6}, {0.0, -1e-6}})
-        grazing = grazing || !same(reference(i, j, tx, ty), depth);
-      if (grazing) {
-        ++m.grazing;
-        continue;
-      }
-      const float got = frame.depth.at(i, j);
-      // A ray that passes within the tangent tolerance of a sheet (1e-5 of the domain
-      // diagonal, docs/renderer.md) counts as touching it: a render hit nearer than the
-      // reference is right where the distance |F| / |grad F| at it is that small.
-      if (std::isfinite(got) && (!hit || got < depth - 1e-3) && nearTouch(got, i, j)) {
-        ++m.touching;
-        continue;
-      }
-      m.hits += hit;
-      m.missed += hit && !std::isfinite(got);
-      m.extra += !hit && std::isfinite(got);
-      if (hit && std::isfinite(got)) m.worstDepth = std::max(m.worstDepth, std::abs(got - depth));
-    }
-  }
+  const test::DepthComparison c = test::compareDepth(
+      frame.depth, s.camera, kSize, eval,
+      [&](const Ray& r) {
+        const auto [t0, t1] = test::rayInBox(r, kBox);
+        return t0 <= t1 ? test::sampledFirstHit(eval, r, t0, t1, 16 * n) : NAN;
+      },
+      [&](double) { return 1.5 * tolerance; });
+  m = c;
   std::printf("  T%d (%s): %d reference hits, %d missed, %d extra, worst depth error %.3g; left "
               "out: %d grazing, %d touching within the tolerance%s\n", n,
               n >= kDoubleDegree ? "double" : "float", m.hits, m.missed, m.extra, m.worstDepth,

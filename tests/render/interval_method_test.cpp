@@ -37,10 +37,7 @@ struct Case {
   TracingMethod method = TracingMethod::Auto;
 };
 
-struct Measured {
-  int hits = 0, missed = 0, extra = 0, grazing = 0, touching = 0;
-  double worstDepth = 0;
-};
+using Measured = test::DepthComparison;
 
 PointEvaluator evaluatorFor(const std::string& text) {
   Formula f = std::get<Formula>(parseFormula(text));
@@ -62,52 +59,16 @@ Measured measure(const Case& c) {
   EXPECT_EQ(frame.error, "");
 
   PointEvaluator shown = evaluatorFor(c.reference.empty() ? c.formula : c.reference);
-  auto reference = [&](double i, double j, double turnX = 0, double turnY = 0) {
-    Ray r = primaryRay(s.camera, c.size, c.size, i, j);
-    const CameraBasis basis = cameraBasis(s.camera);
-    for (int k = 0; k < 3; ++k) r.direction[k] += turnX * basis.right[k] + turnY * basis.up[k];
-    const auto [t0, t1] = test::rayInBox(r, c.domain);
-    return t0 <= t1 ? test::sampledFirstHit(shown, r, t0, t1, c.samples) : NAN;
-  };
   // The pixel footprint at distance t, as the shader computes it, plus tracing.epsilon.
   const double planeHalf = std::tan(s.camera.fovY * M_PI / 360.0);
-  auto footprint = [&](double t) { return s.tracing.epsilon + 2.0 * planeHalf / c.size * t; };
-  auto nearSurface = [&](double t, int i, int j) {
-    const Ray r = primaryRay(s.camera, c.size, c.size, i, j);
-    double v[4];
-    shown.eval(r.origin[0] + t * r.direction[0], r.origin[1] + t * r.direction[1],
-               r.origin[2] + t * r.direction[2], {}, v);
-    return std::abs(v[0]) <= 2.0 * footprint(t) * std::sqrt(v[1] * v[1] + v[2] * v[2] + v[3] * v[3]);
-  };
-  auto same = [](double a, double b) {
-    return std::isnan(a) ? std::isnan(b) : !std::isnan(b) && std::abs(a - b) <= 1e-3;
-  };
-  for (int j = 0; j < c.size; ++j) {
-    for (int i = 0; i < c.size; ++i) {
-      const double depth = reference(i, j);
-      const bool hit = !std::isnan(depth);
-      bool stable = true;
-      for (auto [di, dj] : {std::pair{-0.5, 0.0}, {0.5, 0.0}, {0.0, -0.5}, {0.0, 0.5}})
-        stable = stable && !std::isnan(reference(i + di, j + dj)) == hit;
-      if (!stable) continue;
-      bool grazing = false;
-      for (auto [tx, ty] : {std::pair{1e-6, 0.0}, {-1e-6, 0.0}, {0.0, 1e-6}, {0.0, -1e-6}})
-        grazing = grazing || !same(reference(i, j, tx, ty), depth);
-      if (grazing) {
-        ++m.grazing;
-        continue;
-      }
-      const float got = frame.depth.at(i, j);
-      if (std::isfinite(got) && (!hit || got < depth - 1e-3) && nearSurface(got, i, j)) {
-        ++m.touching;
-        continue;
-      }
-      m.hits += hit;
-      m.missed += hit && !std::isfinite(got);
-      m.extra += !hit && std::isfinite(got);
-      if (hit && std::isfinite(got)) m.worstDepth = std::max(m.worstDepth, std::abs(got - depth));
-    }
-  }
+  const test::DepthComparison d = test::compareDepth(
+      frame.depth, s.camera, c.size, shown,
+      [&](const Ray& r) {
+        const auto [t0, t1] = test::rayInBox(r, c.domain);
+        return t0 <= t1 ? test::sampledFirstHit(shown, r, t0, t1, c.samples) : NAN;
+      },
+      [&](double t) { return 2.0 * (s.tracing.epsilon + 2.0 * planeHalf / c.size * t); });
+  m = d;
   std::printf("  %s: %d reference hits, %d missed, %d extra, worst depth error %.3g; left out: "
               "%d grazing, %d within a footprint\n",
               c.formula.c_str(), m.hits, m.missed, m.extra, m.worstDepth, m.grazing, m.touching);

@@ -121,6 +121,59 @@ double sampledFirstHit(PointEvaluator& f, const Ray& r, double t0, double t1, in
   return NAN;
 }
 
+DepthComparison compareDepth(const DepthMap& depth, const Camera& camera, int size,
+                             PointEvaluator& shown,
+                             const std::function<double(const Ray&)>& firstHit,
+                             const std::function<double(double)>& touchDistance) {
+  DepthComparison m;
+  // The ray through (i, j), its direction turned by (turnX, turnY) radians about the
+  // camera's vertical and horizontal axes.
+  const CameraBasis basis = cameraBasis(camera);
+  auto reference = [&](double i, double j, double turnX = 0, double turnY = 0) {
+    Ray r = primaryRay(camera, size, size, i, j);
+    for (int k = 0; k < 3; ++k) r.direction[k] += turnX * basis.right[k] + turnY * basis.up[k];
+    return firstHit(r);
+  };
+  auto touching = [&](double t, int i, int j) {
+    const Ray r = primaryRay(camera, size, size, i, j);
+    double v[4];
+    shown.eval(r.origin[0] + t * r.direction[0], r.origin[1] + t * r.direction[1],
+               r.origin[2] + t * r.direction[2], {}, v);
+    return std::abs(v[0]) <= touchDistance(t) * std::sqrt(v[1] * v[1] + v[2] * v[2] + v[3] * v[3]);
+  };
+  auto same = [](double a, double b) {
+    return std::isnan(a) ? std::isnan(b) : !std::isnan(b) && std::abs(a - b) <= 1e-3;
+  };
+  for (int j = 0; j < size; ++j) {
+    for (int i = 0; i < size; ++i) {
+      const double want = reference(i, j);
+      const bool hit = !std::isnan(want);
+      bool stable = true;
+      for (auto [di, dj] : {std::pair{-0.5, 0.0}, {0.5, 0.0}, {0.0, -0.5}, {0.0, 0.5}})
+        stable = stable && !std::isnan(reference(i + di, j + dj)) == hit;
+      if (!stable) continue;
+      // The shader builds its rays in float: directions within ~1e-7 of these.
+      bool grazing = false;
+      for (auto [tx, ty] : {std::pair{1e-6, 0.0}, {-1e-6, 0.0}, {0.0, 1e-6}, {0.0, -1e-6}})
+        grazing = grazing || !same(reference(i, j, tx, ty), want);
+      if (grazing) {
+        ++m.grazing;
+        continue;
+      }
+      const float got = depth.at(i, j);
+      if (std::isfinite(got) && (!hit || got < want - 1e-3) && touching(got, i, j)) {
+        ++m.touching;
+        continue;
+      }
+      m.hits += hit;
+      m.missed += hit && !std::isfinite(got);
+      m.extra += !hit && std::isfinite(got);
+      if (hit && std::isfinite(got)) m.worstDepth = std::max(m.worstDepth, std::abs(got - want));
+    }
+  }
+  return m;
+}
+
 RenderSettings testSettings(Vec3 eye) {
   RenderSettings s;
   s.camera.eye = eye;

@@ -4,6 +4,7 @@
 // octree -> hierarchy), and reference-image comparison with ZS_UPDATE_REFERENCE=1 to
 // regenerate the PNGs under tests/render/reference.
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -59,6 +60,22 @@ std::pair<double, double> rayInBox(const Ray& r, const Domain& box);
 // then finds. So two roots closer than a step are found too, as long as a step holds at most
 // one extremum of f.
 double sampledFirstHit(PointEvaluator& f, const Ray& r, double t0, double t1, int samples);
+
+// A render's depth against a reference for every pixel of a size x size frame of `camera`.
+// `shown` is a tape of F and its gradient (the surface that must be drawn); `firstHit(r)` the
+// reference's first hit along r (NaN: none). Left out: pixels whose hit or miss changes
+// within half a pixel, and rays whose first hit moves when they turn by 1e-6 (they graze a
+// sheet: either answer is right; "grazing"). A render hit the reference lacks, or one nearer
+// than the reference's, counts as "touching" where |F| / |grad F| there is at most
+// `touchDistance(t)`: the method draws what it cannot separate from the surface.
+struct DepthComparison {
+  int hits = 0, missed = 0, extra = 0, grazing = 0, touching = 0;
+  double worstDepth = 0;  // |depth - reference| over pixels both hit
+};
+DepthComparison compareDepth(const DepthMap& depth, const Camera& camera, int size,
+                             PointEvaluator& shown,
+                             const std::function<double(const Ray&)>& firstHit,
+                             const std::function<double(double)>& touchDistance);
 
 // Compares `image` with tests/render/reference/<name>.png within the tolerance of
 // image.hpp; with ZS_UPDATE_REFERENCE=1 writes the reference instead. On mismatch the
