@@ -72,17 +72,9 @@ int runRender(const RenderArgs& args) {
   const double rays = double(scene->width) * scene->height * scene->render.samples *
                       scene->render.samples;
   if (rays <= 8e6) setenv("GALLIVM_PERF", "nopt", /*overwrite=*/0);
-  ContextResult ctx = createHeadlessContext(backend);
-  if (!ctx.context) {
-    std::cerr << "error: " << ctx.error << "\n"
-              << (backend == Backend::Egl ? "hint: try --backend osmesa\n" : "");
-    return 1;
-  }
-  RayTracer tracer;
-  if (std::string err = loadSurface(tracer, surface); !err.empty()) {
-    std::cerr << err;
-    return 1;
-  }
+  HeadlessTracer gl = openHeadlessTracer(backend, surface);
+  if (!gl.tracer) return 1;
+  RayTracer& tracer = *gl.tracer;
 
   const bool showProgress = isatty(STDERR_FILENO);
   const auto start = std::chrono::steady_clock::now();
@@ -112,7 +104,7 @@ int runRender(const RenderArgs& args) {
   }
   std::printf("wrote %s (%dx%d) in %.0f ms: %zu octree leaves, %s\n", args.output.c_str(),
               scene->width, scene->height, renderMs, surface.octree.leaves.size(),
-              ctx.context->backendName().c_str());
+              gl.context->backendName().c_str());
   // The picture's color map has no legend: say what its ends stand for.
   if (frame.curvatureRange > 0)
     std::printf("curvature color map: blue -%.4g, white 0, red +%.4g\n", frame.curvatureRange,

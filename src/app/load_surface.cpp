@@ -1,5 +1,7 @@
 #include "app/load_surface.hpp"
 
+#include <iostream>
+
 namespace zs::app {
 
 std::string loadSurface(RayTracer& tracer, const PreparedSurface& surface) {
@@ -10,6 +12,21 @@ std::string loadSurface(RayTracer& tracer, const PreparedSurface& surface) {
   }
   tracer.setParams(surface.paramsAsFloats());
   return {};
+}
+
+HeadlessTracer openHeadlessTracer(Backend backend, const PreparedSurface& surface) {
+  ContextResult ctx = createHeadlessContext(backend);
+  if (!ctx.context) {
+    std::cerr << "error: " << ctx.error << "\n"
+              << (backend == Backend::Egl ? "hint: try --backend osmesa\n" : "");
+    return {};
+  }
+  HeadlessTracer out{std::move(ctx.context), std::make_unique<RayTracer>()};  // needs the context
+  if (std::string err = loadSurface(*out.tracer, surface); !err.empty()) {
+    std::cerr << err;
+    return {};
+  }
+  return out;
 }
 
 }  // namespace zs::app

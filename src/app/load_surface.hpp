@@ -2,14 +2,27 @@
 // The hand-over from the CPU half to the GPU half: takes a PreparedSurface and a RayTracer
 // on a current context, puts the program (rebuilt only when the shader text changed), the
 // packed sphere hierarchy and the parameter values into the tracer.
+#include <memory>
 #include <string>
 
 #include "app/pipeline.hpp"
+#include "render/gl_context.hpp"
 #include "render/ray_tracer.hpp"
 
 namespace zs::app {
 
 // "" on success; otherwise text ready to print (the driver's log, or "error: ...").
 std::string loadSurface(RayTracer& tracer, const PreparedSurface& surface);
+
+// A headless context, current, and a tracer made on it with a surface loaded: what the
+// commands that write pictures start from. The tracer is declared last, so it goes first,
+// while its context still exists.
+struct HeadlessTracer {
+  std::unique_ptr<GlContext> context;
+  std::unique_ptr<RayTracer> tracer;
+};
+
+// Null members after printing why (and a hint) to stderr.
+HeadlessTracer openHeadlessTracer(Backend backend, const PreparedSurface& surface);
 
 }  // namespace zs::app

@@ -106,17 +106,9 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
               << "\nhint: with --animate, -o names a folder, e.g. -o frames/\n";
     return 1;
   }
-  ContextResult ctx = createHeadlessContext(backend);
-  if (!ctx.context) {
-    std::cerr << "error: " << ctx.error << "\n"
-              << (backend == Backend::Egl ? "hint: try --backend osmesa\n" : "");
-    return 1;
-  }
-  RayTracer tracer;
-  if (std::string err = loadSurface(tracer, surface); !err.empty()) {
-    std::cerr << err;
-    return 1;
-  }
+  HeadlessTracer gl = openHeadlessTracer(backend, surface);
+  if (!gl.tracer) return 1;
+  RayTracer& tracer = *gl.tracer;
 
   const bool markers = base.render.singular.enabled;
   const auto start = std::chrono::steady_clock::now();
@@ -160,7 +152,7 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
               scene.height, opt.outDir.c_str(), totalMs,
               perFrameOctree ? "octree rebuilt per frame (the parameter is in F)"
                              : "octree built once (F does not change)",
-              ctx.context->backendName().c_str());
+              gl.context->backendName().c_str());
   if (ffmpeg) {
     const std::string pattern = (dir / frameFilePattern(anim->frames)).string();
     if (std::string err = encodeVideo(*ffmpeg, pattern, opt.video, opt.fps); !err.empty()) {
