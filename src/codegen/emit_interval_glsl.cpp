@@ -16,6 +16,16 @@ std::string floatText(float v) {
   return !t.empty() && t[0] == '-' ? "(" + t + ")" : t;
 }
 
+// A constant node whose value is a finite float, so that it is its own exact interval.
+bool exactFloat(const Graph& g, NodeId id) {
+  const Node& n = g[id];
+  if (n.op != Op::Const || !std::isfinite(n.value)) return false;
+  const double v = n.value;
+  if (std::fabs(v) > double(std::numeric_limits<float>::max())) return false;
+  if (v != 0.0 && std::fabs(v) < double(std::numeric_limits<float>::min())) return false;
+  return double(static_cast<float>(v)) == v;
+}
+
 }  // namespace
 
 std::string glslIntervalLiteral(double value) {
@@ -67,6 +77,14 @@ IntervalGlsl emitIntervalGlsl(const Graph& g, NodeId f, const std::array<NodeId,
       default: break;
     }
     own = "i" + std::to_string(next++);
+    // A product with a constant that is a float is a scaling: two products, not four.
+    const NodeId scalar = n.op != Op::Mul ? kNoNode : exactFloat(g, n.a) ? n.a : exactFloat(g, n.b) ? n.b : kNoNode;
+    if (scalar != kNoNode) {
+      const NodeId other = scalar == n.a ? n.b : n.a;
+      body += "  vec2 " + own + " = zsi_scale(" + name(other) + ", " +
+              floatText(float(g[scalar].value)) + ");\n";
+      return;
+    }
     body += "  vec2 " + own + " = " +
             glslIntervalOpExpression(n.op, name(n.a), n.b == kNoNode ? "" : name(n.b), n.ival,
                                      flag) +

@@ -11,7 +11,7 @@ void zs_FInterval(vec2 X, vec2 Y, vec2 Z, vec3 d, out vec2 F, out vec2 D, out bo
   vec2 i4 = zsi_add(i2, i3);
   vec2 i5 = zsi_sub(i4, zsi_point(zs_params[0]));
   vec2 i6 = zsi_sqrt(vec2((-1.0)), zs_u);
-  vec2 i7 = zsi_mul(vec2(0.0), i6);
+  vec2 i7 = zsi_scale(i6, 0.0);
   vec2 i8 = zsi_add(i5, i7);
   partial = zsi_partial;
   zsi_finish(i8, zsi_dot(vec2(0.099999994, 0.1), vec2(3.4028235e+38, ZSI_INF), vec2(0.0, 1.1754944e-38), d), zs_u, zs_ug || zsi_partial, F, D);

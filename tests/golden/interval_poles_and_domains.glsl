@@ -22,8 +22,8 @@ void zs_FInterval(vec2 X, vec2 Y, vec2 Z, vec3 d, out vec2 F, out vec2 D, out bo
   partial = zsi_partial;
   vec2 i15 = zsi_powi(X, 2);
   vec2 i16 = zsi_div(vec2((-1.0)), i15);
-  vec2 i17 = zsi_mul(vec2(2.0), i2);
-  vec2 i18 = zsi_mul(vec2(2.0), Z);
+  vec2 i17 = zsi_scale(i2, 2.0);
+  vec2 i18 = zsi_scale(Z, 2.0);
   vec2 i19 = zsi_powi(i7, 2);
   vec2 i20 = zsi_sub(vec2(1.0), i19);
   vec2 i21 = zsi_sqrt(i20, zs_ug);
