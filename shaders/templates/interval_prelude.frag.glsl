@@ -20,7 +20,6 @@ const float ZSI_FN_REL = 1.9073486328125e-6; // 2^-19
 const float ZSI_FN_ABS = 1.9073486328125e-6; // 2^-19
 const float ZSI_ARG = 4.76837158203125e-7;   // 2^-21 of |argument|: argument reduction
 const float ZSI_PI = 3.14159265;
-const float ZSI_TWO_PI = 6.28318531;
 
 // Operations that restricted an operand to their domain, or divided by an interval holding
 // 0: F may be undefined or unbounded somewhere on the segment, so no monotonicity proof.
@@ -220,12 +219,12 @@ vec2 zsi_scale(vec2 a, float s) {
   return s == 0.0 ? vec2(0.0) : zsi_out(s > 0.0 ? a * s : a.yx * s);  // 0 * inf is 0 here
 }
 vec2 zsi_dot(vec2 gx, vec2 gy, vec2 gz, vec3 d) {
-  return zsi_unNaN(zsi_add(zsi_add(zsi_scale(gx, d.x), zsi_scale(gy, d.y)), zsi_scale(gz, d.z)));
+  return zsi_add(zsi_add(zsi_scale(gx, d.x), zsi_scale(gy, d.y)), zsi_scale(gz, d.z));
 }
 
 // The results of zs_FInterval: F empty where it is defined nowhere, D whole where the
 // gradient cannot be bounded.
 void zsi_finish(vec2 f, vec2 d, bool u, bool ug, out vec2 F, out vec2 D) {
   F = u ? vec2(1.0, -1.0) : zsi_unNaN(f);
-  D = (u || ug) ? vec2(-ZSI_INF, ZSI_INF) : zsi_unNaN(d);
+  D = (u || ug) ? vec2(-ZSI_INF, ZSI_INF) : d;  // zsi_dot's sums have no NaN ends
 }

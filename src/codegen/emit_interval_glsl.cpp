@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "codegen/glsl_literal.hpp"
@@ -16,35 +17,34 @@ std::string floatText(float v) {
   return !t.empty() && t[0] == '-' ? "(" + t + ")" : t;
 }
 
-// A constant node whose value is a finite float, so that it is its own exact interval.
+// The smallest float interval that holds `value` (not NaN). GPUs flush denormals, so a
+// non-zero value below the smallest normal float is not its own float.
+std::pair<float, float> floatEnclosure(double value) {
+  constexpr float kMax = std::numeric_limits<float>::max();
+  constexpr float kMin = std::numeric_limits<float>::min();
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  if (std::fabs(value) > double(kMax))  // beyond the floats (or infinite)
+    return value > 0 ? std::pair{kMax, kInf} : std::pair{-kInf, -kMax};
+  if (value != 0.0 && std::fabs(value) < double(kMin))
+    return value > 0 ? std::pair{0.0f, kMin} : std::pair{-kMin, 0.0f};
+  const float f = static_cast<float>(value);
+  return {double(f) <= value ? f : std::nextafter(f, -kInf),
+          double(f) >= value ? f : std::nextafter(f, kInf)};
+}
+
+// A constant node whose value is a float, so that it is its own exact interval.
 bool exactFloat(const Graph& g, NodeId id) {
   const Node& n = g[id];
-  if (n.op != Op::Const || !std::isfinite(n.value)) return false;
-  const double v = n.value;
-  if (std::fabs(v) > double(std::numeric_limits<float>::max())) return false;
-  if (v != 0.0 && std::fabs(v) < double(std::numeric_limits<float>::min())) return false;
-  return double(static_cast<float>(v)) == v;
+  if (n.op != Op::Const || std::isnan(n.value)) return false;
+  const auto [lo, hi] = floatEnclosure(n.value);
+  return lo == hi;
 }
 
 }  // namespace
 
 std::string glslIntervalLiteral(double value) {
   if (std::isnan(value)) return "";
-  constexpr float kMax = std::numeric_limits<float>::max();
-  constexpr float kMin = std::numeric_limits<float>::min();
-  constexpr float kInf = std::numeric_limits<float>::infinity();
-  float lo, hi;
-  if (std::fabs(value) > double(kMax)) {  // beyond the floats (or infinite)
-    lo = value > 0 ? kMax : -kInf;
-    hi = value > 0 ? kInf : -kMax;
-  } else if (value != 0.0 && std::fabs(value) < double(kMin)) {  // GPUs flush denormals
-    lo = value > 0 ? 0.0f : -kMin;
-    hi = value > 0 ? kMin : 0.0f;
-  } else {
-    const float f = static_cast<float>(value);
-    lo = double(f) <= value ? f : std::nextafter(f, -kInf);
-    hi = double(f) >= value ? f : std::nextafter(f, kInf);
-  }
+  const auto [lo, hi] = floatEnclosure(value);
   if (lo == hi) return "vec2(" + floatText(lo) + ")";
   return "vec2(" + floatText(lo) + ", " + floatText(hi) + ")";
 }

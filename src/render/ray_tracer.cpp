@@ -193,6 +193,12 @@ std::string RayTracer::prepare(const RenderSettings& settings, const Domain& dom
                         : 0;
   if (offscreen) glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   vertices_ = setUniforms(settings, domain, width, height);
+  setDrawState(settings, width, height, offscreen);
+  return {};
+}
+
+void RayTracer::setDrawState(const RenderSettings& settings, int width, int height,
+                             bool offscreen) {
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_BUFFER, nodeTexture_);
   glBindVertexArray(vao_);
@@ -209,7 +215,6 @@ std::string RayTracer::prepare(const RenderSettings& settings, const Domain& dom
   }
   glViewport(0, 0, width, height);
   clearBackground(settings, offscreen);
-  return {};
 }
 
 void RayTracer::clearBackground(const RenderSettings& settings, bool offscreen) {
@@ -245,20 +250,7 @@ double RayTracer::resolveCurvatureRange(const RenderSettings& settings, const Do
   RenderSettings probe = settings;
   probe.shading.curvatureRange = 1;
   const int vertices = setUniforms(probe, domain, w, h);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_BUFFER, nodeTexture_);
-  glBindVertexArray(vao_);
-  glViewport(0, 0, w, h);
-  clearBackground(settings, true);
-  if (proxy_ == Proxy::Box) {
-    glEnable(GL_CULL_FACE);
-    glCullFace(GL_FRONT);
-    glFrontFace(GL_CCW);
-  } else {
-    glDisable(GL_CULL_FACE);
-  }
+  setDrawState(settings, w, h, true);
   if (vertices > 0) glDrawArrays(GL_TRIANGLES, 0, vertices);
   std::vector<float> values(std::size_t(w) * h);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);

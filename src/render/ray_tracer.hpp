@@ -82,6 +82,9 @@ class RayTracer {
   // Sets every uniform; returns the number of vertices to draw (0: nothing can be hit).
   int setUniforms(const RenderSettings& settings, const Domain& domain, int width, int height);
   int setProxyUniforms(const Camera& camera, const Domain& domain, int width, int height);
+  // Everything a draw needs besides the program and its uniforms: the hierarchy texture, the
+  // proxy's vertex array and culling, the viewport, and the cleared background.
+  void setDrawState(const RenderSettings& settings, int width, int height, bool offscreen);
   void clearBackground(const RenderSettings& settings, bool offscreen);
   int uniform(const char* name);
   std::string ensureTarget(int width, int height);

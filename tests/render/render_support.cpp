@@ -45,8 +45,9 @@ std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& erro
     return nullptr;
   }
   const std::vector<float> packed = buildSphereHierarchy(std::get<Octree>(tree)).packed();
-  GlslFormula glsl = emitFormulaGlsl(formula);
-  if (spec.hessian) glsl.source += emitHessianGlsl(formula.graph, gradient(formula.graph, formula.root));
+  const std::array<NodeId, 3> grad = gradient(formula.graph, formula.root);
+  GlslFormula glsl = emitFormulaGlsl(formula.graph, formula.root, grad);
+  if (spec.hessian) glsl.source += emitHessianGlsl(formula.graph, grad);
   // Auto: the method the app would pick (app/pipeline.cpp resolveMethod), without its
   // warnings: Bernstein for polynomials up to the degree limit, interval otherwise. Bernstein
   // is taken for any polynomial, above the degree limit too, so tests can measure where that
@@ -61,7 +62,6 @@ std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& erro
     fragment = assembleFragmentShader(glsl, *emitRayPolynomialGlsl(formula.graph, formula.root),
                                       markers);
   } else if (interval) {
-    const std::array<NodeId, 3> grad = gradient(formula.graph, formula.root);
     fragment = assembleFragmentShader(glsl, emitIntervalGlsl(formula.graph, formula.root, grad),
                                       markers);
   } else {
