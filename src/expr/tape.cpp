@@ -5,23 +5,6 @@
 
 namespace zs {
 
-namespace {
-
-double powInt(double base, std::int32_t n) {
-  // Repeated squaring: the same association the GLSL emitter uses.
-  std::uint32_t k = n < 0 ? static_cast<std::uint32_t>(-static_cast<std::int64_t>(n))
-                          : static_cast<std::uint32_t>(n);
-  double result = 1.0, square = base;
-  while (k) {
-    if (k & 1u) result *= square;
-    k >>= 1u;
-    if (k) square *= square;
-  }
-  return n < 0 ? 1.0 / result : result;
-}
-
-}  // namespace
-
 double applyScalar(Op op, double a, double b, std::int32_t ival, double value) {
   switch (op) {
     case Op::Const: return value;

@@ -27,6 +27,19 @@ struct Tape {
 
 Tape compileTape(const Graph& g, const std::vector<NodeId>& roots);
 
+// base^n by repeated squaring: the same association the GLSL emitter uses.
+inline double powInt(double base, std::int32_t n) {
+  std::uint32_t k = n < 0 ? static_cast<std::uint32_t>(-static_cast<std::int64_t>(n))
+                          : static_cast<std::uint32_t>(n);
+  double result = 1.0, square = base;
+  while (k) {
+    if (k & 1u) result *= square;
+    k >>= 1u;
+    if (k) square *= square;
+  }
+  return n < 0 ? 1.0 / result : result;
+}
+
 // Double-precision scalar semantics of one operation (NaN outside the domain).
 double applyScalar(Op op, double a, double b, std::int32_t ival, double value);
 

@@ -14,11 +14,14 @@ struct Face {
   int u = 1, v = 2;        // the other axes, cyclic after `axis`: e_u x e_v = e_axis
 };
 
-std::array<Face, 6> faces() {
-  std::array<Face, 6> f;
-  for (int a = 0; a < 3; ++a)
-    for (int s = 0; s < 2; ++s) f[std::size_t(2 * a + s)] = {a, s, (a + 1) % 3, (a + 2) % 3};
-  return f;
+const std::array<Face, 6>& faces() {
+  static const std::array<Face, 6> all = [] {
+    std::array<Face, 6> f;
+    for (int a = 0; a < 3; ++a)
+      for (int s = 0; s < 2; ++s) f[std::size_t(2 * a + s)] = {a, s, (a + 1) % 3, (a + 2) % 3};
+    return f;
+  }();
+  return all;
 }
 
 std::uint64_t faceCorner(const Face& f, std::uint32_t n, std::uint32_t i, std::uint32_t j) {
@@ -39,39 +42,54 @@ std::array<std::array<std::uint64_t, 3>, 2> squareTriangles(const Face& f, std::
 
 }  // namespace
 
-std::vector<std::uint64_t> boxFaceCorners(std::uint32_t n) {
-  std::vector<std::uint64_t> keys;
-  for (const Face& f : faces())
-    for (std::uint32_t i = 0; i <= n; ++i)
-      for (std::uint32_t j = 0; j <= n; ++j) keys.push_back(faceCorner(f, n, i, j));
-  return keys;
-}
-
-std::vector<std::uint64_t> cellsBesideCrossedFaces(const Grid& grid) {
-  const std::uint32_t n = grid.cellsPerAxis();
-  std::vector<std::uint64_t> cells;
+BoxFaces::BoxFaces(const Grid& grid, FieldEvaluator& evaluator)
+    : n_(grid.cellsPerAxis()), b_(grid.brickCells()) {
+  const std::size_t side = std::size_t(n_ + 1) * (n_ + 1);
+  std::vector<double> xs, ys, zs;
   for (const Face& f : faces()) {
-    for (std::uint32_t i = 0; i < n; ++i) {
-      for (std::uint32_t j = 0; j < n; ++j) {
-        int neg = 0;
-        for (std::uint32_t c = 0; c < 4; ++c)
-          neg += grid.negative(grid.vertex(faceCorner(f, n, i + (c & 1), j + (c >> 1))));
-        if (neg == 0 || neg == 4) continue;
-        std::array<std::uint64_t, 3> cell{};
-        cell[std::size_t(f.axis)] = f.side ? n - 1 : 0;
-        cell[std::size_t(f.u)] = i;
-        cell[std::size_t(f.v)] = j;
-        cells.push_back(packKey(cell[0], cell[1], cell[2]));
+    for (std::uint32_t j = 0; j <= n_; ++j) {
+      for (std::uint32_t i = 0; i <= n_; ++i) {
+        const P3 p = grid.position(faceCorner(f, n_, i, j));  // as the bricks compute it
+        xs.push_back(p[0]), ys.push_back(p[1]), zs.push_back(p[2]);
       }
     }
   }
-  return cells;
+  values_.resize(6 * side);
+  evaluator.values(xs, ys, zs, values_);
 }
 
-void capBox(const Grid& grid, const Marched& marched, Mesh& mesh) {
+bool BoxFaces::negative(int face, std::uint64_t key) const {
+  const Face f = faces()[std::size_t(face)];
+  return values_[std::size_t(face) * (n_ + 1) * (n_ + 1) + std::size_t(keyAxis(key, f.v)) * (n_ + 1) +
+                 keyAxis(key, f.u)] < 0;
+}
+
+std::vector<std::uint64_t> BoxFaces::bricksBesideCrossedSquares() const {
+  std::vector<std::uint64_t> bricks;
+  for (int face = 0; face < 6; ++face) {
+    const Face& f = faces()[std::size_t(face)];
+    for (std::uint32_t i = 0; i < n_; ++i) {
+      for (std::uint32_t j = 0; j < n_; ++j) {
+        int neg = 0;
+        for (std::uint32_t c = 0; c < 4; ++c)
+          neg += negative(face, faceCorner(f, n_, i + (c & 1), j + (c >> 1)));
+        if (neg == 0 || neg == 4) continue;
+        std::array<std::uint64_t, 3> brick{};
+        brick[std::size_t(f.axis)] = f.side ? (n_ - 1) / b_ : 0;
+        brick[std::size_t(f.u)] = i / b_;
+        brick[std::size_t(f.v)] = j / b_;
+        bricks.push_back(packKey(brick[0], brick[1], brick[2]));
+      }
+    }
+  }
+  return bricks;
+}
+
+void capBox(const Grid& grid, const BoxFaces& boxFaces, const Marched& marched, Mesh& mesh) {
   const std::uint32_t n = grid.cellsPerAxis();
   FlatIndex cornerVertex(1 << 16);  // grid corner -> its mesh vertex on the cap
-  for (const Face& f : faces()) {
+  for (int face = 0; face < 6; ++face) {
+    const Face& f = faces()[std::size_t(face)];
     std::array<float, 3> outward{0, 0, 0};
     outward[std::size_t(f.axis)] = f.side ? 1.0f : -1.0f;
     auto corner = [&](std::uint64_t key) {
@@ -92,7 +110,7 @@ void capBox(const Grid& grid, const Marched& marched, Mesh& mesh) {
           int count = 0;
           for (int k = 0; k < 3; ++k) {
             const std::uint64_t a = tri[std::size_t(k)], b = tri[std::size_t((k + 1) % 3)];
-            const bool aNeg = grid.negative(grid.vertex(a)), bNeg = grid.negative(grid.vertex(b));
+            const bool aNeg = boxFaces.negative(face, a), bNeg = boxFaces.negative(face, b);
             if (aNeg) poly[std::size_t(count++)] = corner(a);
             if (aNeg != bNeg) poly[std::size_t(count++)] = marched.edgeIndex.find(edgeKey(a, b));
           }

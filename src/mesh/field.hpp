@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "expr/batch_eval.hpp"
 #include "expr/tape.hpp"
 #include "interval/octree.hpp"
 
@@ -22,6 +23,9 @@ class FieldEvaluator {
                  std::optional<Ball> capBall);
 
   double value(const P3& p);
+  // value() at many points at once (the batch evaluator: bit for bit the same numbers).
+  void values(std::span<const double> xs, std::span<const double> ys, std::span<const double> zs,
+              std::span<double> out);
   double f(const P3& p);
   // F and its gradient at p.
   std::array<double, 4> fAndGradient(const P3& p);
@@ -32,15 +36,23 @@ class FieldEvaluator {
     double residual = 0;  // |F| / |grad F| there; 0 on the ball's sphere
     bool onBall = false;  // the ball's sphere, not F, vanishes here (the cap)
   };
-  // The root of the field on the segment a -> b, value(a) < 0 <= value(b) (or NaN at b):
-  // bracketed (Illinois), so it never leaves the segment; kept at least kEdgeMargin of the
-  // segment away from either end so that no two vertices coincide.
-  Root rootOnEdge(const P3& a, const P3& b, double va, double vb);
+  struct Edge {
+    P3 a{}, b{};
+    double va = 0, vb = 0;  // value(a) < 0 <= value(b), or NaN at b
+  };
+  // The root of the field on each segment a -> b: bracketed (Illinois), so it never leaves
+  // the segment; kept at least kEdgeMargin of the segment away from either end so that no
+  // two vertices coincide. The edges are refined side by side, a batch of evaluations per
+  // step (edge_roots.cpp).
+  void rootsOnEdges(std::span<const Edge> edges, std::span<Root> roots);
 
  private:
   double ballDistance(const P3& p) const;
 
+  double withBall(const P3& p, double f) const;
+
   PointEvaluator value_, gradient_;
+  BatchEvaluator batch_, batchGradient_;
   std::vector<double> params_;
   std::optional<Ball> capBall_;
 };

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "mesh/huge_pages.hpp"
+
 namespace zs::mesh {
 
 class FlatIndex {
@@ -55,8 +57,8 @@ class FlatIndex {
   void rehash(std::size_t capacity) {
     std::vector<std::uint64_t> oldKeys = std::move(keys_);
     std::vector<std::uint32_t> oldValues = std::move(values_);
-    keys_.assign(capacity, 0);
-    values_.assign(capacity, 0);
+    keys_ = hugeVector<std::uint64_t>(capacity, 0);
+    values_ = hugeVector<std::uint32_t>(capacity, 0);
     mask_ = capacity - 1;
     size_ = 0;
     for (std::size_t i = 0; i < oldKeys.size(); ++i) {

@@ -1,8 +1,12 @@
 #include "mesh/march.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <span>
 #include <thread>
 
+#include "mesh/huge_pages.hpp"
 #include "mesh/kuhn.hpp"
 
 namespace zs::mesh {
@@ -15,39 +19,162 @@ std::uint64_t edgeKey(std::uint64_t a, std::uint64_t b) {
   return (lo << 3) | axes;
 }
 
-Marched marchCells(const Grid& grid) {
-  Marched m;
+namespace {
+
+// What one run of consecutive bricks marched: its edges numbered locally, in the order met.
+struct Chunk {
+  std::vector<GridEdge> edges;
+  std::vector<std::uint64_t> faceKeys;  // per edge: its edgeKey on a brick face, or kInside
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<std::array<std::uint32_t, 4>> quads;
+  std::vector<std::uint64_t> neighbours;  // bricks beside crossed faces, maybe taken already
+  std::size_t cells = 0;
+  static constexpr std::uint64_t kInside = ~std::uint64_t(0);
+
+  void clear() {  // keeps the buffers
+    edges.clear(), faceKeys.clear(), triangles.clear(), quads.clear(), neighbours.clear();
+    cells = 0;
+  }
+};
+
+constexpr std::size_t kChunkBricks = 64;
+
+void marchChunk(const Grid& grid, std::span<const std::uint64_t> bricks, FieldEvaluator& evaluator,
+                Chunk& out) {
   const auto& edges = cellEdges();
-  m.edgeIndex.reserve(grid.cells().size() * 3 / 2);
-  m.edges.reserve(grid.cells().size() * 3 / 2);
-  for (std::size_t i = 0; i < grid.cells().size(); ++i) {
-    const std::uint64_t cell = grid.cells()[i];
-    const std::uint32_t* corner = grid.cellCorners(i);
-    int neg = 0;
-    for (int c = 0; c < 8; ++c) neg |= int(grid.negative(corner[c])) << c;
-    if (neg == 0 || neg == 0xff) continue;
-    std::array<std::uint32_t, kCellEdges> local{};
-    for (int e = 0; e < kCellEdges; ++e) {
-      const CellEdge ce = edges[std::size_t(e)];
-      const bool loNeg = (neg >> ce.lo) & 1, hiNeg = (neg >> ce.hi) & 1;
-      if (loNeg == hiNeg) continue;
-      const std::uint64_t key = ((cell + cornerOffset(ce.lo)) << 3) | std::uint64_t(ce.lo ^ ce.hi);
-      bool inserted;
-      local[std::size_t(e)] = m.edgeIndex.insert(key, std::uint32_t(m.edges.size()), inserted);
-      if (!inserted) continue;
-      const int n = loNeg ? ce.lo : ce.hi, p = loNeg ? ce.hi : ce.lo;
-      m.edges.push_back({corner[n], corner[p], cell + cornerOffset(n),
-                         cell + cornerOffset(p)});
-    }
-    for (int t = 0; t < 6; ++t) {
-      const TetPiece& piece = tetPiece(t, neg);
-      if (piece.count == 3) {
-        m.triangles.push_back({local[piece.edges[0]], local[piece.edges[1]], local[piece.edges[2]]});
-      } else if (piece.count == 4) {
-        m.quads.push_back({local[piece.edges[0]], local[piece.edges[1]], local[piece.edges[2]],
-                           local[piece.edges[3]]});
+  const std::uint32_t b = grid.brickCells(), m = b + 1;
+  const std::size_t stride[3] = {1, m, std::size_t(m) * m};
+  std::array<std::size_t, 8> cornerAt{};
+  for (int c = 0; c < 8; ++c) cornerAt[std::size_t(c)] = (c & 1) * stride[0] + ((c >> 1) & 1) * stride[1] + ((c >> 2) & 1) * stride[2];
+  // Per brick: (corner, axes) -> local edge id, so a brick looks each edge up once.
+  std::vector<std::uint32_t> seen(stride[2] * m * 8, FlatIndex::kAbsent);
+  std::vector<std::size_t> touched;
+  std::vector<double> values(grid.brickCornerCount());
+  const double* v = values.data();
+  for (std::uint64_t brick : bricks) {
+    grid.evaluateBrick(brick, evaluator, values);
+    grid.crossedNeighbours(brick, v, out.neighbours);
+    const std::uint64_t origin = grid.brickOrigin(brick);
+    for (std::uint32_t z = 0; z < b; ++z) {
+      for (std::uint32_t y = 0; y < b; ++y) {
+        for (std::uint32_t x = 0; x < b; ++x) {
+          const std::size_t base = x + y * stride[1] + z * stride[2];
+          int neg = 0;
+          for (int c = 0; c < 8; ++c) neg |= int(v[base + cornerAt[std::size_t(c)]] < 0) << c;
+          if (neg == 0 || neg == 0xff) continue;
+          ++out.cells;
+          const std::uint64_t cell = origin + packKey(x, y, z);
+          std::array<std::uint32_t, kCellEdges> local{};
+          for (int e = 0; e < kCellEdges; ++e) {
+            const CellEdge ce = edges[std::size_t(e)];
+            const bool loNeg = (neg >> ce.lo) & 1, hiNeg = (neg >> ce.hi) & 1;
+            if (loNeg == hiNeg) continue;
+            const int axes = ce.lo ^ ce.hi;
+            const std::size_t at = (base + cornerAt[ce.lo]) * 8 + std::size_t(axes);
+            std::uint32_t& slot = seen[at];
+            if (slot == FlatIndex::kAbsent) {
+              slot = std::uint32_t(out.edges.size());
+              touched.push_back(at);
+              const int n = loNeg ? ce.lo : ce.hi, p = loNeg ? ce.hi : ce.lo;
+              out.edges.push_back({cell + cornerOffset(n), cell + cornerOffset(p),
+                                   v[base + cornerAt[std::size_t(n)]], v[base + cornerAt[std::size_t(p)]]});
+              // On a brick face: it stays in a plane x_a = 0 or b of the brick.
+              const std::uint32_t lo[3] = {x + (ce.lo & 1), y + ((ce.lo >> 1) & 1), z + ((ce.lo >> 2) & 1)};
+              bool onFace = false;
+              for (int a = 0; a < 3; ++a) onFace |= !((axes >> a) & 1) && (lo[a] == 0 || lo[a] == b);
+              out.faceKeys.push_back(onFace ? ((cell + cornerOffset(ce.lo)) << 3) | std::uint64_t(axes) : Chunk::kInside);
+            }
+            local[std::size_t(e)] = slot;
+          }
+          for (int t = 0; t < 6; ++t) {
+            const TetPiece& piece = tetPiece(t, neg);
+            if (piece.count == 3) {
+              out.triangles.push_back({local[piece.edges[0]], local[piece.edges[1]], local[piece.edges[2]]});
+            } else if (piece.count == 4) {
+              out.quads.push_back({local[piece.edges[0]], local[piece.edges[1]], local[piece.edges[2]],
+                                   local[piece.edges[3]]});
+            }
+          }
+        }
       }
     }
+    for (std::size_t at : touched) seen[at] = FlatIndex::kAbsent;  // ready for the next brick
+    touched.clear();
+  }
+}
+
+// Appends a chunk: its face edges join the ones other bricks already numbered.
+void merge(const Chunk& chunk, Marched& m) {
+  std::vector<std::uint32_t> global(chunk.edges.size());
+  for (std::size_t e = 0; e < chunk.edges.size(); ++e) {
+    bool inserted = true;
+    const std::uint32_t next = std::uint32_t(m.edges.size());
+    global[e] = chunk.faceKeys[e] == Chunk::kInside ? next : m.edgeIndex.insert(chunk.faceKeys[e], next, inserted);
+    if (inserted) m.edges.push_back(chunk.edges[e]);
+  }
+  for (const auto& t : chunk.triangles) m.triangles.push_back({global[t[0]], global[t[1]], global[t[2]]});
+  for (const auto& q : chunk.quads) m.quads.push_back({global[q[0]], global[q[1]], global[q[2]], global[q[3]]});
+  m.cells += chunk.cells;
+}
+
+}  // namespace
+
+Marched marchBricks(const Grid& grid, std::vector<std::uint64_t> seeds,
+                    std::span<FieldEvaluator> evaluators) {
+  Marched m;
+  FlatIndex taken(seeds.size());
+  std::vector<std::uint64_t> wave;
+  for (std::uint64_t k : seeds) {
+    bool inserted;
+    taken.insert(k, 0, inserted);
+    if (inserted) wave.push_back(k);
+  }
+  // A wave is marched a group of chunks at a time, the group merged (in order) before the
+  // next: the chunks' buffers are reused rather than allocated for every brick at once.
+  constexpr std::size_t kGroupChunks = 32;
+  std::vector<Chunk> group(kGroupChunks);
+  std::vector<std::uint64_t> nextWave;
+  while (!wave.empty()) {
+    for (std::size_t groupStart = 0; groupStart < wave.size(); groupStart += kGroupChunks * kChunkBricks) {
+      const std::size_t bricks = std::min(kGroupChunks * kChunkBricks, wave.size() - groupStart);
+      const std::size_t chunks = (bricks + kChunkBricks - 1) / kChunkBricks;
+      std::atomic<std::size_t> next{0};
+      auto work = [&](std::size_t t) {
+        for (std::size_t c; (c = next.fetch_add(1)) < chunks;) {
+          const std::size_t first = groupStart + c * kChunkBricks;
+          group[c].clear();
+          marchChunk(grid, std::span(wave).subspan(first, std::min(kChunkBricks, groupStart + bricks - first)),
+                     evaluators[t], group[c]);
+        }
+      };
+      {
+        std::vector<std::jthread> pool;
+        for (std::size_t t = 1; t < std::min(evaluators.size(), chunks); ++t) pool.emplace_back(work, t);
+        work(0);
+      }
+      if (m.bricks == 0) {
+        // Room for all the seeds' edges and faces at this group's rate, in advised storage.
+        std::size_t edges = 0, triangles = 0, quads = 0;
+        for (std::size_t c = 0; c < chunks; ++c)
+          edges += group[c].edges.size(), triangles += group[c].triangles.size(), quads += group[c].quads.size();
+        const double scale = 1.1 * double(wave.size()) / double(bricks);
+        reserveHuge(m.edges, std::size_t(scale * double(edges)));
+        reserveHuge(m.triangles, std::size_t(scale * double(triangles)));
+        reserveHuge(m.quads, std::size_t(scale * double(quads)));
+        m.edgeIndex.reserve(std::size_t(scale * double(edges)) / 2);
+      }
+      m.bricks += bricks;
+      for (std::size_t c = 0; c < chunks; ++c) {
+        merge(group[c], m);
+        for (std::uint64_t k : group[c].neighbours) {
+          bool inserted;
+          taken.insert(k, 0, inserted);
+          if (inserted) nextWave.push_back(k);
+        }
+      }
+    }
+    wave.swap(nextWave);
+    nextWave.clear();
   }
   return m;
 }
@@ -70,24 +197,42 @@ double dist2(const P3& a, const P3& b) {
 double placeRoots(const Grid& grid, const Marched& marched, std::span<FieldEvaluator> evaluators,
                   Mesh& mesh) {
   const std::size_t n = marched.edges.size();
+  reserveHuge(mesh.positions, n);
+  reserveHuge(mesh.normals, n);
+  reserveHuge(mesh.kinds, n);
   mesh.positions.resize(n);
   mesh.normals.resize(n);
   mesh.kinds.resize(n);
-  const std::size_t threads = std::min<std::size_t>(evaluators.size(), n / 1024 + 1);
+  // Work in blocks, so that the threads share it evenly and write disjoint parts.
+  constexpr std::size_t kBlock = 4096;
+  const std::size_t blocks = (n + kBlock - 1) / kBlock;
+  const std::size_t threads = std::min<std::size_t>(evaluators.size(), blocks);
   std::vector<double> worst(threads, 0.0);
+  std::atomic<std::size_t> next{0};
   auto work = [&](std::size_t t) {
     FieldEvaluator& ev = evaluators[t];
-    for (std::size_t i = t; i < n; i += threads) {
-      const GridEdge& e = marched.edges[i];
-      const P3 a = grid.position(e.negativeKey), b = grid.position(e.positiveKey);
-      const FieldEvaluator::Root r = ev.rootOnEdge(a, b, grid.value(e.negative), grid.value(e.positive));
-      mesh.positions[i] = r.position;
-      // Where the gradient vanishes or is undefined, the edge's direction (negative to
-      // positive) still points out of the solid.
-      const std::array<float, 3> along = unit({b[0] - a[0], b[1] - a[1], b[2] - a[2]}, {0, 0, 1});
-      mesh.normals[i] = unit(r.gradient, along);
-      mesh.kinds[i] = r.onBall ? VertexKind::Cap : VertexKind::Surface;
-      if (!r.onBall) worst[t] = std::max(worst[t], r.residual);
+    std::vector<FieldEvaluator::Edge> queries;
+    std::vector<FieldEvaluator::Root> roots;
+    for (std::size_t block; (block = next.fetch_add(1)) < blocks;) {
+      const std::size_t first = block * kBlock, last = std::min(n, first + kBlock);
+      queries.clear();
+      for (std::size_t i = first; i < last; ++i) {
+        const GridEdge& e = marched.edges[i];
+        queries.push_back({grid.position(e.negativeKey), grid.position(e.positiveKey), e.negativeValue, e.positiveValue});
+      }
+      roots.assign(queries.size(), {});
+      ev.rootsOnEdges(queries, roots);
+      for (std::size_t i = first; i < last; ++i) {
+        const FieldEvaluator::Edge& q = queries[i - first];
+        const FieldEvaluator::Root& r = roots[i - first];
+        mesh.positions[i] = r.position;
+        // Where the gradient vanishes or is undefined, the edge's direction (negative to
+        // positive) still points out of the solid.
+        const std::array<float, 3> along = unit({q.b[0] - q.a[0], q.b[1] - q.a[1], q.b[2] - q.a[2]}, {0, 0, 1});
+        mesh.normals[i] = unit(r.gradient, along);
+        mesh.kinds[i] = r.onBall ? VertexKind::Cap : VertexKind::Surface;
+        if (!r.onBall) worst[t] = std::max(worst[t], r.residual);
+      }
     }
   };
   {
@@ -101,7 +246,7 @@ double placeRoots(const Grid& grid, const Marched& marched, std::span<FieldEvalu
 }
 
 void addTriangles(const Marched& marched, Mesh& mesh) {
-  mesh.triangles.reserve(mesh.triangles.size() + marched.triangles.size() + 2 * marched.quads.size());
+  reserveHuge(mesh.triangles, mesh.triangles.size() + marched.triangles.size() + 2 * marched.quads.size());
   mesh.triangles.insert(mesh.triangles.end(), marched.triangles.begin(), marched.triangles.end());
   for (const auto& q : marched.quads) {
     // Either diagonal keeps both triangles inside the tetrahedron; the shorter one gives

@@ -1,6 +1,6 @@
 #pragma once
 // The steps of buildMesh after the grid is filled (mesher.cpp runs them in order):
-//   marchCells  the zero set through each cell's six tetrahedra: one mesh vertex per grid
+//   marchBricks the zero set through each cell's six tetrahedra: one mesh vertex per grid
 //               edge it crosses (numbered in the order met), triangles and quadrilaterals
 //   placeRoots  each such vertex at the root on its edge, with the gradient's normal
 //   capBox      the box domain's faces where F < 0, sharing the vertices of the edges
@@ -10,28 +10,37 @@
 #include <span>
 #include <vector>
 
+#include "mesh/flat_index.hpp"
 #include "mesh/grid.hpp"
 #include "mesh/mesh.hpp"
 
 namespace zs::mesh {
 
 struct GridEdge {
-  std::uint32_t negative = 0, positive = 0;  // grid corners (Grid::vertex indices)
-  std::uint64_t negativeKey = 0, positiveKey = 0;
+  std::uint64_t negativeKey = 0, positiveKey = 0;  // grid corners
+  double negativeValue = 0, positiveValue = 0;     // the field there
 };
 
 struct Marched {
-  FlatIndex edgeIndex{1 << 16};  // (lower corner key << 3 | axes) -> mesh vertex
+  // Edges that lie on a brick's face (those of the domain's faces among them): edgeKey ->
+  // mesh vertex. An edge inside a brick is met by that brick alone and needs no lookup.
+  FlatIndex edgeIndex{1 << 16};
   std::vector<GridEdge> edges;
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<std::array<std::uint32_t, 4>> quads;
+  std::size_t cells = 0;   // cells the zero set crosses
+  std::size_t bricks = 0;  // bricks evaluated and marched
 };
 
 // The key of the grid edge between two corners whose coordinates differ by 0 or 1 (one
 // corner lower or equal on every axis): the lower corner and the set of axes.
 std::uint64_t edgeKey(std::uint64_t cornerA, std::uint64_t cornerB);
 
-Marched marchCells(const Grid& grid);
+// Evaluates and marches the seed bricks and every brick the closure rule (grid.hpp) reaches,
+// in parallel (a thread per evaluator); the vertices are numbered in the order of the seeds
+// and of the rule's waves whatever the thread count, so the mesh is reproducible.
+Marched marchBricks(const Grid& grid, std::vector<std::uint64_t> seeds,
+                    std::span<FieldEvaluator> evaluators);
 
 // Fills mesh.positions/normals/kinds for the marched edges; returns the largest |F|/|grad F|.
 double placeRoots(const Grid& grid, const Marched& marched, std::span<FieldEvaluator> evaluators,
@@ -40,11 +49,21 @@ double placeRoots(const Grid& grid, const Marched& marched, std::span<FieldEvalu
 // Splits the quadrilaterals along their shorter diagonal into mesh.triangles.
 void addTriangles(const Marched& marched, Mesh& mesh);
 
-// The corners of the box's faces (evaluated by the caller before the cells are closed) and
-// the cells beside a face square the zero set crosses, which must be marched.
-std::vector<std::uint64_t> boxFaceCorners(std::uint32_t n);
-std::vector<std::uint64_t> cellsBesideCrossedFaces(const Grid& grid);
-void capBox(const Grid& grid, const Marched& marched, Mesh& mesh);
+// The field on the box's six faces, which the cap needs everywhere, bricks or not.
+class BoxFaces {
+ public:
+  BoxFaces(const Grid& grid, FieldEvaluator& evaluator);
+  bool negative(int face, std::uint64_t cornerKey) const;
+  // The bricks beside a face square the zero set crosses: they must be marched, so that the
+  // cap's boundary edges have their vertices.
+  std::vector<std::uint64_t> bricksBesideCrossedSquares() const;
+
+ private:
+  std::uint32_t n_, b_;
+  std::vector<double> values_;  // per face, (n + 1)^2 corners
+};
+
+void capBox(const Grid& grid, const BoxFaces& faces, const Marched& marched, Mesh& mesh);
 
 void clipBall(const Ball& ball, double cellSize, FieldEvaluator& evaluator, Mesh& mesh);
 

@@ -44,9 +44,9 @@ struct Mesh {
 };
 
 struct MeshStats {
-  std::size_t octreeLeaves = 0;   // grid cells the interval octree kept
-  std::size_t cells = 0;          // cells marched (the leaves, closed under face crossings)
-  std::size_t gridValues = 0;     // F evaluated at grid corners
+  std::size_t octreeLeaves = 0;   // bricks (octree boxes two levels up) the octree kept
+  std::size_t cells = 0;          // grid cells the zero set crosses, marched
+  std::size_t gridValues = 0;     // F evaluated at brick corners
   double octreeSeconds = 0, gridSeconds = 0, rootSeconds = 0, totalSeconds = 0;
   double cellSize = 0;            // the grid's smallest cell edge
   double maxResidual = 0;         // largest |F| / |grad F| at a surface vertex

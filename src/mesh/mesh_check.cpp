@@ -4,6 +4,8 @@
 #include <numeric>
 #include <vector>
 
+#include "mesh/huge_pages.hpp"
+
 namespace zs {
 
 namespace {
@@ -25,17 +27,14 @@ MeshTopology checkMesh(const Mesh& mesh) {
   MeshTopology top;
   const std::size_t nv = mesh.positions.size();
   top.faces = mesh.triangles.size();
-  std::vector<HalfEdge> halves;
-  halves.reserve(3 * mesh.triangles.size());
-  std::vector<char> used(nv, 0);
-  std::vector<std::uint32_t> parent(nv);
+  std::vector<char> used = mesh::hugeVector<char>(nv, 0);
+  std::vector<std::uint32_t> parent = mesh::hugeVector<std::uint32_t>(nv);
   std::iota(parent.begin(), parent.end(), 0u);
   for (const auto& t : mesh.triangles) {
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) ++top.degenerateTriangles;
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t a = t[std::size_t(k)], b = t[std::size_t((k + 1) % 3)];
       used[a] = 1;
-      halves.push_back({std::min(a, b), std::max(a, b), a < b});
       parent[findRoot(parent, a)] = findRoot(parent, b);
     }
     const auto& p = mesh.positions[t[0]];
@@ -44,7 +43,24 @@ MeshTopology checkMesh(const Mesh& mesh) {
     top.volume += (p[0] * (q[1] * r[2] - q[2] * r[1]) - p[1] * (q[0] * r[2] - q[2] * r[0]) +
                    p[2] * (q[0] * r[1] - q[1] * r[0])) / 6.0;
   }
-  std::sort(halves.begin(), halves.end());
+  // The half-edges in order: a counting sort on the lower vertex, then each vertex's few by
+  // the upper one (millions of them: a comparison sort of the lot costs several times more).
+  std::vector<std::uint32_t> bucket = mesh::hugeVector<std::uint32_t>(nv + 1, 0);
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) ++bucket[std::min(t[std::size_t(k)], t[std::size_t((k + 1) % 3)]) + 1];
+  std::partial_sum(bucket.begin(), bucket.end(), bucket.begin());
+  std::vector<HalfEdge> halves = mesh::hugeVector<HalfEdge>(3 * mesh.triangles.size());
+  {
+    std::vector<std::uint32_t> cursor = mesh::hugeVector<std::uint32_t>(nv);
+    std::copy(bucket.begin(), bucket.end() - 1, cursor.begin());
+    for (const auto& t : mesh.triangles) {
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t a = t[std::size_t(k)], b = t[std::size_t((k + 1) % 3)];
+        halves[cursor[std::min(a, b)]++] = {std::min(a, b), std::max(a, b), a < b};
+      }
+    }
+  }
+  for (std::size_t v = 0; v < nv; ++v) std::sort(halves.begin() + bucket[v], halves.begin() + bucket[v + 1]);
   for (std::size_t i = 0; i < halves.size();) {
     std::size_t j = i;
     while (j < halves.size() && halves[j].lo == halves[i].lo && halves[j].hi == halves[i].hi) ++j;
@@ -63,11 +79,13 @@ MeshTopology checkMesh(const Mesh& mesh) {
 
   // Vertex manifoldness: the triangles around a vertex, joined through the edges at it,
   // must form one fan.
-  std::vector<std::uint32_t> start(nv + 1, 0), around(3 * mesh.triangles.size());
+  std::vector<std::uint32_t> start = mesh::hugeVector<std::uint32_t>(nv + 1, 0);
+  std::vector<std::uint32_t> around = mesh::hugeVector<std::uint32_t>(3 * mesh.triangles.size());
   for (const auto& t : mesh.triangles)
     for (std::uint32_t v : t) ++start[v + 1];
   std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+  std::vector<std::uint32_t> fill = mesh::hugeVector<std::uint32_t>(nv);
+  std::copy(start.begin(), start.end() - 1, fill.begin());
   for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f)
     for (std::uint32_t v : mesh.triangles[f]) around[fill[v]++] = f;
   std::vector<std::uint32_t> local;

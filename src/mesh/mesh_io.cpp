@@ -1,19 +1,45 @@
 #include "mesh/mesh_io.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace zs {
 
 namespace {
 
-void putFloat(std::ostream& out, float v) { out.write(reinterpret_cast<const char*>(&v), 4); }
-void putU32(std::ostream& out, std::uint32_t v) { out.write(reinterpret_cast<const char*>(&v), 4); }
+// Binary records gathered in a buffer of a few hundred kilobytes before they reach the
+// stream: a stream write per float costs more than formatting the whole record.
+class Bytes {
+ public:
+  explicit Bytes(std::ostream& out) : out_(out) { buf_.reserve(kFlushAt + 64); }
+  ~Bytes() { flush(); }
+  Bytes(const Bytes&) = delete;
+  Bytes& operator=(const Bytes&) = delete;
+
+  void put(const void* data, std::size_t n) {
+    const char* c = static_cast<const char*>(data);
+    buf_.insert(buf_.end(), c, c + n);
+    if (buf_.size() >= kFlushAt) flush();
+  }
+  void putFloat(float v) { put(&v, 4); }
+  void putU32(std::uint32_t v) { put(&v, 4); }
+  void flush() {
+    out_.write(buf_.data(), std::streamsize(buf_.size()));
+    buf_.clear();
+  }
+
+ private:
+  static constexpr std::size_t kFlushAt = 1 << 18;
+  std::ostream& out_;
+  std::vector<char> buf_;
+};
 
 // STL stores one normal per facet: the triangle's own, which agrees with its winding,
 // computed from the corners as stored (in float), as readers recompute it.
@@ -33,14 +59,18 @@ std::array<float, 3> facetNormal(const Mesh& m, const std::array<std::uint32_t, 
 void writeStl(const Mesh& m, std::ostream& out) {
   char header[80] = {};
   std::snprintf(header, sizeof header, "zeroset mesh: %zu triangles", m.triangles.size());
-  out.write(header, 80);
-  putU32(out, std::uint32_t(m.triangles.size()));
+  Bytes bytes(out);
+  bytes.put(header, 80);
+  bytes.putU32(std::uint32_t(m.triangles.size()));
   for (const auto& t : m.triangles) {
-    for (float f : facetNormal(m, t)) putFloat(out, f);
-    for (std::uint32_t v : t)
-      for (double c : m.positions[v]) putFloat(out, float(c));
+    float record[12];
+    const std::array<float, 3> n = facetNormal(m, t);
+    std::copy(n.begin(), n.end(), record);
+    for (std::size_t k = 0; k < 3; ++k)
+      for (std::size_t c = 0; c < 3; ++c) record[3 + 3 * k + c] = float(m.positions[t[k]][c]);
+    bytes.put(record, sizeof record);
     const std::uint16_t attributes = 0;
-    out.write(reinterpret_cast<const char*>(&attributes), 2);
+    bytes.put(&attributes, 2);
   }
 }
 
@@ -51,34 +81,30 @@ void writePly(const Mesh& m, std::ostream& out) {
       << "property float nx\nproperty float ny\nproperty float nz\n"
       << "element face " << m.triangles.size() << "\n"
       << "property list uchar int vertex_indices\nend_header\n";
+  Bytes bytes(out);
   for (std::size_t v = 0; v < m.positions.size(); ++v) {
-    for (double c : m.positions[v]) putFloat(out, float(c));
-    for (float c : m.normals[v]) putFloat(out, c);
+    for (double c : m.positions[v]) bytes.putFloat(float(c));
+    for (float c : m.normals[v]) bytes.putFloat(c);
   }
   for (const auto& t : m.triangles) {
     const std::uint8_t three = 3;
-    out.write(reinterpret_cast<const char*>(&three), 1);
-    for (std::uint32_t v : t) putU32(out, v);
+    bytes.put(&three, 1);
+    for (std::uint32_t v : t) bytes.putU32(v);
   }
 }
 
 void writeObj(const Mesh& m, std::ostream& out) {
   out << "# zeroset mesh: " << m.positions.size() << " vertices, " << m.triangles.size()
       << " triangles\n";
+  Bytes bytes(out);
   char line[128];
-  for (const auto& p : m.positions) {
-    std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", p[0], p[1], p[2]);
-    out << line;
-  }
-  for (const auto& n : m.normals) {
-    std::snprintf(line, sizeof line, "vn %.6g %.6g %.6g\n", double(n[0]), double(n[1]), double(n[2]));
-    out << line;
-  }
-  for (const auto& t : m.triangles) {  // OBJ counts from 1
-    std::snprintf(line, sizeof line, "f %u//%u %u//%u %u//%u\n", t[0] + 1, t[0] + 1, t[1] + 1,
-                  t[1] + 1, t[2] + 1, t[2] + 1);
-    out << line;
-  }
+  auto put = [&](int length) { bytes.put(line, std::size_t(std::clamp(length, 0, int(sizeof line) - 1))); };
+  for (const auto& p : m.positions) put(std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", p[0], p[1], p[2]));
+  for (const auto& n : m.normals)
+    put(std::snprintf(line, sizeof line, "vn %.6g %.6g %.6g\n", double(n[0]), double(n[1]), double(n[2])));
+  for (const auto& t : m.triangles)  // OBJ counts from 1
+    put(std::snprintf(line, sizeof line, "f %u//%u %u//%u %u//%u\n", t[0] + 1, t[0] + 1, t[1] + 1,
+                      t[1] + 1, t[2] + 1, t[2] + 1));
 }
 
 }  // namespace

@@ -72,8 +72,9 @@ std::variant<MeshResult, std::string> buildMesh(const Formula& formula,
   MeshStats& stats = result.stats;
   const unsigned threads = std::max(1u, settings.threads);
 
+  // The octree stops two levels above the grid: its boxes there are the grid's bricks.
   OctreeSettings os;
-  os.level = settings.level;
+  os.level = mesh::brickLevel(settings.level);
   os.criteria = Criteria::Uniform;
   os.nodeBudget = settings.nodeBudget;
   os.threads = threads;
@@ -85,8 +86,8 @@ std::variant<MeshResult, std::string> buildMesh(const Formula& formula,
   const std::uint32_t n = 1u << settings.level;
   stats.cellSize = std::min({(box.max[0] - box.min[0]) / n, (box.max[1] - box.min[1]) / n,
                              (box.max[2] - box.min[2]) / n});
-  say(format("octree: level %d (%u cells per axis), %zu of its cells may hold the surface (%.3f s)",
-             settings.level, n, tree.leaves.size(), tree.buildSeconds));
+  say(format("octree: level %d, %zu boxes may hold the surface (%.3f s)", os.level,
+             tree.leaves.size(), tree.buildSeconds));
 
   Graph graph = formula.graph;
   const std::array<NodeId, 3> grad = gradient(graph, formula.root);
@@ -97,34 +98,35 @@ std::variant<MeshResult, std::string> buildMesh(const Formula& formula,
   for (unsigned t = 0; t < threads; ++t) evaluators.emplace_back(valueTape, gradientTape, params, capBall);
 
   auto t0 = Clock::now();
-  mesh::Grid grid(box, settings.level, evaluators);
-  grid.reserve(tree.leaves.size() + tree.leaves.size() / 8);
+  const mesh::Grid grid(box, settings.level);
   std::vector<std::uint64_t> seeds;
   seeds.reserve(tree.leaves.size());
   for (const OctreeLeaf& leaf : tree.leaves) seeds.push_back(mesh::packKey(leaf.cell[0], leaf.cell[1], leaf.cell[2]));
   const bool capBoxFaces = settings.cap && !ball;
   if (capBall) {
-    const auto onSphere = cellsOnSphere(box, settings.level, *ball);
-    seeds.insert(seeds.end(), onSphere.begin(), onSphere.end());
+    const std::uint32_t b = grid.brickCells();
+    for (std::uint64_t cell : cellsOnSphere(box, settings.level, *ball))
+      seeds.push_back(mesh::packKey(mesh::keyAxis(cell, 0) / b, mesh::keyAxis(cell, 1) / b, mesh::keyAxis(cell, 2) / b));
   }
+  std::optional<mesh::BoxFaces> boxFaces;
   if (capBoxFaces) {
-    grid.evaluate(mesh::boxFaceCorners(n));
-    const auto beside = mesh::cellsBesideCrossedFaces(grid);
+    boxFaces.emplace(grid, evaluators.front());
+    const auto beside = boxFaces->bricksBesideCrossedSquares();
     seeds.insert(seeds.end(), beside.begin(), beside.end());
   }
-  grid.addCells(std::move(seeds));
-  stats.cells = grid.cells().size();
-  stats.gridValues = grid.valueCount();
-  const mesh::Marched marched = mesh::marchCells(grid);
+  const mesh::Marched marched = mesh::marchBricks(grid, std::move(seeds), evaluators);
+  stats.gridValues = marched.bricks * grid.brickCornerCount();
+  stats.cells = marched.cells;
   stats.gridSeconds = since(t0);
-  say(format("grid: %zu cells marched, F at %zu corners, %zu edges cross the surface (%.3f s)",
-             stats.cells, stats.gridValues, marched.edges.size(), stats.gridSeconds));
+  say(format("grid: %zu bricks of %u^3 cells, F at %zu corners, %zu cells and %zu edges cross the surface (%.3f s)",
+             marched.bricks, grid.brickCells(), stats.gridValues, stats.cells, marched.edges.size(),
+             stats.gridSeconds));
 
   t0 = Clock::now();
   Mesh& mesh = result.mesh;
   stats.maxResidual = mesh::placeRoots(grid, marched, evaluators, mesh);
   mesh::addTriangles(marched, mesh);
-  if (capBoxFaces) mesh::capBox(grid, marched, mesh);
+  if (boxFaces) mesh::capBox(grid, *boxFaces, marched, mesh);
   if (ball && !settings.cap) {
     mesh::FieldEvaluator plain(valueTape, gradientTape, params, std::nullopt);
     mesh::clipBall(*ball, stats.cellSize, plain, mesh);

@@ -46,6 +46,36 @@ TEST(MeshTopology, SphereIsAClosedManifoldOfEulerCharacteristicTwo) {
   }
 }
 
+// Below level 3 a brick is the whole domain (2 or 4 cells a side): still a closed sphere.
+TEST(MeshTopology, CoarsestLevelsAreClosedToo) {
+  for (int level : {1, 2}) {
+    SCOPED_TRACE(level);
+    const MeshTopology t = checkMesh(meshOf("x^2 + y^2 + z^2 - 1", cube(1.5), level).mesh);
+    EXPECT_TRUE(t.closedManifold());
+    EXPECT_EQ(t.euler, 2);
+  }
+}
+
+// The bricks are evaluated and the roots refined on several threads; the mesh must not
+// depend on how the work was shared.
+TEST(MeshTopology, SameMeshWhateverTheThreadCount) {
+  const Formula f = std::get<Formula>(parseFormula(
+      "4*(2.618*x^2 - y^2)*(2.618*y^2 - z^2)*(2.618*z^2 - x^2) - 4.236*(x^2 + y^2 + z^2 - 1)^2"));
+  std::vector<Mesh> meshes;
+  for (unsigned threads : {1u, 2u, 5u}) {
+    MeshSettings s;
+    s.level = 6;
+    s.cap = true;
+    s.threads = threads;
+    meshes.push_back(std::get<MeshResult>(buildMesh(f, {}, cube(1.5), std::nullopt, s)).mesh);
+  }
+  for (std::size_t i = 1; i < meshes.size(); ++i) {
+    EXPECT_EQ(meshes[i].positions, meshes[0].positions);
+    EXPECT_EQ(meshes[i].triangles, meshes[0].triangles);
+  }
+  EXPECT_GT(meshes[0].triangles.size(), 10000u);
+}
+
 TEST(MeshTopology, SphereInABallDomainIsClosedToo) {
   const MeshResult r = meshOf("x^2 + y^2 + z^2 - 1", cube(1.5), 6, false, Ball{{0, 0, 0}, 1.5});
   expectClosed(checkMesh(r.mesh), 2);
