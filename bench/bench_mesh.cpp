@@ -1,6 +1,6 @@
 // `zeroset mesh` without the file: the Barth sextic and the Endraß octic at level 8 with 2
 // threads (the goals of docs/mesh.md), and the sphere for scale. Counters: triangles, cells
-// marched, and the largest |F|/|grad F| at a vertex in cells.
+// the zero set crosses, and the largest |F|/|grad F| at a vertex in cells.
 #include <benchmark/benchmark.h>
 
 #include <string>
