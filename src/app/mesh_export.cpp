@@ -61,8 +61,8 @@ std::string meshSummary(const MeshExportReport& r, const std::string& output) {
   if (t.closedManifold()) {
     shape = "a closed 2-manifold, consistently oriented";
   } else if (t.nonManifoldEdges == 0 && t.misorientedEdges == 0 && t.nonManifoldVertices == 0) {
-    shape = "a 2-manifold whose boundary (" + std::to_string(t.boundaryEdges) +
-            " edges) lies on the domain";
+    shape = "a 2-manifold whose boundary (" + std::to_string(t.boundaryEdges) + " edges) lies on the domain" +
+            (s.poleVertices > 0 ? " and where F changes sign without a root" : "");
   } else {
     shape = "NOT a manifold: " + std::to_string(t.nonManifoldEdges) + " edges in 3+ triangles, " +
             std::to_string(t.misorientedEdges) + " misoriented, " +

@@ -13,8 +13,15 @@ namespace {
 // One edge's bracket [lo, hi] (in the edge's parameter) with value(lo) < 0 <= value(hi).
 struct Bracket {
   double lo = 0, hi = 1, flo = 0, fhi = 0, t = 0.5, scale = 0;
-  int side = 0;  // which end moved last: -1 lo, 1 hi
+  double last = 0;  // the value at t
+  int side = 0;     // which end moved last: -1 lo, 1 hi
 };
+
+// Where the refined bracket ends with the field far from 0, the sign changed without a
+// root: at a pole |F| grows without bound, at a jump or at the edge of F's domain it stays
+// away from 0. A root of a continuous F leaves |F| at 10^-10 of the change along the edge,
+// or the bracket 10^-12 of the edge wide.
+constexpr double kRootTolerance = 1e-3;
 
 // Illinois while both ends are finite, bisection while an end is undefined or infinite.
 double nextGuess(const Bracket& k) {
@@ -25,6 +32,7 @@ double nextGuess(const Bracket& k) {
 
 // Takes the value at the guess; false when the edge is settled.
 bool update(Bracket& k, double v) {
+  k.last = v;
   if (v < 0) {
     k.lo = k.t;
     k.flo = v;
@@ -59,8 +67,10 @@ void FieldEvaluator::rootsOnEdges(std::span<const Edge> edges, std::span<Root> r
     const Edge* e = &edges[at];
     std::size_t live = 0;
     for (std::size_t k = 0; k < count; ++k) {
-      const double scale = std::abs(e[k].va) + (std::isfinite(e[k].vb) ? std::abs(e[k].vb) : 0.0);
-      brackets[k] = Bracket{0, 1, e[k].va, e[k].vb, 0.5, scale, 0};
+      // The change of F along the edge, from its finite ends (an infinite end is a pole).
+      const double scale = (std::isfinite(e[k].va) ? std::abs(e[k].va) : 0.0) +
+                           (std::isfinite(e[k].vb) ? std::abs(e[k].vb) : 0.0);
+      brackets[k] = Bracket{0, 1, e[k].va, e[k].vb, 0.5, scale, e[k].va, 0};
       active[live++] = std::uint32_t(k);
     }
     for (int step = 0; step < kMaxSteps && live > 0; ++step) {
@@ -97,6 +107,7 @@ void FieldEvaluator::rootsOnEdges(std::span<const Edge> edges, std::span<Root> r
         for (std::size_t a = 0; a < 3; ++a) r.gradient[a] = r.position[a] - capBall_->center[a];
         continue;
       }
+      r.pole = !(std::abs(brackets[k].last) <= kRootTolerance * brackets[k].scale);
       r.gradient = {g[1], g[2], g[3]};
       const double len = std::sqrt(g[1] * g[1] + g[2] * g[2] + g[3] * g[3]);
       r.residual = len > 0 ? std::abs(g[0]) / len : (g[0] == 0 ? 0.0 : INFINITY);

@@ -35,6 +35,7 @@ class FieldEvaluator {
     P3 gradient{};     // of the piece that vanishes there (F, or the ball's distance)
     double residual = 0;  // |F| / |grad F| there; 0 on the ball's sphere
     bool onBall = false;  // the ball's sphere, not F, vanishes here (the cap)
+    bool pole = false;    // F changes sign here without vanishing (VertexKind::Pole)
   };
   struct Edge {
     P3 a{}, b{};

@@ -230,8 +230,8 @@ double placeRoots(const Grid& grid, const Marched& marched, std::span<FieldEvalu
         // positive) still points out of the solid.
         const std::array<float, 3> along = unit({q.b[0] - q.a[0], q.b[1] - q.a[1], q.b[2] - q.a[2]}, {0, 0, 1});
         mesh.normals[i] = unit(r.gradient, along);
-        mesh.kinds[i] = r.onBall ? VertexKind::Cap : VertexKind::Surface;
-        if (!r.onBall) worst[t] = std::max(worst[t], r.residual);
+        mesh.kinds[i] = r.onBall ? VertexKind::Cap : (r.pole ? VertexKind::Pole : VertexKind::Surface);
+        if (mesh.kinds[i] == VertexKind::Surface) worst[t] = std::max(worst[t], r.residual);
       }
     }
   };
@@ -259,6 +259,17 @@ void addTriangles(const Marched& marched, Mesh& mesh) {
       mesh.triangles.push_back({q[1], q[2], q[3]});
     }
   }
+}
+
+std::size_t dropPoleTriangles(Mesh& mesh) {
+  std::size_t poles = 0;
+  for (VertexKind k : mesh.kinds) poles += k == VertexKind::Pole;
+  if (poles == 0) return 0;
+  std::erase_if(mesh.triangles, [&](const std::array<std::uint32_t, 3>& t) {
+    return mesh.kinds[t[0]] == VertexKind::Pole || mesh.kinds[t[1]] == VertexKind::Pole ||
+           mesh.kinds[t[2]] == VertexKind::Pole;
+  });
+  return poles;
 }
 
 void dropUnusedVertices(Mesh& mesh) {

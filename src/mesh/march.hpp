@@ -67,6 +67,10 @@ void capBox(const Grid& grid, const BoxFaces& faces, const Marched& marched, Mes
 
 void clipBall(const Ball& ball, double cellSize, FieldEvaluator& evaluator, Mesh& mesh);
 
+// Without a cap: drops the triangles at a pole, a jump or the edge of F's domain (a vertex of
+// VertexKind::Pole); returns how many such vertices there were.
+std::size_t dropPoleTriangles(Mesh& mesh);
+
 // Drops the vertices no triangle uses, renumbering the triangles.
 void dropUnusedVertices(Mesh& mesh);
 

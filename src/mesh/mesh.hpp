@@ -33,8 +33,11 @@ struct MeshSettings {
 inline constexpr int kMaxMeshLevel = 12;
 
 // Where a vertex lies: on F = 0 (a root on a grid edge, or F = 0 on the ball's sphere for
-// an open ball domain) or on the cap, the domain boundary where F < 0.
-enum class VertexKind : std::uint8_t { Surface, Cap };
+// an open ball domain), on the cap (the domain boundary where F < 0), or where F changes
+// sign without vanishing (a pole, a jump, the edge of F's domain): such vertices bound the
+// capped solid {F < 0} but are not part of F = 0, so without a cap their triangles are left
+// out.
+enum class VertexKind : std::uint8_t { Surface, Cap, Pole };
 
 struct Mesh {
   std::vector<std::array<double, 3>> positions;
@@ -50,6 +53,7 @@ struct MeshStats {
   double octreeSeconds = 0, gridSeconds = 0, rootSeconds = 0, totalSeconds = 0;
   double cellSize = 0;            // the grid's smallest cell edge
   double maxResidual = 0;         // largest |F| / |grad F| at a surface vertex
+  std::size_t poleVertices = 0;   // sign changes without a root (VertexKind::Pole)
 };
 
 struct MeshResult {

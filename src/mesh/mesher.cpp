@@ -1,5 +1,6 @@
 // buildMesh: the octree's leaves seed the sparse grid, the grid is closed and marched, the
 // vertices go onto their edges' roots, then the domain's boundary is capped or cut.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -127,6 +128,9 @@ std::variant<MeshResult, std::string> buildMesh(const Formula& formula,
   stats.maxResidual = mesh::placeRoots(grid, marched, evaluators, mesh);
   mesh::addTriangles(marched, mesh);
   if (boxFaces) mesh::capBox(grid, *boxFaces, marched, mesh);
+  // Sign changes without a root bound the capped solid; they are not part of F = 0.
+  stats.poleVertices = std::size_t(std::count(mesh.kinds.begin(), mesh.kinds.end(), VertexKind::Pole));
+  if (!settings.cap) zs::mesh::dropPoleTriangles(mesh);
   if (ball && !settings.cap) {
     mesh::FieldEvaluator plain(valueTape, gradientTape, params, std::nullopt);
     mesh::clipBall(*ball, stats.cellSize, plain, mesh);
@@ -136,6 +140,9 @@ std::variant<MeshResult, std::string> buildMesh(const Formula& formula,
   stats.totalSeconds = since(start);
   say(format("surface: %zu vertices on their edges' roots, %zu triangles (%.3f s)",
              mesh.positions.size(), mesh.triangles.size(), stats.rootSeconds));
+  if (stats.poleVertices > 0)
+    say(format("%zu grid edges change sign without a root (a pole, a jump or the edge of F's domain): %s",
+               stats.poleVertices, settings.cap ? "they bound the capped solid" : "not part of the surface, left out"));
   return result;
 }
 
