@@ -1,7 +1,8 @@
 // ---- interval_prelude.frag.glsl (codegen stage): interval arithmetic for the interval
-// method (tracing.method = "interval"). Joined after raytrace_prelude.frag.glsl, before the
-// generated interval formula (zs_FInterval, src/codegen/emit_interval_glsl.cpp), which calls
-// one zsi_* rule per opcode (src/codegen/op_interval_glsl.cpp). The rules mirror the CPU's
+// method (tracing.method = "interval"). Joined after raytrace_prelude.frag.glsl, before
+// affine_prelude.frag.glsl (whose zsa_* rules fall back on these) and the generated interval
+// formulas (src/codegen/emit_interval_glsl.cpp): zs_FInterval calls one zsi_* rule per
+// opcode (src/codegen/op_interval_glsl.cpp). The rules mirror the CPU's
 // (src/interval): an interval is a vec2 (lo, hi); an operand that lies partly outside an
 // operation's domain is restricted to it (zsi_partial records that it happened), one wholly
 // outside sets the flag u (F is defined nowhere there).

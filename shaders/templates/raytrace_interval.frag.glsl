@@ -1,15 +1,20 @@
 // ---- raytrace_interval.frag.glsl (render stage): robust root finding for every formula
 // (tracing.method = "interval", docs/renderer.md). Follows raytrace_main.frag.glsl, the
-// interval prelude and the generated interval block (zs_FInterval) and defines rtFirstRoot()
-// (raytrace_first_roots.frag.glsl, after it, defines rtMarch()):
+// interval and affine preludes and the generated interval block (zs_FAffine) and defines
+// rtFirstRoot() (raytrace_first_roots.frag.glsl, after it, defines rtMarch()):
 //  1. The ray is clipped to the domain (box or ball) and to the box of the octree's leaves.
-//  2. Its segment is classified with interval arithmetic, walking the implicit binary tree
-//     of subsegments [k, k+1] 2^-level left to right with no stack (as the Bernstein method
-//     does): 0 not in F(segment) proves there is no root. Where F is defined and bounded on
-//     the whole segment and dF/dt keeps one sign, F is monotone: the signs of F at the two
-//     ends (one new evaluation per step; the left end's value is carried) decide between no
-//     root and exactly one. Otherwise the segment is halved. The first segment that holds a
-//     root holds the nearest one.
+//  2. Its segment is classified front to back, one subsegment [u, v] at a time, with F and
+//     dF/dt as affine forms along it (affine_prelude.frag.glsl: F(t) lies in c + s tau +- r,
+//     tau in [-1, 1]): 0 not in the form's range proves there is no root. Where F is
+//     defined and bounded on the whole segment and dF/dt keeps one sign, F is monotone: the
+//     signs of F at the two ends (one new evaluation per step; the left end's value is
+//     carried) decide between no root and exactly one. Otherwise the segment is clipped to
+//     where |c + s tau| <= r can hold (roots lie nowhere else), or halved where that keeps
+//     more than half of it, or quartered where the remainder r dwarfs the slope s (the form
+//     is far from first-order tight, and r shrinks with the square of the length). After a
+//     segment with no root comes the one to its right, 1.5 times as long. Only segments
+//     proven free of roots are passed, so the first segment that holds a root holds the
+//     nearest.
 //  3. Splitting stops at the pixel footprint (plus tracing.epsilon): a segment that small
 //     which still cannot be decided is drawn when F is defined and bounded on it (a
 //     tangency, a root of even multiplicity, a ray grazing the surface: bisected on the
@@ -19,21 +24,10 @@
 //  4. An isolated root is refined by the Illinois variant of regula falsi on F until its
 //     bracket is below tracing.epsilon.
 // llvmpipe runs every branch of a loop body for each group of pixels: the isolation body is
-// one interval evaluation and one point evaluation, refinement has its own loop, and loops
+// one affine evaluation and one point evaluation, refinement has its own loop, and loops
 // are do-while (a for loop runs its body once more, masked, after its last iteration).
 
 const int RT_MAX_STEPS = 256;  // safety bound on isolation + refinement steps per segment
-
-// The box the ray's points o + t d, t in [t0, t1], lie in, as computed in float too: the
-// point evaluations at the ends must fall inside it.
-void rtSegmentBox(vec3 o, vec3 d, float t0, float t1, out vec2 X, out vec2 Y, out vec2 Z) {
-  vec3 a = o + t0 * d, b = o + t1 * d;
-  vec3 slack = (abs(o) + abs(t0 * d) + abs(t1 * d)) * ZSI_REL + ZSI_TINY;
-  vec3 lo = min(a, b) - slack, hi = max(a, b) + slack;
-  X = vec2(lo.x, hi.x);
-  Y = vec2(lo.y, hi.y);
-  Z = vec2(lo.z, hi.z);
-}
 
 bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float tAfter) {
   float len = tb - ta;
@@ -42,24 +36,30 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   float fl = zs_F(o + ta * d), fr = 0.0;  // F at the left and right end of the segment
   bool dl = !zs_isUndefined(fl);
   bool done = !(len > 0.0), found = false, bracketed = false;
-  float u = 0.0, size = 1.0;  // the tree segment [u, u + size] being classified, in [0, 1]
+  float u = 0.0, v = 1.0;  // the segment [u, v] being classified, in [0, 1]
+  float least = rt.epsilon / len;  // the smallest step forward after a segment without root
   int step = 0;
   do {
-    float w = u + size, t0 = ta + len * u, t1 = ta + len * w;
-    vec2 X, Y, Z, F, D;
+    float t0 = ta + len * u, t1 = ta + len * v;
+    // t = tm + h tau, tau in [-1, 1], covers [t0, t1] as rounded.
+    float tm = 0.5 * t0 + 0.5 * t1;
+    float h = (0.5 * t1 - 0.5 * t0) * (1.0 + ZSI_REL) + abs(tm) * ZSI_REL + ZSI_TINY;
+    vec3 F;
+    vec2 D;
     bool partial;
-    rtSegmentBox(o, d, t0, t1, X, Y, Z);
-    zs_FInterval(X, Y, Z, d, F, D, partial);
+    zs_FAffine(o, d, tm, h, F, D, partial);
     fr = zs_F(o + t1 * d);
     bool dr = !zs_isUndefined(fr);
-    bool none = !(F.x <= 0.0 && F.y >= 0.0);  // also F undefined everywhere (F.x > F.y)
-    bool tame = !partial && F.x > -ZSI_INF && F.y < ZSI_INF;  // defined and bounded
+    vec2 range = zsa_range(F);
+    bool none = !(range.x <= 0.0 && range.y >= 0.0);  // also F undefined everywhere
+    bool tame = !partial && range.x > -ZSI_INF && range.y < ZSI_INF;  // defined and bounded
     bool monotone = tame && (D.x > 0.0 || D.y < 0.0);
     bool known = dl && dr;
     bool signChange = known && (fl == 0.0 || fr == 0.0 || (fl > 0.0) != (fr > 0.0));
     // Where F is tame, splitting goes on to tracing.epsilon, which places a tangency or a
     // thin sheet that precisely; where it is not, it stops at the pixel footprint.
     float footprint = rt.epsilon + pixel * (rt.ortho != 0 ? 1.0 : max(t0, 0.0));
+    float size = v - u;
     bool small = size * len <= (tame ? rt.epsilon : footprint);
     bool root = !none && signChange && (monotone || (small && tame));
     // Undecidable that small: drawn where F is tame (header, 3.).
@@ -67,21 +67,42 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     none = none || (monotone && known && !signChange) || (small && !root && !touch);
     found = root || touch;
     bracketed = root;
-    // Next: the left half of an undecided segment; after one with no root, the segment to
-    // the right, which starts at w and is as large as the highest tree node starting there:
-    // 2^(trailing zeros of its index at this level) times this one. Its left end's value is
-    // this one's right end's.
-    int index = int(w / size + 0.5);
-    float climbed = size * float(index & -index);
-    fl = none ? fr : fl;
-    dl = none ? dr : dl;
-    u = none ? w : u;
-    size = found ? size : (none ? climbed : 0.5 * size);
+    // Clipping (header, 2.): roots lie only where |c + s tau| <= r. The new ends are pulled
+    // out by a margin that covers the rounding of tau <-> t <-> u, so that the form alone
+    // proves F's sign there: F(new left end) has the sign of c + s tau, which is kept as its
+    // value (Illinois needs only its sign and a rough size).
+    float nu = u, nv = v, nfl = fl;
+    if (tame && !none && !found && F.y != 0.0) {
+      float q1 = (-F.z - F.x) / F.y, q2 = (F.z - F.x) / F.y;
+      float lo = min(q1, q2), hi = max(q1, q2);
+      float margin = (hi - lo) * 0.03125 + (abs(q1) + abs(q2)) * ZSI_REL +
+                     (abs(tm) + abs(ta) + len) * (8.0 * ZSI_REL) / h;
+      lo -= margin;
+      hi += margin;
+      float ul = (tm + h * lo - ta) / len, uh = (tm + h * hi - ta) / len;
+      float value = F.x + F.y * lo;
+      if (ul > u && lo > -1.0 && value != 0.0) { nu = ul; nfl = value; }
+      if (uh < v && hi < 1.0) nv = uh;
+      // The clipped range misses [u, v] (it lies in the rounding slack of tm +- h).
+      none = none || !(nu < nv);
+    }
+    // Next: after a segment with no root, the one to its right, 1.5 times as large (twice
+    // as large took more steps: the segment after a near miss is often undecided again);
+    // else the clipped segment, or the left half of it where clipping gained less than half.
+    float kept = nv - nu;
+    // Where the remainder dwarfs the slope the form is far from first-order tight (it
+    // shrinks with the square of the length): a quarter.
+    float part = F.z > 2.0 * abs(F.y) ? 0.25 : 0.5;
+    nv = (!found && kept > 0.5 * size) ? nu + part * kept : nv;
+    fl = none ? fr : (nu > u ? nfl : fl);
+    dl = none ? dr : (dl || nu > u);
+    u = none ? v : nu;
+    v = none ? min(1.0, v + max(1.5 * size, least)) : nv;
     done = done || found || u >= 1.0;
   } while (!done && ++step < RT_MAX_STEPS);
   found = found && u < 1.0 && len > 0.0;
-  float lo = u, hi = u + size, flo = fl, fhi = fr;
-  float x = (bracketed && flo == 0.0) ? lo : ((bracketed && fhi == 0.0) ? hi : u + 0.5 * size);
+  float lo = u, hi = v, flo = fl, fhi = fr;
+  float x = (bracketed && flo == 0.0) ? lo : ((bracketed && fhi == 0.0) ? hi : 0.5 * (u + v));
 
   // Illinois: regula falsi that halves the value kept at an end chosen twice in a row, so
   // both ends of the bracket converge (superlinearly) and it ends below tracing.epsilon.

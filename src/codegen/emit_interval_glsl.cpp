@@ -40,6 +40,80 @@ bool exactFloat(const Graph& g, NodeId id) {
   return lo == hi;
 }
 
+// What differs between the interval block and the affine one: the GLSL type of a node, the
+// names of x, y and z, how leaves are written, and the rule of each opcode.
+struct Flavor {
+  const char* type;   // "vec2" or "vec3"
+  const char* temp;   // temporaries' prefix: iN or aN
+  const char* vars[3];
+  const char* rules;  // rule prefix: zsi_ or zsa_
+  std::string (*constant)(double value);  // "" for NaN
+  std::string (*op)(Op, std::string_view, std::string_view, std::int32_t, std::string_view);
+};
+
+struct Bodies {
+  std::string f, grad;  // F's statements, then those of the nodes only the gradient reaches
+  std::vector<std::string> names;
+};
+
+// One `TYPE tN = RULE(...);` per non-leaf node of F (undefined flag zs_u), then per node only
+// the gradient reaches (zs_ug).
+Bodies emitNodes(const Graph& g, NodeId f, const std::array<NodeId, 3>& grad, const Flavor& k) {
+  const std::vector<NodeId> fNodes = reachable(g, {f});
+  const std::vector<NodeId> all = reachable(g, {f, grad[0], grad[1], grad[2]});
+  Bodies out;
+  out.names.resize(g.size());
+  std::vector<bool> inF(g.size(), false);
+  for (NodeId id : fNodes) inF[static_cast<std::size_t>(id)] = true;
+  std::size_t next = 0;
+  auto name = [&](NodeId id) -> const std::string& {
+    return out.names[static_cast<std::size_t>(id)];
+  };
+  const std::string type(k.type), rules(k.rules);
+  auto emit = [&](NodeId id, std::string& body, const char* flag) {
+    const Node& n = g[id];
+    std::string& own = out.names[static_cast<std::size_t>(id)];
+    switch (n.op) {
+      case Op::VarX: own = k.vars[0]; return;
+      case Op::VarY: own = k.vars[1]; return;
+      case Op::VarZ: own = k.vars[2]; return;
+      case Op::Param: own = rules + "point(zs_params[" + std::to_string(n.ival) + "])"; return;
+      case Op::Const:
+        own = k.constant(n.value);
+        if (own.empty()) {  // a NaN constant: F is undefined wherever it is used
+          own = type + "(0.0)";
+          body += std::string("  ") + flag + " = true;  // constant NaN\n";
+        }
+        return;
+      default: break;
+    }
+    own = k.temp + std::to_string(next++);
+    // A product with a constant that is a float is a scaling: two products, not four.
+    const NodeId scalar = n.op != Op::Mul ? kNoNode : exactFloat(g, n.a) ? n.a : exactFloat(g, n.b) ? n.b : kNoNode;
+    if (scalar != kNoNode) {
+      const NodeId other = scalar == n.a ? n.b : n.a;
+      body += "  " + type + " " + own + " = " + rules + "scale(" + name(other) + ", " +
+              floatText(float(g[scalar].value)) + ");\n";
+      return;
+    }
+    body += "  " + type + " " + own + " = " +
+            k.op(n.op, name(n.a), n.b == kNoNode ? "" : name(n.b), n.ival, flag) + ";\n";
+  };
+  for (NodeId id : fNodes) emit(id, out.f, "zs_u");
+  for (NodeId id : all) {
+    if (!inF[static_cast<std::size_t>(id)]) emit(id, out.grad, "zs_ug");
+  }
+  return out;
+}
+
+// A constant as an affine form: itself where it is a float, else its float enclosure's.
+std::string affineConstant(double value) {
+  if (std::isnan(value)) return "";
+  const auto [lo, hi] = floatEnclosure(value);
+  if (lo == hi) return "vec3(" + floatText(lo) + ", 0.0, 0.0)";
+  return "zsa_fromInterval(" + glslIntervalLiteral(value) + ")";
+}
+
 }  // namespace
 
 std::string glslIntervalLiteral(double value) {
@@ -50,61 +124,40 @@ std::string glslIntervalLiteral(double value) {
 }
 
 IntervalGlsl emitIntervalGlsl(const Graph& g, NodeId f, const std::array<NodeId, 3>& grad) {
-  const std::vector<NodeId> fNodes = reachable(g, {f});
-  const std::vector<NodeId> all = reachable(g, {f, grad[0], grad[1], grad[2]});
-  std::vector<std::string> names(g.size());
-  std::vector<bool> inF(g.size(), false);
-  for (NodeId id : fNodes) inF[static_cast<std::size_t>(id)] = true;
-
-  std::string fBody, gradBody;
-  std::size_t next = 0;
-  auto name = [&](NodeId id) -> const std::string& { return names[static_cast<std::size_t>(id)]; };
-  auto emit = [&](NodeId id, std::string& body, const char* flag) {
-    const Node& n = g[id];
-    std::string& own = names[static_cast<std::size_t>(id)];
-    switch (n.op) {
-      case Op::VarX: own = "X"; return;
-      case Op::VarY: own = "Y"; return;
-      case Op::VarZ: own = "Z"; return;
-      case Op::Param: own = "zsi_point(zs_params[" + std::to_string(n.ival) + "])"; return;
-      case Op::Const:
-        own = glslIntervalLiteral(n.value);
-        if (own.empty()) {  // a NaN constant: F is undefined wherever it is used
-          own = "vec2(0.0)";
-          body += std::string("  ") + flag + " = true;  // constant NaN\n";
-        }
-        return;
-      default: break;
-    }
-    own = "i" + std::to_string(next++);
-    // A product with a constant that is a float is a scaling: two products, not four.
-    const NodeId scalar = n.op != Op::Mul ? kNoNode : exactFloat(g, n.a) ? n.a : exactFloat(g, n.b) ? n.b : kNoNode;
-    if (scalar != kNoNode) {
-      const NodeId other = scalar == n.a ? n.b : n.a;
-      body += "  vec2 " + own + " = zsi_scale(" + name(other) + ", " +
-              floatText(float(g[scalar].value)) + ");\n";
-      return;
-    }
-    body += "  vec2 " + own + " = " +
-            glslIntervalOpExpression(n.op, name(n.a), n.b == kNoNode ? "" : name(n.b), n.ival,
-                                     flag) +
-            ";\n";
-  };
-  for (NodeId id : fNodes) emit(id, fBody, "zs_u");
-  for (NodeId id : all) {
-    if (!inF[static_cast<std::size_t>(id)]) emit(id, gradBody, "zs_ug");
-  }
-
+  const Flavor interval{"vec2", "i", {"X", "Y", "Z"}, "zsi_", glslIntervalLiteral,
+                        glslIntervalOpExpression};
+  const Bodies box = emitNodes(g, f, grad, interval);
+  auto iname = [&](NodeId id) { return box.names[static_cast<std::size_t>(id)]; };
   std::string s = "// zeroset interval formula block (generated by src/codegen): F and dF/dt over a box.\n";
   s += "void zs_FInterval(vec2 X, vec2 Y, vec2 Z, vec3 d, out vec2 F, out vec2 D, out bool partial) {\n";
   s += "  bool zs_u = false;   // F is defined nowhere in the box\n";
   s += "  bool zs_ug = false;  // the gradient is defined nowhere in the box\n";
   s += "  zsi_partial = false;\n";
-  s += fBody;
+  s += box.f;
   s += "  partial = zsi_partial;\n";
-  s += gradBody;
-  s += "  zsi_finish(" + name(f) + ", zsi_dot(" + name(grad[0]) + ", " + name(grad[1]) + ", " +
-       name(grad[2]) + ", d), zs_u, zs_ug || zsi_partial, F, D);\n}\n";
+  s += box.grad;
+  s += "  zsi_finish(" + iname(f) + ", zsi_dot(" + iname(grad[0]) + ", " + iname(grad[1]) + ", " +
+       iname(grad[2]) + ", d), zs_u, zs_ug || zsi_partial, F, D);\n}\n";
+
+  // The same nodes as affine forms along the segment t = tm + h tau (vec3 (c, s, r),
+  // affine_prelude.frag.glsl): what the tracer calls.
+  const Flavor affine{"vec3", "a", {"AX", "AY", "AZ"}, "zsa_", affineConstant,
+                      glslAffineOpExpression};
+  const Bodies ray = emitNodes(g, f, grad, affine);
+  auto aname = [&](NodeId id) { return ray.names[static_cast<std::size_t>(id)]; };
+  s += "// F and dF/dt as affine forms in tau along the segment t = tm + h tau.\n";
+  s += "void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out bool "
+       "partial) {\n";
+  s += "  bool zs_u = false;   // F is defined nowhere on the segment\n";
+  s += "  bool zs_ug = false;  // the gradient is defined nowhere on the segment\n";
+  s += "  zsi_partial = false;\n";
+  s += "  vec3 AX = zsa_var(o.x, d.x, tm, h), AY = zsa_var(o.y, d.y, tm, h), "
+       "AZ = zsa_var(o.z, d.z, tm, h);\n";
+  s += ray.f;
+  s += "  partial = zsi_partial;\n";
+  s += ray.grad;
+  s += "  zsa_finish(" + aname(f) + ", zsa_dot(" + aname(grad[0]) + ", " + aname(grad[1]) + ", " +
+       aname(grad[2]) + ", d), zs_u, zs_ug || zsi_partial, F, D);\n}\n";
   return {s};
 }
 

@@ -11,7 +11,14 @@
 // divided by an interval holding 0 (F may be undefined or unbounded in part of the box).
 // Every non-leaf node becomes one `vec2 iN = zsi_<rule>(operands);`, with the rules of
 // op_interval_glsl.hpp and shaders/templates/interval_prelude.frag.glsl; constants are
-// rounded outward to floats. docs/codegen.md ("Interval GLSL") states the contract.
+// rounded outward to floats. Then the same nodes as affine forms along a ray segment, what
+// the tracer calls (shaders/templates/affine_prelude.frag.glsl, one `vec3 aN = zsa_<rule>`):
+//
+//   void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out bool partial)
+//
+// F = vec3(c, s, r) holds F(o + t d) in c + s tau +- r for t = tm + h tau, tau in [-1, 1]
+// (r = -1 where F is defined nowhere on the segment); D and `partial` as above, over the
+// segment. docs/codegen.md ("Interval GLSL") states the contract.
 #include <array>
 #include <string>
 

@@ -82,6 +82,8 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
   if (interval) {
     appendPiece(out, "shaders/templates/" + std::string(kIntervalPreludeTemplate), string++,
                 shaderTemplate(kIntervalPreludeTemplate));
+    appendPiece(out, "shaders/templates/" + std::string(kAffinePreludeTemplate), string++,
+                shaderTemplate(kAffinePreludeTemplate));
     appendPiece(out, "generated interval block (src/codegen/emit_interval_glsl.cpp)", string++,
                 interval->source);
   }

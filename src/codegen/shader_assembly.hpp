@@ -12,8 +12,9 @@
 //   raytrace_sampling.frag.glsl (rtMarch), or raytrace_bernstein.frag.glsl or
 //   raytrace_interval.frag.glsl (rtFirstRoot) and raytrace_first_roots.frag.glsl (rtMarch)
 //
-// The interval method has two more pieces after the formula block: interval_prelude.frag.glsl
-// (the zsi_* rules) and the generated interval block (zs_FInterval, emit_interval_glsl.hpp).
+// The interval method has three more pieces after the formula block: interval_prelude.frag.glsl
+// (the zsi_* rules), affine_prelude.frag.glsl (the zsa_* rules) and the generated interval
+// block (zs_FInterval and zs_FAffine, emit_interval_glsl.hpp).
 //
 // A comment naming its origin and `#line 1 <string>` precede pieces 2 and 3, so compiler
 // logs ("0:12", "1:7", "2:40") point into the right piece at the right line.
@@ -36,6 +37,7 @@ inline constexpr std::string_view kBernsteinTemplate = "raytrace_bernstein.frag.
 inline constexpr std::string_view kIntervalTemplate = "raytrace_interval.frag.glsl";
 inline constexpr std::string_view kFirstRootsTemplate = "raytrace_first_roots.frag.glsl";
 inline constexpr std::string_view kIntervalPreludeTemplate = "interval_prelude.frag.glsl";
+inline constexpr std::string_view kAffinePreludeTemplate = "affine_prelude.frag.glsl";
 inline constexpr std::string_view kVertexTemplate = "fullscreen.vert.glsl";
 inline constexpr std::string_view kFrameTemplate = "frame_params.glsl";  // both stages
 

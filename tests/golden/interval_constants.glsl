@@ -16,3 +16,21 @@ void zs_FInterval(vec2 X, vec2 Y, vec2 Z, vec3 d, out vec2 F, out vec2 D, out bo
   partial = zsi_partial;
   zsi_finish(i8, zsi_dot(vec2(0.099999994, 0.1), vec2(3.4028235e+38, ZSI_INF), vec2(0.0, 1.1754944e-38), d), zs_u, zs_ug || zsi_partial, F, D);
 }
+// F and dF/dt as affine forms in tau along the segment t = tm + h tau.
+void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out bool partial) {
+  bool zs_u = false;   // F is defined nowhere on the segment
+  bool zs_ug = false;  // the gradient is defined nowhere on the segment
+  zsi_partial = false;
+  vec3 AX = zsa_var(o.x, d.x, tm, h), AY = zsa_var(o.y, d.y, tm, h), AZ = zsa_var(o.z, d.z, tm, h);
+  vec3 a0 = zsa_mul(zsa_fromInterval(vec2(0.099999994, 0.1)), AX);
+  vec3 a1 = zsa_mul(zsa_fromInterval(vec2(3.4028235e+38, ZSI_INF)), AY);
+  vec3 a2 = zsa_add(a0, a1);
+  vec3 a3 = zsa_mul(zsa_fromInterval(vec2(0.0, 1.1754944e-38)), AZ);
+  vec3 a4 = zsa_add(a2, a3);
+  vec3 a5 = zsa_sub(a4, zsa_point(zs_params[0]));
+  vec3 a6 = zsa_sqrt(vec3((-1.0), 0.0, 0.0), zs_u);
+  vec3 a7 = zsa_scale(a6, 0.0);
+  vec3 a8 = zsa_add(a5, a7);
+  partial = zsi_partial;
+  zsa_finish(a8, zsa_dot(zsa_fromInterval(vec2(0.099999994, 0.1)), zsa_fromInterval(vec2(3.4028235e+38, ZSI_INF)), zsa_fromInterval(vec2(0.0, 1.1754944e-38)), d), zs_u, zs_ug || zsi_partial, F, D);
+}

@@ -30,3 +30,35 @@ void zs_FInterval(vec2 X, vec2 Y, vec2 Z, vec3 d, out vec2 F, out vec2 D, out bo
   vec2 i22 = zsi_add(i20, i21);
   zsi_finish(i10, zsi_dot(i14, i18, i22, d), zs_u, zs_ug || zsi_partial, F, D);
 }
+// F and dF/dt as affine forms in tau along the segment t = tm + h tau.
+void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out bool partial) {
+  bool zs_u = false;   // F is defined nowhere on the segment
+  bool zs_ug = false;  // the gradient is defined nowhere on the segment
+  zsi_partial = false;
+  vec3 AX = zsa_var(o.x, d.x, tm, h), AY = zsa_var(o.y, d.y, tm, h), AZ = zsa_var(o.z, d.z, tm, h);
+  vec3 a0 = zsa_sin(AX);
+  vec3 a1 = zsa_cos(AY);
+  vec3 a2 = zsa_mul(a0, a1);
+  vec3 a3 = zsa_sin(AY);
+  vec3 a4 = zsa_cos(AZ);
+  vec3 a5 = zsa_mul(a3, a4);
+  vec3 a6 = zsa_add(a2, a5);
+  vec3 a7 = zsa_sin(AZ);
+  vec3 a8 = zsa_cos(AX);
+  vec3 a9 = zsa_mul(a7, a8);
+  vec3 a10 = zsa_add(a6, a9);
+  partial = zsi_partial;
+  vec3 a11 = zsa_mul(a8, a1);
+  vec3 a12 = zsa_neg(a0);
+  vec3 a13 = zsa_mul(a7, a12);
+  vec3 a14 = zsa_add(a11, a13);
+  vec3 a15 = zsa_neg(a3);
+  vec3 a16 = zsa_mul(a0, a15);
+  vec3 a17 = zsa_mul(a1, a4);
+  vec3 a18 = zsa_add(a16, a17);
+  vec3 a19 = zsa_neg(a7);
+  vec3 a20 = zsa_mul(a3, a19);
+  vec3 a21 = zsa_mul(a4, a8);
+  vec3 a22 = zsa_add(a20, a21);
+  zsa_finish(a10, zsa_dot(a14, a18, a22, d), zs_u, zs_ug || zsi_partial, F, D);
+}

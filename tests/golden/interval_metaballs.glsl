@@ -52,3 +52,57 @@ void zs_FInterval(vec2 X, vec2 Y, vec2 Z, vec3 d, out vec2 F, out vec2 D, out bo
   vec2 i44 = zsi_add(i42, i43);
   zsi_finish(i23, zsi_dot(i31, i38, i44, d), zs_u, zs_ug || zsi_partial, F, D);
 }
+// F and dF/dt as affine forms in tau along the segment t = tm + h tau.
+void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out bool partial) {
+  bool zs_u = false;   // F is defined nowhere on the segment
+  bool zs_ug = false;  // the gradient is defined nowhere on the segment
+  zsi_partial = false;
+  vec3 AX = zsa_var(o.x, d.x, tm, h), AY = zsa_var(o.y, d.y, tm, h), AZ = zsa_var(o.z, d.z, tm, h);
+  vec3 a0 = zsa_sub(AX, vec3(0.5, 0.0, 0.0));
+  vec3 a1 = zsa_powi(a0, 2);
+  vec3 a2 = zsa_powi(AY, 2);
+  vec3 a3 = zsa_add(a1, a2);
+  vec3 a4 = zsa_powi(AZ, 2);
+  vec3 a5 = zsa_add(a3, a4);
+  vec3 a6 = zsa_scale(a5, (-4.0));
+  vec3 a7 = zsa_exp(a6);
+  vec3 a8 = zsa_add(AX, vec3(0.5, 0.0, 0.0));
+  vec3 a9 = zsa_powi(a8, 2);
+  vec3 a10 = zsa_add(a9, a2);
+  vec3 a11 = zsa_add(a10, a4);
+  vec3 a12 = zsa_scale(a11, (-4.0));
+  vec3 a13 = zsa_exp(a12);
+  vec3 a14 = zsa_add(a7, a13);
+  vec3 a15 = zsa_powi(AX, 2);
+  vec3 a16 = zsa_sub(AY, zsa_fromInterval(vec2(0.7, 0.70000005)));
+  vec3 a17 = zsa_powi(a16, 2);
+  vec3 a18 = zsa_add(a15, a17);
+  vec3 a19 = zsa_add(a18, a4);
+  vec3 a20 = zsa_scale(a19, (-4.0));
+  vec3 a21 = zsa_exp(a20);
+  vec3 a22 = zsa_add(a14, a21);
+  vec3 a23 = zsa_sub(a22, zsa_fromInterval(vec2(0.59999996, 0.6)));
+  partial = zsi_partial;
+  vec3 a24 = zsa_scale(a0, (-8.0));
+  vec3 a25 = zsa_mul(a7, a24);
+  vec3 a26 = zsa_scale(a8, (-8.0));
+  vec3 a27 = zsa_mul(a13, a26);
+  vec3 a28 = zsa_add(a25, a27);
+  vec3 a29 = zsa_scale(AX, (-8.0));
+  vec3 a30 = zsa_mul(a21, a29);
+  vec3 a31 = zsa_add(a28, a30);
+  vec3 a32 = zsa_scale(AY, (-8.0));
+  vec3 a33 = zsa_mul(a7, a32);
+  vec3 a34 = zsa_mul(a13, a32);
+  vec3 a35 = zsa_add(a33, a34);
+  vec3 a36 = zsa_scale(a16, (-8.0));
+  vec3 a37 = zsa_mul(a21, a36);
+  vec3 a38 = zsa_add(a35, a37);
+  vec3 a39 = zsa_scale(AZ, (-8.0));
+  vec3 a40 = zsa_mul(a7, a39);
+  vec3 a41 = zsa_mul(a13, a39);
+  vec3 a42 = zsa_add(a40, a41);
+  vec3 a43 = zsa_mul(a21, a39);
+  vec3 a44 = zsa_add(a42, a43);
+  zsa_finish(a23, zsa_dot(a31, a38, a44, d), zs_u, zs_ug || zsi_partial, F, D);
+}

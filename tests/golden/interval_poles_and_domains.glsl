@@ -42,3 +42,47 @@ void zs_FInterval(vec2 X, vec2 Y, vec2 Z, vec3 d, out vec2 F, out vec2 D, out bo
   vec2 i34 = zsi_add(i32, i33);
   zsi_finish(i14, zsi_dot(i23, i31, i34, d), zs_u, zs_ug || zsi_partial, F, D);
 }
+// F and dF/dt as affine forms in tau along the segment t = tm + h tau.
+void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out bool partial) {
+  bool zs_u = false;   // F is defined nowhere on the segment
+  bool zs_ug = false;  // the gradient is defined nowhere on the segment
+  zsi_partial = false;
+  vec3 AX = zsa_var(o.x, d.x, tm, h), AY = zsa_var(o.y, d.y, tm, h), AZ = zsa_var(o.z, d.z, tm, h);
+  vec3 a0 = zsa_div(vec3(1.0, 0.0, 0.0), AX);
+  vec3 a1 = zsa_sub(a0, vec3(1.0, 0.0, 0.0));
+  vec3 a2 = zsa_sqrt(AY, zs_u);
+  vec3 a3 = zsa_add(a1, a2);
+  vec3 a4 = zsa_powi(AZ, 2);
+  vec3 a5 = zsa_log(a4, zs_u);
+  vec3 a6 = zsa_add(a3, a5);
+  vec3 a7 = zsa_div(AX, vec3(2.0, 0.0, 0.0));
+  vec3 a8 = zsa_fromInterval(zsi_asin(zsa_range(a7), zs_u));
+  vec3 a9 = zsa_add(a6, a8);
+  vec3 a10 = zsa_div(AY, vec3(2.0, 0.0, 0.0));
+  vec3 a11 = zsa_fromInterval(zsi_acos(zsa_range(a10), zs_u));
+  vec3 a12 = zsa_add(a9, a11);
+  vec3 a13 = zsa_fromInterval(zsi_tan(zsa_range(AZ)));
+  vec3 a14 = zsa_add(a12, a13);
+  partial = zsi_partial;
+  vec3 a15 = zsa_powi(AX, 2);
+  vec3 a16 = zsa_div(vec3((-1.0), 0.0, 0.0), a15);
+  vec3 a17 = zsa_scale(a2, 2.0);
+  vec3 a18 = zsa_scale(AZ, 2.0);
+  vec3 a19 = zsa_powi(a7, 2);
+  vec3 a20 = zsa_sub(vec3(1.0, 0.0, 0.0), a19);
+  vec3 a21 = zsa_sqrt(a20, zs_ug);
+  vec3 a22 = zsa_div(vec3(0.5, 0.0, 0.0), a21);
+  vec3 a23 = zsa_add(a16, a22);
+  vec3 a24 = zsa_powi(a10, 2);
+  vec3 a25 = zsa_sub(vec3(1.0, 0.0, 0.0), a24);
+  vec3 a26 = zsa_sqrt(a25, zs_ug);
+  vec3 a27 = zsa_cos(AZ);
+  vec3 a28 = zsa_powi(a27, 2);
+  vec3 a29 = zsa_div(vec3(1.0, 0.0, 0.0), a17);
+  vec3 a30 = zsa_div(vec3(0.5, 0.0, 0.0), a26);
+  vec3 a31 = zsa_sub(a29, a30);
+  vec3 a32 = zsa_div(a18, a4);
+  vec3 a33 = zsa_div(vec3(1.0, 0.0, 0.0), a28);
+  vec3 a34 = zsa_add(a32, a33);
+  zsa_finish(a14, zsa_dot(a23, a31, a34, d), zs_u, zs_ug || zsi_partial, F, D);
+}

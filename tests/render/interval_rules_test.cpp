@@ -4,6 +4,9 @@
 // every value the operation takes at points of its operands (the ends and random points
 // between) must lie in the rule's result. This is the rounding contract of docs/codegen.md
 // ("Interval GLSL") checked on real hardware (llvmpipe here), which no CPU test can do.
+// The affine rules (affine_prelude.frag.glsl, codegen/op_interval_glsl.hpp) likewise: for
+// random forms c + s tau +- r of the operands sharing one tau, the value of the operation at
+// every sampled tau and remainder must lie within the rule's form at that tau.
 #include <gtest/gtest.h>
 #include <glad/gl.h>
 
@@ -77,10 +80,30 @@ const char* kVertex =
     "  gl_Position = vec4(p, 0.0, 1.0);\n"
     "}\n";
 
-// Runs `rule` on the GPU for the given operands (a.lo, a.hi, b.lo, b.hi per lane).
-std::vector<float> runOnGpu(const Rule& rule, const std::vector<float>& operands,
+// The interval and affine preludes and a main() that applies the affine rule of `rule` to the
+// forms of its pixel (a in zsTestInput[2 i].xyz, b in zsTestInput[2 i + 1].xyz): out (c, s, r,
+// undefined everywhere).
+std::string affineFragmentSource(const Rule& rule) {
+  std::string s(shaderTemplate(kPreludeTemplate));
+  s += shaderTemplate(kIntervalPreludeTemplate);
+  s += shaderTemplate(kAffinePreludeTemplate);
+  s += "uniform vec4 zsTestInput[" + std::to_string(2 * kLanes) + "];\n"
+       "out vec4 zsTestOut;\n"
+       "void main() {\n"
+       "  int i = int(gl_FragCoord.x);\n"
+       "  vec3 a = zsTestInput[2 * i].xyz, b = zsTestInput[2 * i + 1].xyz;\n"
+       "  bool u = false;\n"
+       "  zsi_partial = false;\n"
+       "  vec3 r = " + glslAffineOpExpression(rule.op, "a", "b", rule.ival, "u") + ";\n"
+       "  zsTestOut = vec4(r, u ? 1.0 : 0.0);\n"
+       "}\n";
+  return s;
+}
+
+// Runs a test shader on the GPU, one lane per pixel, with `operands` as zsTestInput.
+std::vector<float> runOnGpu(const std::string& fragment, const std::vector<float>& operands,
                             std::string& error) {
-  const unsigned program = compileProgram(kVertex, fragmentSource(rule), error);
+  const unsigned program = compileProgram(kVertex, fragment, error);
   if (program == 0) return {};
   GLuint fbo = 0, texture = 0, vao = 0;
   glGenTextures(1, &texture);
@@ -92,7 +115,8 @@ std::vector<float> runOnGpu(const Rule& rule, const std::vector<float>& operands
   glGenVertexArrays(1, &vao);
   glBindVertexArray(vao);
   glUseProgram(program);
-  glUniform4fv(glGetUniformLocation(program, "zsTestInput"), kLanes, operands.data());
+  glUniform4fv(glGetUniformLocation(program, "zsTestInput"), GLsizei(operands.size() / 4),
+               operands.data());
   glViewport(0, 0, kLanes, 1);
   glDisable(GL_SCISSOR_TEST);
   glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -127,7 +151,7 @@ TEST(IntervalRules, EveryRuleEnclosesTheOperationOnThisGpu) {
         operands[4 * i + 2 * k + 1] = hi;
       }
     }
-    const std::vector<float> out = runOnGpu(rule, operands, error);
+    const std::vector<float> out = runOnGpu(fragmentSource(rule), operands, error);
     ASSERT_EQ(error, "");
     int checked = 0, escaped = 0;
     for (int i = 0; i < kLanes; ++i) {
@@ -147,6 +171,62 @@ TEST(IntervalRules, EveryRuleEnclosesTheOperationOnThisGpu) {
           ADD_FAILURE() << name << ": op(" << x << ", " << y << ") = " << v
                         << " escapes the GPU's [" << rlo << ", " << rhi << "] for operands ["
                         << alo << ", " << ahi << "], [" << blo << ", " << bhi << "]"
+                        << (undefinedEverywhere ? " (flagged undefined everywhere)" : "");
+        }
+      }
+    }
+    EXPECT_GT(checked, kLanes * 4) << "too few defined points: the comparison means little";
+  }
+}
+
+TEST(AffineRules, EveryRuleEnclosesTheOperationAlongTheSegmentOnThisGpu) {
+  std::string error;
+  ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
+  std::mt19937_64 rng(1124);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), sym(-1.0, 1.0);
+  for (const Rule& rule : kRules) {
+    const std::string name = std::string(opInfo(rule.op).enumName) +
+                             (rule.op == Op::PowI ? std::to_string(rule.ival) : "") + " on [" +
+                             std::to_string(rule.lo) + ", " + std::to_string(rule.hi) + "]";
+    SCOPED_TRACE(name);
+    std::uniform_real_distribution<double> at(rule.lo, rule.hi);
+    // Forms (c, s, r): half-widths from rule.maxWidth / 2 down to a thousandth of it (short
+    // segments are where the first-order rules act); every 8th operand a point.
+    std::vector<float> operands(8 * kLanes, 0.0f);
+    for (int i = 0; i < kLanes; ++i) {
+      for (int k = 0; k < 2; ++k) {
+        const double half = 0.5 * rule.maxWidth * std::pow(10.0, -3.0 * unit(rng));
+        float* f = &operands[8 * i + 4 * k];
+        f[0] = float(at(rng));
+        f[1] = i % 8 == 0 ? 0.0f : float(half * sym(rng));
+        f[2] = i % 8 == 0 ? 0.0f : float(0.2 * half * unit(rng));
+      }
+    }
+    const std::vector<float> out = runOnGpu(affineFragmentSource(rule), operands, error);
+    ASSERT_EQ(error, "");
+    int checked = 0, escaped = 0;
+    for (int i = 0; i < kLanes; ++i) {
+      const float* a = &operands[8 * i];
+      const float* b = &operands[8 * i + 4];
+      const double c = out[4 * i], slope = out[4 * i + 1], r = out[4 * i + 2];
+      const bool undefinedEverywhere = out[4 * i + 3] != 0.0f;
+      for (int n = 0; n < 40; ++n) {
+        // The ends of tau and of both remainders first, then random points.
+        const double tau = n < 8 ? ((n & 1) ? 1.0 : -1.0) : sym(rng);
+        const double ea = n < 8 ? ((n & 2) ? 1.0 : -1.0) : sym(rng);
+        const double eb = n < 8 ? ((n & 4) ? 1.0 : -1.0) : sym(rng);
+        const double x = double(a[0]) + double(a[1]) * tau + double(a[2]) * ea;
+        const double y = double(b[0]) + double(b[1]) * tau + double(b[2]) * eb;
+        const double v = applyScalar(rule.op, x, y, rule.ival, 0.0);
+        if (std::isnan(v)) continue;  // outside the operation's domain
+        ++checked;
+        const double mid = c + slope * tau;
+        const bool inside = !undefinedEverywhere && mid - r <= v && v <= mid + r;
+        if (!inside && escaped++ < 5) {
+          ADD_FAILURE() << name << ": op(" << x << ", " << y << ") = " << v << " at tau " << tau
+                        << " escapes the GPU's " << c << " + " << slope << " tau +- " << r
+                        << " for operands (" << a[0] << ", " << a[1] << ", " << a[2] << "), ("
+                        << b[0] << ", " << b[1] << ", " << b[2] << ")"
                         << (undefinedEverywhere ? " (flagged undefined everywhere)" : "");
         }
       }

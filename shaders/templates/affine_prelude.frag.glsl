@@ -1,0 +1,208 @@
+// ---- affine_prelude.frag.glsl (codegen stage): first-order enclosures along the ray for the
+// interval method (tracing.method = "interval"). Joined after interval_prelude.frag.glsl, whose
+// zsi_* rules it falls back on, before the generated interval block, whose zs_FAffine calls
+// one zsa_* rule per opcode (src/codegen/op_interval_glsl.cpp).
+//
+// Why: the natural interval extension forgets that x, y and z move together along a ray, so
+// sin x cos y over a segment is as wide as over the segment's whole box and rays split far
+// down. Here every quantity is a function of tau in [-1, 1], where the segment is
+// t = tm + h tau, enclosed by an affine form vec3(c, s, r): each of its values at tau lies in
+// c + s tau +- r (reduced affine arithmetic, Knoll et al. 2009; a Taylor model of order 1).
+// The remainder r of a product or of sin of a short segment shrinks with the square of its
+// length, so F's enclosure is tight enough to clip the segment to where c + s tau +- r can
+// hold 0 (raytrace_interval.frag.glsl).
+//
+// Rounding: as the interval rules (docs/codegen.md, "Interval GLSL"): r is widened after
+// each rule by ZSI_REL of the magnitudes that were rounded (twice that for the products),
+// plus FLT_MIN; function values and slopes carry the built-in functions' margins. An
+// operation without a first-order rule, or whose operand's range leaves the function's
+// domain, goes through its interval rule (zsa_fromInterval(zsi_*(zsa_range(a)))), which keeps
+// the flags `u` and zsi_partial exactly as the interval block sets them. A NaN anywhere
+// (overflow) makes the range the whole line: only looser.
+
+// The form of a float interval (s = 0); unbounded ends give the whole line.
+vec3 zsa_fromInterval(vec2 I) {
+  if (!(I.x > -ZSI_INF && I.y < ZSI_INF)) return vec3(0.0, 0.0, ZSI_INF);
+  float c = 0.5 * I.x + 0.5 * I.y, r = 0.5 * I.y - 0.5 * I.x;
+  return vec3(c, 0.0, r + (abs(c) + abs(r)) * ZSI_REL + ZSI_TINY);
+}
+
+// Every value the form takes on [-1, 1], outward; NaN ends are unbounded.
+vec2 zsa_range(vec3 a) {
+  float w = abs(a.y) + a.z;
+  return zsi_unNaN(zsi_out(vec2(a.x - w, a.x + w)));
+}
+
+// The coordinate o + d t on the segment; the slack also covers the point evaluations of the
+// tracer at the segment's ends, which compute o + t d in float.
+vec3 zsa_var(float o, float d, float tm, float h) {
+  float c = o + d * tm, s = d * h;
+  return vec3(c, s, (abs(o) + abs(d * tm) + abs(s)) * (2.0 * ZSI_REL) + ZSI_TINY);
+}
+vec3 zsa_point(float v) { return vec3(v, 0.0, abs(v) * ZSI_REL + ZSI_TINY); }
+
+vec3 zsa_round(vec3 v, float magnitude, float rel) {
+  return vec3(v.xy, v.z + (magnitude + v.z) * rel + ZSI_TINY);
+}
+
+vec3 zsa_neg(vec3 a) { return vec3(-a.xy, a.z); }
+vec3 zsa_add(vec3 a, vec3 b) {
+  vec3 v = vec3(a.xy + b.xy, a.z + b.z);
+  return zsa_round(v, abs(v.x) + abs(v.y), ZSI_REL);
+}
+vec3 zsa_sub(vec3 a, vec3 b) { return zsa_add(a, zsa_neg(b)); }
+vec3 zsa_scale(vec3 a, float k) {
+  if (k == 0.0) return vec3(0.0);  // 0 * inf is 0 here, as in zsi_scale
+  vec3 v = vec3(a.xy * k, a.z * abs(k));
+  return zsa_round(v, abs(v.x) + abs(v.y), ZSI_REL);
+}
+
+// (ca + sa tau + ea)(cb + sb tau + eb): the tau^2 term sa sb tau^2 lies in sa sb (1/2 +- 1/2),
+// so half of it moves into the center; the cross terms with the e's go into r.
+vec3 zsa_mul(vec3 a, vec3 b) {
+  float ss = a.y * b.y, cc = a.x * b.x;
+  float cs = a.x * b.y, sc = b.x * a.y;
+  vec2 as = abs(a.xy), bs = abs(b.xy);
+  float r = as.x * b.z + bs.x * a.z + 0.5 * abs(ss) + (as.y + a.z) * b.z + a.z * bs.y;
+  vec3 v = vec3(cc + 0.5 * ss, cs + sc, r);
+  return zsa_round(v, abs(cc) + abs(ss) + abs(cs) + abs(sc), 2.0 * ZSI_REL);
+}
+// (c + s tau + e)^2 = c^2 + s^2/2 + 2 c s tau + s^2 (tau^2 - 1/2) + 2 (c + s tau) e + e^2.
+vec3 zsa_sqr(vec3 a) {
+  float ss = a.y * a.y, cc = a.x * a.x, cs = 2.0 * a.x * a.y;
+  float r = 0.5 * ss + 2.0 * (abs(a.x) + abs(a.y)) * a.z + a.z * a.z;
+  return zsa_round(vec3(cc + 0.5 * ss, cs, r), cc + ss + abs(cs), 2.0 * ZSI_REL);
+}
+
+// The tighter of a first-order result and the interval rule's result over the same operand
+// range (a long segment's Taylor remainder can exceed the function's whole range).
+vec3 zsa_tighter(vec3 A, vec2 I) {
+  return (abs(A.y) + A.z <= 0.5 * (I.y - I.x)) ? A : zsa_fromInterval(I);
+}
+
+// f(x) for x = c + s tau + e with |s| + r <= R, from f(c) = v and f'(c) = p (each computed to
+// within err) and the range q of f'' over c +- R: f(x) = f(c) + f'(c)(x - c) + f''(xi)/2 (x - c)^2
+// with (x - c)^2 in [0, R^2] (Lagrange).
+vec3 zsa_taylor(vec3 a, float R, float v, float p, float err, vec2 q) {
+  float half2 = 0.5 * R * R * (1.0 + 4.0 * ZSI_REL);
+  vec2 quad = half2 * vec2(min(q.x, 0.0), max(q.y, 0.0));
+  float s = p * a.y;
+  float r = (abs(p) + err) * a.z + err * (abs(a.y) + 1.0) + 0.5 * (quad.y - quad.x);
+  vec3 t = vec3(v + 0.5 * (quad.x + quad.y), s, r);
+  return zsa_round(t, abs(v) + abs(quad.x) + abs(quad.y) + abs(s), 2.0 * ZSI_REL);
+}
+float zsa_radius(vec3 a) { return (abs(a.y) + a.z) * (1.0 + ZSI_REL); }
+
+// sin and cos: one sin and one cos of the center serve the value, the slope and the range of
+// f'' (= -f) over c +- R, which is f(c) +- (R |f'(c)| + R^2/2) (the interval rule's Taylor
+// range, zsi_taylorTrig, without its clamping). The form is exact enough wherever it is
+// narrower than [-1, 1]; where it is not (long segments), [-1, 1] itself.
+vec3 zsa_trig(vec3 a, float R, float v, float p) {
+  float err = ZSI_FN_REL + ZSI_FN_ABS + ZSI_ARG * abs(a.x);
+  float spread = (R * (abs(p) + err) + 0.5 * R * R + err) * (1.0 + 4.0 * ZSI_REL);
+  vec3 A = zsa_taylor(a, R, v, p, err, vec2(-v - spread, -v + spread));
+  return abs(A.y) + A.z <= 1.0 ? A : vec3(0.0, 0.0, 1.0);
+}
+vec3 zsa_sin(vec3 a) { return zsa_trig(a, zsa_radius(a), sin(a.x), cos(a.x)); }
+vec3 zsa_cos(vec3 a) { return zsa_trig(a, zsa_radius(a), cos(a.x), -sin(a.x)); }
+
+// exp = exp' = exp'': the range of f'' is the interval rule's result, exp(c) / exp(R) to
+// exp(c) exp(R), with the margins of three evaluations.
+vec3 zsa_exp(vec3 a) {
+  float R = zsa_radius(a), e = exp(a.x), eR = exp(R);
+  float rel = ZSI_FN_REL + ZSI_ARG * abs(a.x);
+  vec2 I = zsi_widen(vec2(e / eR, e * eR), 3.0 * rel + ZSI_ARG * R + 2.0 * ZSI_REL, ZSI_TINY);
+  I = vec2(max(I.x, 0.0), I.y);
+  return zsa_tighter(zsa_taylor(a, R, e, e, e * rel + ZSI_TINY, I), I);
+}
+
+// sqrt and log where the operand's range lies inside (0, inf); their interval rules (and
+// flags) otherwise. f'' is monotone there, so its range is given by the range's ends.
+vec3 zsa_sqrt(vec3 a, inout bool u) {
+  vec2 X = zsa_range(a);
+  vec2 I = zsi_sqrt(X, u);
+  if (!(X.x > 0.0 && X.y < ZSI_INF)) return zsa_fromInterval(I);
+  float R = zsa_radius(a), v = sqrt(a.x), p = 0.5 / v;
+  if (!(v > 16.0 * ZSI_FN_ABS)) return zsa_fromInterval(I);
+  // The slope 1/(2 sqrt c) inherits sqrt's absolute margin relative to sqrt c.
+  float err = (v + p) * (2.0 * ZSI_FN_REL) + ZSI_FN_ABS + p * (4.0 * ZSI_FN_ABS / v);
+  // sqrt'' = -x^(-3/2) / 4, from -1/(4 X.x sqrt X.x) to -1/(4 X.y sqrt X.y)
+  vec2 q = zsi_outFn(vec2(-0.25 / (X.x * sqrt(X.x)), -0.25 / (X.y * sqrt(X.y))), 0.0);
+  return zsa_tighter(zsa_taylor(a, R, v, p, err, q), I);
+}
+vec3 zsa_log(vec3 a, inout bool u) {
+  vec2 X = zsa_range(a);
+  vec2 I = zsi_log(X, u);
+  if (!(X.x > 0.0 && X.y < ZSI_INF)) return zsa_fromInterval(I);
+  float R = zsa_radius(a), v = log(a.x), p = 1.0 / a.x;
+  float err = abs(v) * ZSI_FN_REL + ZSI_FN_ABS + p * (2.0 * ZSI_REL);
+  vec2 q = zsi_outFn(vec2(-1.0 / (X.x * X.x), -1.0 / (X.y * X.y)), 0.0);  // log'' = -1/x^2
+  return zsa_tighter(zsa_taylor(a, R, v, p, err, q), I);
+}
+
+// 1/b where b's range keeps one sign (1/x'' = 2/x^3, monotone there); the interval rule (the
+// whole line, partial) where it holds 0.
+vec3 zsa_recip(vec3 b) {
+  vec2 X = zsa_range(b);
+  vec2 I = zsi_div(vec2(1.0), X);
+  if (X.x <= 0.0 && X.y >= 0.0) return zsa_fromInterval(I);
+  float R = zsa_radius(b), v = 1.0 / b.x, p = -v * v;
+  float err = (abs(v) + abs(p)) * (4.0 * ZSI_REL);
+  vec2 cube = X * X * X;
+  vec2 q = zsi_widen(vec2(2.0 / cube.y, 2.0 / cube.x), 8.0 * ZSI_REL, ZSI_TINY);
+  return zsa_tighter(zsa_taylor(b, R, v, p, err, vec2(min(q.x, q.y), max(q.x, q.y))), I);
+}
+vec3 zsa_div(vec3 a, vec3 b) {
+  vec2 B = zsa_range(b);
+  if (B.x <= 0.0 && B.y >= 0.0) return zsa_fromInterval(zsi_div(zsa_range(a), B));
+  return zsa_mul(a, zsa_recip(b));
+}
+
+// x^k: squares by their own rule, other exponents by the Taylor form with
+// f'' = k (k - 1) x^(k-2) over the range (the interval rule of x^(k-2)), where the range keeps
+// away from 0 for negative k.
+vec3 zsa_powi(vec3 a, int k) {
+  if (k == 0) return vec3(1.0, 0.0, 0.0);
+  if (k == 1) return a;
+  if (k == 2) return zsa_sqr(a);
+  vec2 X = zsa_range(a);
+  vec2 I = zsi_powi(X, k);
+  if (k < 0 && X.x <= 0.0 && X.y >= 0.0) return zsa_fromInterval(I);
+  float R = zsa_radius(a);
+  float v = zsi_ipow(abs(a.x), abs(k));
+  v = (abs(k) % 2 == 1 && a.x < 0.0) ? -v : v;
+  float pm = zsi_ipow(abs(a.x), abs(k - 1));
+  pm = (abs(k - 1) % 2 == 1 && a.x < 0.0) ? -pm : pm;
+  if (k < 0) { v = 1.0 / v; pm = 1.0 / pm; }
+  float p = float(k) * pm;
+  float err = (abs(v) + abs(p)) * (float(abs(k) + 2) * ZSI_REL) + ZSI_TINY;
+  vec2 q = float(k * (k - 1)) * zsi_powi(X, k - 2);
+  q = zsi_out(vec2(min(q.x, q.y), max(q.x, q.y)));
+  return zsa_tighter(zsa_taylor(a, R, v, p, err, q), I);
+}
+
+// abs, min and max are exact where the ranges decide them; their interval rules otherwise.
+vec3 zsa_abs(vec3 a) {
+  vec2 X = zsa_range(a);
+  return X.x >= 0.0 ? a : (X.y <= 0.0 ? zsa_neg(a) : zsa_fromInterval(zsi_abs(X)));
+}
+vec3 zsa_min(vec3 a, vec3 b) {
+  vec2 A = zsa_range(a), B = zsa_range(b);
+  return A.y <= B.x ? a : (B.y <= A.x ? b : zsa_fromInterval(zsi_min(A, B)));
+}
+vec3 zsa_max(vec3 a, vec3 b) {
+  vec2 A = zsa_range(a), B = zsa_range(b);
+  return A.x >= B.y ? a : (B.x >= A.y ? b : zsa_fromInterval(zsi_max(A, B)));
+}
+
+// dF/dt = grad F . d: the forms of the gradient's components scaled by the exact direction.
+vec3 zsa_dot(vec3 gx, vec3 gy, vec3 gz, vec3 d) {
+  return zsa_add(zsa_add(zsa_scale(gx, d.x), zsa_scale(gy, d.y)), zsa_scale(gz, d.z));
+}
+
+// The results of zs_FAffine: F's form with r = -1 (an empty range) where F is defined nowhere,
+// D the range of dF/dt, whole where the gradient cannot be bounded.
+void zsa_finish(vec3 f, vec3 d, bool u, bool ug, out vec3 F, out vec2 D) {
+  F = u ? vec3(0.0, 0.0, -1.0) : f;
+  D = (u || ug) ? vec2(-ZSI_INF, ZSI_INF) : zsa_range(d);
+}
