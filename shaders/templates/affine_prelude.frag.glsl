@@ -52,7 +52,7 @@ vec3 zsa_add(vec3 a, vec3 b) {
 }
 vec3 zsa_sub(vec3 a, vec3 b) { return zsa_add(a, zsa_neg(b)); }
 vec3 zsa_scale(vec3 a, float k) {
-  if (k == 0.0) return vec3(0.0);  // 0 * inf is 0 here, as in zsi_scale
+  if (k == 0.0) return vec3(0.0);  // 0 * inf is 0 here
   vec3 v = vec3(a.xy * k, a.z * abs(k));
   return zsa_round(v, abs(v.x) + abs(v.y), ZSI_REL);
 }

@@ -1,8 +1,7 @@
 // ---- interval_prelude.frag.glsl (codegen stage): interval arithmetic for the interval
 // method (tracing.method = "interval"). Joined after raytrace_prelude.frag.glsl, before
-// affine_prelude.frag.glsl (whose zsa_* rules fall back on these) and the generated interval
-// formulas (src/codegen/emit_interval_glsl.cpp): zs_FInterval calls one zsi_* rule per
-// opcode (src/codegen/op_interval_glsl.cpp). The rules mirror the CPU's
+// affine_prelude.frag.glsl, whose zsa_* rules fall back on these (one zsi_* rule per
+// opcode, src/codegen/op_interval_glsl.cpp) for the operations without a first-order rule. The rules mirror the CPU's
 // (src/interval): an interval is a vec2 (lo, hi); an operand that lies partly outside an
 // operation's domain is restricted to it (zsi_partial records that it happened), one wholly
 // outside sets the flag u (F is defined nowhere there).
@@ -215,17 +214,3 @@ vec2 zsi_pow(vec2 a, vec2 b, inout bool u) {
   return r;
 }
 
-// grad . d over a box, for the exact direction d (a point interval per component).
-vec2 zsi_scale(vec2 a, float s) {
-  return s == 0.0 ? vec2(0.0) : zsi_out(s > 0.0 ? a * s : a.yx * s);  // 0 * inf is 0 here
-}
-vec2 zsi_dot(vec2 gx, vec2 gy, vec2 gz, vec3 d) {
-  return zsi_add(zsi_add(zsi_scale(gx, d.x), zsi_scale(gy, d.y)), zsi_scale(gz, d.z));
-}
-
-// The results of zs_FInterval: F empty where it is defined nowhere, D whole where the
-// gradient cannot be bounded.
-void zsi_finish(vec2 f, vec2 d, bool u, bool ug, out vec2 F, out vec2 D) {
-  F = u ? vec2(1.0, -1.0) : zsi_unNaN(f);
-  D = (u || ug) ? vec2(-ZSI_INF, ZSI_INF) : d;  // zsi_dot's sums have no NaN ends
-}

@@ -3,22 +3,18 @@
 // gradient, puts out the block the interval method (tracing.method = "interval") joins after
 // the formula block:
 //
-//   void zs_FInterval(vec2 X, vec2 Y, vec2 Z, vec3 d, out vec2 F, out vec2 D, out bool partial)
-//
-// F encloses F over the box X x Y x Z (empty, F.x > F.y, where F is defined nowhere in it);
-// D encloses the derivative along d, grad F . d, over the same box (whole where it cannot be
-// bounded); `partial` is true where some operation of F was restricted to its domain or
-// divided by an interval holding 0 (F may be undefined or unbounded in part of the box).
-// Every non-leaf node becomes one `vec2 iN = zsi_<rule>(operands);`, with the rules of
-// op_interval_glsl.hpp and shaders/templates/interval_prelude.frag.glsl; constants are
-// rounded outward to floats. Then the same nodes as affine forms along a ray segment, what
-// the tracer calls (shaders/templates/affine_prelude.frag.glsl, one `vec3 aN = zsa_<rule>`):
-//
 //   void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out bool partial)
 //
+// Every non-leaf node becomes one `vec3 aN = zsa_<rule>(operands);`, an affine form along
+// the ray segment (shaders/templates/affine_prelude.frag.glsl), or its interval rule on the
+// operands' ranges where it has no first-order one (op_interval_glsl.hpp,
+// shaders/templates/interval_prelude.frag.glsl); constants are rounded outward to floats.
 // F = vec3(c, s, r) holds F(o + t d) in c + s tau +- r for t = tm + h tau, tau in [-1, 1]
-// (r = -1 where F is defined nowhere on the segment); D and `partial` as above, over the
-// segment. docs/codegen.md ("Interval GLSL") states the contract.
+// (r = -1 where F is defined nowhere on the segment); D encloses the derivative along d,
+// grad F . d, over the segment (whole where it cannot be bounded); `partial` is true where
+// some operation of F was restricted to its domain or divided by an interval holding 0 (F
+// may be undefined or unbounded on part of the segment). docs/codegen.md ("Interval GLSL")
+// states the contract.
 #include <array>
 #include <string>
 

@@ -14,7 +14,7 @@
 //
 // The interval method has three more pieces after the formula block: interval_prelude.frag.glsl
 // (the zsi_* rules), affine_prelude.frag.glsl (the zsa_* rules) and the generated interval
-// block (zs_FInterval and zs_FAffine, emit_interval_glsl.hpp).
+// block (zs_FAffine, emit_interval_glsl.hpp).
 //
 // A comment naming its origin and `#line 1 <string>` precede pieces 2 and 3, so compiler
 // logs ("0:12", "1:7", "2:40") point into the right piece at the right line.
