@@ -12,8 +12,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <random>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "codegen/op_interval_glsl.hpp"
@@ -55,22 +57,38 @@ const Rule kRules[] = {
     {Op::Min, 0, -10, 10, 5},        {Op::Max, 0, -10, 10, 5},
 };
 
-// The interval prelude and a main() that applies rule `rule` (as the emitter writes it) to
-// the operand intervals of its pixel: out (lo, hi, undefined everywhere, restricted).
-std::string fragmentSource(const Rule& rule) {
+// The preludes and a main() around `body`, which reads its pixel's operands from zsTestInput
+// (`inputs` vec4s) and sets zsTestOut.
+std::string testShader(std::initializer_list<std::string_view> templates, int inputs,
+                       const std::string& body) {
   std::string s(shaderTemplate(kPreludeTemplate));
-  s += shaderTemplate(kIntervalPreludeTemplate);
-  s += "uniform vec4 zsTestInput[" + std::to_string(kLanes) + "];\n"
-       "out vec4 zsTestOut;\n"
-       "void main() {\n"
-       "  vec4 in4 = zsTestInput[int(gl_FragCoord.x)];\n"
-       "  vec2 a = in4.xy, b = in4.zw;\n"
-       "  bool u = false;\n"
-       "  zsi_partial = false;\n"
-       "  vec2 r = " + glslIntervalOpExpression(rule.op, "a", "b", rule.ival, "u") + ";\n"
-       "  zsTestOut = vec4(r, u ? 1.0 : 0.0, zsi_partial ? 1.0 : 0.0);\n"
-       "}\n";
-  return s;
+  for (std::string_view t : templates) s += shaderTemplate(t);
+  return s + "uniform vec4 zsTestInput[" + std::to_string(inputs) + "];\n"
+             "out vec4 zsTestOut;\n"
+             "void main() {\n"
+             "  bool u = false;\n"
+             "  zsi_partial = false;\n" +
+         body + "}\n";
+}
+
+// Applies rule `rule` (as the emitter writes it) to the operand intervals of its pixel: out
+// (lo, hi, undefined everywhere, restricted).
+std::string fragmentSource(const Rule& rule) {
+  return testShader({kIntervalPreludeTemplate}, kLanes,
+                    "  vec4 in4 = zsTestInput[int(gl_FragCoord.x)];\n"
+                    "  vec2 a = in4.xy, b = in4.zw;\n"
+                    "  vec2 r = " + glslIntervalOpExpression(rule.op, "a", "b", rule.ival, "u") + ";\n"
+                    "  zsTestOut = vec4(r, u ? 1.0 : 0.0, zsi_partial ? 1.0 : 0.0);\n");
+}
+
+// Applies the affine rule of `rule` to the forms of its pixel (a in zsTestInput[2 i].xyz, b in
+// zsTestInput[2 i + 1].xyz): out (c, s, r, undefined everywhere).
+std::string affineFragmentSource(const Rule& rule) {
+  return testShader({kIntervalPreludeTemplate, kAffinePreludeTemplate}, 2 * kLanes,
+                    "  int i = int(gl_FragCoord.x);\n"
+                    "  vec3 a = zsTestInput[2 * i].xyz, b = zsTestInput[2 * i + 1].xyz;\n"
+                    "  vec3 r = " + glslAffineOpExpression(rule.op, "a", "b", rule.ival, "u") + ";\n"
+                    "  zsTestOut = vec4(r, u ? 1.0 : 0.0);\n");
 }
 
 const char* kVertex =
@@ -79,26 +97,6 @@ const char* kVertex =
     "  vec2 p = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);\n"
     "  gl_Position = vec4(p, 0.0, 1.0);\n"
     "}\n";
-
-// The interval and affine preludes and a main() that applies the affine rule of `rule` to the
-// forms of its pixel (a in zsTestInput[2 i].xyz, b in zsTestInput[2 i + 1].xyz): out (c, s, r,
-// undefined everywhere).
-std::string affineFragmentSource(const Rule& rule) {
-  std::string s(shaderTemplate(kPreludeTemplate));
-  s += shaderTemplate(kIntervalPreludeTemplate);
-  s += shaderTemplate(kAffinePreludeTemplate);
-  s += "uniform vec4 zsTestInput[" + std::to_string(2 * kLanes) + "];\n"
-       "out vec4 zsTestOut;\n"
-       "void main() {\n"
-       "  int i = int(gl_FragCoord.x);\n"
-       "  vec3 a = zsTestInput[2 * i].xyz, b = zsTestInput[2 * i + 1].xyz;\n"
-       "  bool u = false;\n"
-       "  zsi_partial = false;\n"
-       "  vec3 r = " + glslAffineOpExpression(rule.op, "a", "b", rule.ival, "u") + ";\n"
-       "  zsTestOut = vec4(r, u ? 1.0 : 0.0);\n"
-       "}\n";
-  return s;
-}
 
 // Runs a test shader on the GPU, one lane per pixel, with `operands` as zsTestInput.
 std::vector<float> runOnGpu(const std::string& fragment, const std::vector<float>& operands,
