@@ -61,6 +61,16 @@ RayTracer::Variant RayTracer::variantFor(const RenderSettings& s) {
 
 unsigned RayTracer::program(const Variant& v, std::string& log) {
   if (auto it = programs_.find(v); it != programs_.end()) return it->second;
+  // The defines go right after #version, which must stay the first line.
+  std::string source = fragmentSource_;
+  const std::size_t eol = source.find('\n');
+  const std::string defines = "#define RT_SAMPLES " + std::to_string(v.samples) +
+                              "\n#define RT_MAX_HITS " + std::to_string(v.maxHits) +
+                              "\n#define RT_REFLECTION " + (v.reflection ? "1" : "0") + "\n" +
+                              v.shading + "#line 2 0\n";
+  source.insert(eol == std::string::npos ? source.size() : eol + 1, defines);
+  const unsigned p = compileProgram(vertexSource_, source, log);
+  if (!p) return 0;  // the variants that work stay, so going back to them still works
   // Editing a light makes a new variant each time: keep only the current lighting's.
   for (auto it = programs_.begin(); it != programs_.end();) {
     if (it->first.shading == v.shading) {
@@ -71,16 +81,7 @@ unsigned RayTracer::program(const Variant& v, std::string& log) {
     glDeleteProgram(it->second);
     it = programs_.erase(it);
   }
-  // The defines go right after #version, which must stay the first line.
-  std::string source = fragmentSource_;
-  const std::size_t eol = source.find('\n');
-  const std::string defines = "#define RT_SAMPLES " + std::to_string(v.samples) +
-                              "\n#define RT_MAX_HITS " + std::to_string(v.maxHits) +
-                              "\n#define RT_REFLECTION " + (v.reflection ? "1" : "0") + "\n" +
-                              v.shading + "#line 2 0\n";
-  source.insert(eol == std::string::npos ? source.size() : eol + 1, defines);
-  const unsigned p = compileProgram(vertexSource_, source, log);
-  if (p) programs_.emplace(v, p);
+  programs_.emplace(v, p);
   return p;
 }
 
