@@ -37,7 +37,9 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   bool dl = !zs_isUndefined(fl);
   bool done = !(len > 0.0), found = false, bracketed = false;
   float u = 0.0, v = 1.0;  // the segment [u, v] being classified, in [0, 1]
-  float least = rt.epsilon / len;  // the smallest step forward after a segment without root
+  // tracing.epsilon in units of the segment: the smallest step forward after a segment
+  // without root, and the width refinement stops at.
+  float least = rt.epsilon / len;
   int step = 0;
   do {
     float t0 = ta + len * u, t1 = ta + len * v;
@@ -106,8 +108,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
 
   // Illinois: regula falsi that halves the value kept at an end chosen twice in a row, so
   // both ends of the bracket converge (superlinearly) and it ends below tracing.epsilon.
-  float stop = rt.epsilon / len;
-  bool refining = found && bracketed && flo != 0.0 && fhi != 0.0 && hi - lo > stop;
+  bool refining = found && bracketed && flo != 0.0 && fhi != 0.0 && hi - lo > least;
   int side = 0;
   do {
     if (refining) {  // the body runs once even for lanes with nothing to refine
@@ -126,7 +127,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
         side = 1;
       }
       x = xs;
-      refining = f != 0.0 && hi - lo > stop;
+      refining = f != 0.0 && hi - lo > least;
     }
   } while (refining && ++step < RT_MAX_STEPS);
   if (bracketed && flo != 0.0 && fhi != 0.0) x = clamp((lo * fhi - hi * flo) / (fhi - flo), lo, hi);

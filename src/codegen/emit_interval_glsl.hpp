@@ -22,10 +22,6 @@
 
 namespace zs {
 
-// The vec2 literal of the smallest float interval that holds `value` ("vec2(lo, hi)", or
-// "vec2(v)" when value is a float); empty for NaN.
-std::string glslIntervalLiteral(double value);
-
 struct IntervalGlsl {
   std::string source;  // the interval block, ending with a newline
 };
