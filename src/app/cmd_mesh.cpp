@@ -21,7 +21,7 @@ struct MeshArgs {
 int runMesh(MeshArgs& args) {
   std::optional<Scene> scene = loadSceneArgs(args.scene);
   if (!scene) return 1;
-  if (args.cellSize) args.request.level = levelForCellSize(*scene, *args.cellSize);
+  if (args.cellSize) args.request.settings.level = levelForCellSize(*scene, *args.cellSize);
   auto progress = [&](const std::string& line) {
     if (!args.quiet) std::cerr << "mesh: " << line << "\n" << std::flush;
   };
@@ -46,17 +46,17 @@ void addMeshCommand(CLI::App& app) {
   cmd->add_option("-o,--output", args->request.output,
                   "the mesh file: .stl (binary), .ply (binary, with normals) or .obj (with normals)")
       ->required();
-  auto* level = cmd->add_option("--level", args->request.level,
+  auto* level = cmd->add_option("--level", args->request.settings.level,
                                 "grid level: 2^N cells along each axis of the domain (default 7)")
                     ->check(CLI::Range(1, kMaxMeshLevel));
   cmd->add_option("--cell-size", args->cellSize,
                   "the largest grid cell wanted, in scene units (picks the level)")
       ->check(CLI::PositiveNumber)
       ->excludes(level);
-  cmd->add_flag("--cap", args->request.cap,
+  cmd->add_flag("--cap", args->request.settings.cap,
                 "close the solid F < 0 along the domain's boundary (box faces or sphere), for "
                 "printing");
-  cmd->add_option("--threads", args->request.threads, "worker threads (default 2)")
+  cmd->add_option("--threads", args->request.settings.threads, "worker threads (default 2)")
       ->check(CLI::Range(1, 256));
   cmd->add_flag("-q,--quiet", args->quiet, "no progress lines on stderr");
   cmd->callback([args] { std::exit(runMesh(*args)); });

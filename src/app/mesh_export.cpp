@@ -31,12 +31,8 @@ std::string exportMesh(const Scene& scene, const MeshExport& request, MeshExport
   ParseResult parsed = parseFormula(scene.formula);
   if (auto* err = std::get_if<ParseError>(&parsed)) return formatError(scene.formula, *err);
   const Formula& formula = std::get<Formula>(parsed);
-  MeshSettings settings;
-  settings.level = request.level;
-  settings.cap = request.cap;
-  settings.threads = request.threads;
   auto built = buildMesh(formula, paramValues(scene, formula.graph), toBox(scene.domain),
-                         toBall(scene.domain), settings, progress);
+                         toBall(scene.domain), request.settings, progress);
   if (auto* err = std::get_if<std::string>(&built)) return "error: " + *err + "\n";
   const MeshResult& result = std::get<MeshResult>(built);
   report.stats = result.stats;

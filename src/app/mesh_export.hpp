@@ -11,10 +11,8 @@
 namespace zs::app {
 
 struct MeshExport {
-  int level = 7;
-  bool cap = false;
-  unsigned threads = 2;
-  std::string output;  // .stl, .ply or .obj
+  MeshSettings settings;  // level, cap, threads
+  std::string output;     // .stl, .ply or .obj
 };
 
 struct MeshExportReport {

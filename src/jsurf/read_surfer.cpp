@@ -8,6 +8,7 @@
 #include "jsurf/properties.hpp"
 #include "jsurf/value_reader.hpp"
 #include "parser/parser.hpp"
+#include "parser/suggest.hpp"
 
 namespace zs::jsurf {
 namespace {
@@ -17,32 +18,10 @@ constexpr std::array<std::string_view, 4> kLightFields{"status", "position", "co
 constexpr std::array<std::string_view, 5> kMaterialFields{
     "color", "ambient_intensity", "diffuse_intensity", "specular_intensity", "shininess"};
 
-std::size_t editDistance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diag = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diag = up;
-    }
-  }
-  return row[b.size()];
-}
-
+// The known key nearest an unknown one (the parser's suggestion rule), or "".
 std::string closestKey(std::string_view key) {
-  std::string best;
-  std::size_t bestDistance = 4;  // farther than this is no hint
-  for (const std::string& k : surferKeys()) {
-    const std::size_t d = editDistance(key, k);
-    if (d < bestDistance) {
-      bestDistance = d;
-      best = k;
-    }
-  }
-  return best;
+  const std::vector<std::string>& keys = surferKeys();
+  return closestName(key, std::vector<std::string_view>(keys.begin(), keys.end()), 3).value_or("");
 }
 
 // Reads the properties into SurferScene, one key at a time.

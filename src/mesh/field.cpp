@@ -7,8 +7,8 @@ namespace zs::mesh {
 
 FieldEvaluator::FieldEvaluator(const Tape& value, const Tape& withGradient,
                                std::span<const double> params, std::optional<Ball> capBall)
-    : value_(value), gradient_(withGradient), batch_(value), batchGradient_(withGradient), params_(params.begin(), params.end()),
-      capBall_(capBall) {}
+    : gradient_(withGradient), batch_(value), batchGradient_(withGradient),
+      params_(params.begin(), params.end()), capBall_(capBall) {}
 
 double FieldEvaluator::ballDistance(const P3& p) const {
   const double dx = p[0] - capBall_->center[0], dy = p[1] - capBall_->center[1],
@@ -16,16 +16,12 @@ double FieldEvaluator::ballDistance(const P3& p) const {
   return std::sqrt(dx * dx + dy * dy + dz * dz) - capBall_->radius;
 }
 
-double FieldEvaluator::f(const P3& p) { return value_.eval1(p[0], p[1], p[2], params_); }
-
 double FieldEvaluator::withBall(const P3& p, double v) const {
   if (!capBall_) return v;
   // Outside the ball the solid ends, whatever F says (NaN included).
   const double d = ballDistance(p);
   return d >= 0 ? std::max(d, std::isnan(v) ? d : v) : v;
 }
-
-double FieldEvaluator::value(const P3& p) { return withBall(p, f(p)); }
 
 void FieldEvaluator::values(std::span<const double> xs, std::span<const double> ys,
                             std::span<const double> zs, std::span<double> out) {

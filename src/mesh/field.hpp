@@ -22,11 +22,9 @@ class FieldEvaluator {
   FieldEvaluator(const Tape& value, const Tape& withGradient, std::span<const double> params,
                  std::optional<Ball> capBall);
 
-  double value(const P3& p);
-  // value() at many points at once (the batch evaluator: bit for bit the same numbers).
+  // The field at many points at once (the batch evaluator).
   void values(std::span<const double> xs, std::span<const double> ys, std::span<const double> zs,
               std::span<double> out);
-  double f(const P3& p);
   // F and its gradient at p.
   std::array<double, 4> fAndGradient(const P3& p);
 
@@ -52,7 +50,7 @@ class FieldEvaluator {
 
   double withBall(const P3& p, double f) const;
 
-  PointEvaluator value_, gradient_;
+  PointEvaluator gradient_;
   BatchEvaluator batch_, batchGradient_;
   std::vector<double> params_;
   std::optional<Ball> capBall_;

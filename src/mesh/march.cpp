@@ -16,7 +16,7 @@ std::uint64_t edgeKey(std::uint64_t a, std::uint64_t b) {
   std::uint64_t axes = 0;
   for (int axis = 0; axis < 3; ++axis)
     if (keyAxis(lo, axis) != keyAxis(hi, axis)) axes |= std::uint64_t(1) << axis;
-  return (lo << 3) | axes;
+  return edgeKeyAt(lo, int(axes));
 }
 
 namespace {
@@ -82,7 +82,7 @@ void marchChunk(const Grid& grid, std::span<const std::uint64_t> bricks, FieldEv
               const std::uint32_t lo[3] = {x + (ce.lo & 1), y + ((ce.lo >> 1) & 1), z + ((ce.lo >> 2) & 1)};
               bool onFace = false;
               for (int a = 0; a < 3; ++a) onFace |= !((axes >> a) & 1) && (lo[a] == 0 || lo[a] == b);
-              out.faceKeys.push_back(onFace ? ((cell + cornerOffset(ce.lo)) << 3) | std::uint64_t(axes) : Chunk::kInside);
+              out.faceKeys.push_back(onFace ? edgeKeyAt(cell + cornerOffset(ce.lo), axes) : Chunk::kInside);
             }
             local[std::size_t(e)] = slot;
           }
@@ -261,15 +261,11 @@ void addTriangles(const Marched& marched, Mesh& mesh) {
   }
 }
 
-std::size_t dropPoleTriangles(Mesh& mesh) {
-  std::size_t poles = 0;
-  for (VertexKind k : mesh.kinds) poles += k == VertexKind::Pole;
-  if (poles == 0) return 0;
+void dropPoleTriangles(Mesh& mesh) {
   std::erase_if(mesh.triangles, [&](const std::array<std::uint32_t, 3>& t) {
     return mesh.kinds[t[0]] == VertexKind::Pole || mesh.kinds[t[1]] == VertexKind::Pole ||
            mesh.kinds[t[2]] == VertexKind::Pole;
   });
-  return poles;
 }
 
 void dropUnusedVertices(Mesh& mesh) {

@@ -35,6 +35,10 @@ struct Marched {
 // The key of the grid edge between two corners whose coordinates differ by 0 or 1 (one
 // corner lower or equal on every axis): the lower corner and the set of axes.
 std::uint64_t edgeKey(std::uint64_t cornerA, std::uint64_t cornerB);
+// The same from the lower corner and the axes bits (bit a: the edge moves along axis a).
+inline std::uint64_t edgeKeyAt(std::uint64_t lowCorner, int axes) {
+  return (lowCorner << 3) | std::uint64_t(axes);
+}
 
 // Evaluates and marches the seed bricks and every brick the closure rule (grid.hpp) reaches,
 // in parallel (a thread per evaluator); the vertices are numbered in the order of the seeds
@@ -68,8 +72,8 @@ void capBox(const Grid& grid, const BoxFaces& faces, const Marched& marched, Mes
 void clipBall(const Ball& ball, double cellSize, FieldEvaluator& evaluator, Mesh& mesh);
 
 // Without a cap: drops the triangles at a pole, a jump or the edge of F's domain (a vertex of
-// VertexKind::Pole); returns how many such vertices there were.
-std::size_t dropPoleTriangles(Mesh& mesh);
+// VertexKind::Pole).
+void dropPoleTriangles(Mesh& mesh);
 
 // Drops the vertices no triangle uses, renumbering the triangles.
 void dropUnusedVertices(Mesh& mesh);

@@ -47,7 +47,6 @@ struct Mesh {
 };
 
 struct MeshStats {
-  std::size_t octreeLeaves = 0;   // bricks (octree boxes two levels up) the octree kept
   std::size_t cells = 0;          // grid cells the zero set crosses, marched
   std::size_t gridValues = 0;     // F evaluated at brick corners
   double octreeSeconds = 0, gridSeconds = 0, rootSeconds = 0, totalSeconds = 0;

@@ -22,15 +22,17 @@ std::string format(const char* fmt, auto... args) {
   return buf;
 }
 
-// The cells of the grid that the sphere passes through (a capped ball's cap lies there),
-// column by column: generous by a cell on each side, which only costs a few evaluations.
-std::vector<std::uint64_t> cellsOnSphere(const Box& box, int level, const Ball& ball) {
+// The bricks (of b^3 cells) holding the grid cells the sphere passes through (a capped
+// ball's cap lies there), column by column, each brick once, in the order first met:
+// generous by a cell on each side, which only costs a few evaluations.
+std::vector<std::uint64_t> bricksOnSphere(const Box& box, int level, std::uint32_t b, const Ball& ball) {
   const std::uint32_t n = 1u << level;
   std::array<double, 3> h{};
   for (std::size_t a = 0; a < 3; ++a) h[a] = (box.max[a] - box.min[a]) / n;
   auto nearest = [](double lo, double hi, double c) { return c < lo ? lo - c : (c > hi ? c - hi : 0.0); };
   auto farthest = [](double lo, double hi, double c) { return std::max(std::abs(lo - c), std::abs(hi - c)); };
-  std::vector<std::uint64_t> cells;
+  std::vector<std::uint64_t> bricks;
+  mesh::FlatIndex seen(1 << 12);
   const double r2 = ball.radius * ball.radius;
   for (std::uint32_t i = 0; i < n; ++i) {
     const double x0 = box.min[0] + h[0] * i, x1 = x0 + h[0];
@@ -47,11 +49,14 @@ std::vector<std::uint64_t> cellsOnSphere(const Box& box, int level, const Ball& 
       for (long k = k0; k <= k1; ++k) {
         const double z0 = box.min[2] + h[2] * double(k), z1 = z0 + h[2];
         if (far2 + std::pow(farthest(z0, z1, ball.center[2]), 2) < r2 * (1 - 1e-9)) continue;
-        cells.push_back(mesh::packKey(i, j, std::uint64_t(k)));
+        const std::uint64_t brick = mesh::packKey(i / b, j / b, std::uint64_t(k) / b);
+        bool inserted;
+        seen.insert(brick, 0, inserted);
+        if (inserted) bricks.push_back(brick);
       }
     }
   }
-  return cells;
+  return bricks;
 }
 
 }  // namespace
@@ -82,7 +87,6 @@ std::variant<MeshResult, std::string> buildMesh(const Formula& formula,
   OctreeResult built = buildOctree(formula, params, box, os, ball);
   if (auto* err = std::get_if<OctreeError>(&built)) return err->message;
   const Octree& tree = std::get<Octree>(built);
-  stats.octreeLeaves = tree.leaves.size();
   stats.octreeSeconds = tree.buildSeconds;
   const std::uint32_t n = 1u << settings.level;
   stats.cellSize = std::min({(box.max[0] - box.min[0]) / n, (box.max[1] - box.min[1]) / n,
@@ -105,9 +109,8 @@ std::variant<MeshResult, std::string> buildMesh(const Formula& formula,
   for (const OctreeLeaf& leaf : tree.leaves) seeds.push_back(mesh::packKey(leaf.cell[0], leaf.cell[1], leaf.cell[2]));
   const bool capBoxFaces = settings.cap && !ball;
   if (capBall) {
-    const std::uint32_t b = grid.brickCells();
-    for (std::uint64_t cell : cellsOnSphere(box, settings.level, *ball))
-      seeds.push_back(mesh::packKey(mesh::keyAxis(cell, 0) / b, mesh::keyAxis(cell, 1) / b, mesh::keyAxis(cell, 2) / b));
+    const auto onSphere = bricksOnSphere(box, settings.level, grid.brickCells(), *ball);
+    seeds.insert(seeds.end(), onSphere.begin(), onSphere.end());
   }
   std::optional<mesh::BoxFaces> boxFaces;
   if (capBoxFaces) {
@@ -124,22 +127,20 @@ std::variant<MeshResult, std::string> buildMesh(const Formula& formula,
              stats.gridSeconds));
 
   t0 = Clock::now();
-  Mesh& mesh = result.mesh;
-  stats.maxResidual = mesh::placeRoots(grid, marched, evaluators, mesh);
-  mesh::addTriangles(marched, mesh);
-  if (boxFaces) mesh::capBox(grid, *boxFaces, marched, mesh);
+  Mesh& out = result.mesh;
+  stats.maxResidual = mesh::placeRoots(grid, marched, evaluators, out);
+  mesh::addTriangles(marched, out);
+  if (boxFaces) mesh::capBox(grid, *boxFaces, marched, out);
   // Sign changes without a root bound the capped solid; they are not part of F = 0.
-  stats.poleVertices = std::size_t(std::count(mesh.kinds.begin(), mesh.kinds.end(), VertexKind::Pole));
-  if (!settings.cap) zs::mesh::dropPoleTriangles(mesh);
-  if (ball && !settings.cap) {
-    mesh::FieldEvaluator plain(valueTape, gradientTape, params, std::nullopt);
-    mesh::clipBall(*ball, stats.cellSize, plain, mesh);
-  }
-  mesh::dropUnusedVertices(mesh);
+  stats.poleVertices = std::size_t(std::count(out.kinds.begin(), out.kinds.end(), VertexKind::Pole));
+  if (!settings.cap) mesh::dropPoleTriangles(out);
+  // Without a cap the evaluators' field is F itself.
+  if (ball && !settings.cap) mesh::clipBall(*ball, stats.cellSize, evaluators.front(), out);
+  mesh::dropUnusedVertices(out);
   stats.rootSeconds = since(t0);
   stats.totalSeconds = since(start);
   say(format("surface: %zu vertices on their edges' roots, %zu triangles (%.3f s)",
-             mesh.positions.size(), mesh.triangles.size(), stats.rootSeconds));
+             out.positions.size(), out.triangles.size(), stats.rootSeconds));
   if (stats.poleVertices > 0)
     say(format("%zu grid edges change sign without a root (a pole, a jump or the edge of F's domain): %s",
                stats.poleVertices, settings.cap ? "they bound the capped solid" : "not part of the surface, left out"));

@@ -25,10 +25,10 @@ void Viewer::startMeshExport() {
     stem = sceneFile_.stem().string();
   }
   MeshExport request;
-  request.level = panel_.meshLevel;
-  request.cap = panel_.meshCap;
-  request.output = nextFreePath(dir, stem + "-level" + std::to_string(request.level), ".stl").string();
-  stats_.status = "exporting a mesh at level " + std::to_string(request.level) + "...";
+  request.settings.level = panel_.meshLevel;
+  request.settings.cap = panel_.meshCap;
+  request.output = nextFreePath(dir, stem + "-level" + std::to_string(request.settings.level), ".stl").string();
+  stats_.status = "exporting a mesh at level " + std::to_string(request.settings.level) + "...";
   meshExport_ = std::async(std::launch::async, [scene = scene_, request] {
     MeshExportReport report;
     std::string text = exportMesh(scene, request, report);
