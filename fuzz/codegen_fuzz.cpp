@@ -76,7 +76,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   zs::Formula& formula = std::get<zs::Formula>(parsed);
   const std::array<zs::NodeId, 3> grad = zs::gradient(formula.graph, formula.root);
   const zs::GlslFormula glsl = zs::emitFormulaGlsl(formula.graph, formula.root, grad);
-  const zs::IntervalGlsl interval = zs::emitIntervalGlsl(formula.graph, formula.root, grad);
+  const zs::IntervalGlsl interval = zs::emitIntervalGlsl(formula.graph, formula.root);
   const zs::ValidationResult result =
       zs::validateGlsl(testShader(glsl, interval), zs::Stage::Fragment);
   if (!result.ok) {

@@ -105,6 +105,12 @@ vec3 zsa_trig(vec3 a, float R, float v, float p) {
 }
 vec3 zsa_sin(vec3 a) { return zsa_trig(a, zsa_radius(a), sin(a.x), cos(a.x)); }
 vec3 zsa_cos(vec3 a) { return zsa_trig(a, zsa_radius(a), cos(a.x), -sin(a.x)); }
+// Both of one operand (the emitter pairs them): one sin and one cos of the center for the two.
+void zsa_sincos(vec3 a, out vec3 s, out vec3 c) {
+  float R = zsa_radius(a), sa = sin(a.x), ca = cos(a.x);
+  s = zsa_trig(a, R, sa, ca);
+  c = zsa_trig(a, R, ca, -sa);
+}
 
 // exp = exp' = exp'': the range of f'' is the interval rule's result, exp(c) / exp(R) to
 // exp(c) exp(R), with the margins of three evaluations.
@@ -193,11 +199,6 @@ vec3 zsa_min(vec3 a, vec3 b) {
 vec3 zsa_max(vec3 a, vec3 b) {
   vec2 A = zsa_range(a), B = zsa_range(b);
   return A.x >= B.y ? a : (B.x >= A.y ? b : zsa_fromInterval(zsi_max(A, B)));
-}
-
-// dF/dt = grad F . d: the forms of the gradient's components scaled by the exact direction.
-vec3 zsa_dot(vec3 gx, vec3 gy, vec3 gz, vec3 d) {
-  return zsa_add(zsa_add(zsa_scale(gx, d.x), zsa_scale(gy, d.y)), zsa_scale(gz, d.z));
 }
 
 // The results of zs_FAffine: F's form with r = -1 (an empty range) where F is defined nowhere,

@@ -36,7 +36,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   float fl = zs_F(o + ta * d), fr = 0.0;  // F at the left and right end of the segment
   bool dl = !zs_isUndefined(fl);
   bool done = !(len > 0.0), found = false, bracketed = false;
-  float u = 0.0, v = 1.0;  // the segment [u, v] being classified, in [0, 1]
+  float u = 0.0, v = clamp(rtFirstSegment / len, 0.0, 1.0);  // the segment [u, v] being classified, in [0, 1]
   // tracing.epsilon in units of the segment: the smallest step forward after a segment
   // without root, and the width refinement stops at.
   float least = rt.epsilon / len;
@@ -102,6 +102,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     v = none ? min(1.0, v + max(1.5 * size, least)) : nv;
     done = done || found || u >= 1.0;
   } while (!done && ++step < RT_MAX_STEPS);
+  rtIsolatedWidth = (v - u) * len;
   found = found && u < 1.0 && len > 0.0;
   float lo = u, hi = v, flo = fl, fhi = fr;
   float x = (bracketed && flo == 0.0) ? lo : ((bracketed && fhi == 0.0) ? hi : 0.5 * (u + v));

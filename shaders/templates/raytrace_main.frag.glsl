@@ -76,6 +76,7 @@ vec3 safeInverse(vec3 d) { return 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0)))
 vec3 shade(vec3 p, vec4 g, vec3 rd);
 float rtShadeValue = 0.0;
 
+float rtFirstSegment = 1e30, rtIsolatedWidth = 0.0, firstW = 0.0;
 void main() {
   // Pixel (i, j) from the top-left of the full image (docs/camera.md).
   vec2 pixel = vec2(gl_FragCoord.x - 0.5, rt.resolution.y - gl_FragCoord.y - 0.5);
@@ -108,6 +109,7 @@ void main() {
     // hit weighted w when reflecting). Pass 1: one opaque reflection ray off the first hit,
     // weighted alpha * (1 - w). One loop, so rtMarch and its calls of F are inlined once.
     int pass = 0;
+    rtFirstSegment = 1e30;
     do {
       vec3 o = ro, d = rd;
       float tStart = 0.0, passAlpha = alpha, passScale = 1.0;
@@ -118,11 +120,13 @@ void main() {
         d = reflect(rd, dot(nrm, rd) < 0.0 ? nrm : -nrm);
         tStart = max(4.0 * rt.epsilon, 1e-4 * length(rt.domainMax - rt.domainMin));  // leave the surface
         passAlpha = 1.0; passScale = alpha * (1.0 - w); wanted = 1;
+        rtFirstSegment = firstW;
       }
       float hitT[RT_MAX_HITS];
       vec4 hitG[RT_MAX_HITS];
       int found = rtMarch(o, d, tStart, wanted, hitT, hitG);
       if (pass == 0 && found > 0) { firstT = hitT[0]; firstG = hitG[0]; }
+      if (pass == 0) firstW = rtIsolatedWidth;
 
       float transmit = 1.0;
 #if RT_MAX_HITS == 1

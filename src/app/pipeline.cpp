@@ -109,7 +109,7 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bo
     s.fragmentShader = assembleFragmentShader(s.glsl, *s.rayPolynomial, markers);
   } else if (s.method == TracingMethod::Interval) {
     s.fragmentShader = assembleFragmentShader(
-        s.glsl, emitIntervalGlsl(s.formula.graph, s.formula.root, s.gradient), markers);
+        s.glsl, emitIntervalGlsl(s.formula.graph, s.formula.root), markers);
   } else {
     s.fragmentShader = assembleFragmentShader(s.glsl, markers);
   }

@@ -7,6 +7,7 @@
 
 #include "codegen/glsl_literal.hpp"
 #include "codegen/op_interval_glsl.hpp"
+#include "expr/derivative.hpp"
 
 namespace zs {
 namespace {
@@ -58,19 +59,25 @@ std::string affineConstant(double value) {
 }
 
 struct Bodies {
-  std::string f, grad;  // F's statements, then those of the nodes only the gradient reaches
+  std::string f, df;  // F's statements, then those of the nodes only dF/dt reaches
   std::vector<std::string> names;
 };
 
 // One `vec3 aN = zsa_<rule>(...);` per non-leaf node of F (undefined flag zs_u), then per
-// node only the gradient reaches (zs_ug).
-Bodies emitNodes(const Graph& g, NodeId f, const std::array<NodeId, 3>& grad) {
+// node only the derivative df reaches (zs_ug). Parameters from index `firstDirection` on are
+// the ray direction's components d.x, d.y, d.z.
+Bodies emitNodes(const Graph& g, NodeId f, NodeId df, int firstDirection) {
   const std::vector<NodeId> fNodes = reachable(g, {f});
-  const std::vector<NodeId> all = reachable(g, {f, grad[0], grad[1], grad[2]});
+  const std::vector<NodeId> all = reachable(g, {f, df});
+  auto direction = [&](NodeId id) {
+    return g[id].op == Op::Param && g[id].ival >= firstDirection;
+  };
+  static constexpr const char* kDirection[] = {"d.x", "d.y", "d.z"};
   Bodies out;
   out.names.resize(g.size());
-  std::vector<bool> inF(g.size(), false);
+  std::vector<bool> inF(g.size(), false), wanted(g.size(), false);
   for (NodeId id : fNodes) inF[static_cast<std::size_t>(id)] = true;
+  for (NodeId id : all) wanted[static_cast<std::size_t>(id)] = true;
   std::size_t next = 0;
   auto name = [&](NodeId id) -> const std::string& {
     return out.names[static_cast<std::size_t>(id)];
@@ -82,7 +89,10 @@ Bodies emitNodes(const Graph& g, NodeId f, const std::array<NodeId, 3>& grad) {
       case Op::VarX: own = "AX"; return;
       case Op::VarY: own = "AY"; return;
       case Op::VarZ: own = "AZ"; return;
-      case Op::Param: own = "zsa_point(zs_params[" + std::to_string(n.ival) + "])"; return;
+      case Op::Param:  // exact: the direction zsa_var moves the coordinates by
+        own = direction(id) ? std::string("vec3(") + kDirection[n.ival - firstDirection] + ", 0.0, 0.0)"
+                            : "zsa_point(zs_params[" + std::to_string(n.ival) + "])";
+        return;
       case Op::Const:
         own = affineConstant(n.value);
         if (own.empty()) {  // a NaN constant: F is undefined wherever it is used
@@ -92,13 +102,32 @@ Bodies emitNodes(const Graph& g, NodeId f, const std::array<NodeId, 3>& grad) {
         return;
       default: break;
     }
+    // sin and cos of one operand share the evaluation of sin and cos at its center (the
+    // derivative of one is the other, so the pair is common): both are written at the first.
+    if (n.op == Op::Sin || n.op == Op::Cos) {
+      const Op other = n.op == Op::Sin ? Op::Cos : Op::Sin;
+      const NodeId partner = g.find(Node{other, n.a});
+      if (partner != kNoNode && wanted[static_cast<std::size_t>(partner)]) {
+        std::string& mate = out.names[static_cast<std::size_t>(partner)];
+        if (!mate.empty()) return;  // written with its partner
+        own = "a" + std::to_string(next++);
+        mate = "a" + std::to_string(next++);
+        const std::string& sn = n.op == Op::Sin ? own : mate;
+        const std::string& cs = n.op == Op::Sin ? mate : own;
+        body += "  vec3 " + sn + ", " + cs + ";\n  zsa_sincos(" + name(n.a) + ", " + sn + ", " + cs + ");\n";
+        return;
+      }
+    }
     own = "a" + std::to_string(next++);
-    // A product with a constant that is a float is a scaling: two products, not four.
-    const NodeId scalar = n.op != Op::Mul ? kNoNode : exactFloat(g, n.a) ? n.a : exactFloat(g, n.b) ? n.b : kNoNode;
-    if (scalar != kNoNode) {
-      const NodeId other = scalar == n.a ? n.b : n.a;
-      body += "  vec3 " + own + " = zsa_scale(" + name(other) + ", " +
-              floatText(float(g[scalar].value)) + ");\n";
+    // A product with a constant that is a float, or with a component of the direction, is
+    // a scaling: two products, not four.
+    auto scalar = [&](NodeId k) { return exactFloat(g, k) || direction(k); };
+    const NodeId k = n.op != Op::Mul ? kNoNode : scalar(n.a) ? n.a : scalar(n.b) ? n.b : kNoNode;
+    if (k != kNoNode) {
+      const NodeId other = k == n.a ? n.b : n.a;
+      const std::string factor = direction(k) ? kDirection[g[k].ival - firstDirection]
+                                              : floatText(float(g[k].value));
+      body += "  vec3 " + own + " = zsa_scale(" + name(other) + ", " + factor + ");\n";
       return;
     }
     body += "  vec3 " + own + " = " +
@@ -106,7 +135,7 @@ Bodies emitNodes(const Graph& g, NodeId f, const std::array<NodeId, 3>& grad) {
   };
   for (NodeId id : fNodes) emit(id, out.f, "zs_u");
   for (NodeId id : all) {
-    if (!inF[static_cast<std::size_t>(id)]) emit(id, out.grad, "zs_ug");
+    if (!inF[static_cast<std::size_t>(id)]) emit(id, out.df, "zs_ug");
   }
   return out;
 }
@@ -115,26 +144,32 @@ Bodies emitNodes(const Graph& g, NodeId f, const std::array<NodeId, 3>& grad) {
 }  // namespace
 
 
-IntervalGlsl emitIntervalGlsl(const Graph& g, NodeId f, const std::array<NodeId, 3>& grad) {
+IntervalGlsl emitIntervalGlsl(const Graph& graph, NodeId f) {
+  // dF/dt = grad F . d in one forward pass (the three partial derivatives and their dot
+  // product cost more: x / sqrt(r2) thrice instead of one division), in a copy of the graph
+  // whose three extra parameters are d's components, leaves the emitter writes as d.x, d.y, d.z.
+  Graph g = graph;
+  const int firstDirection = static_cast<int>(g.params().size());
+  const NodeId df = directionalDerivative(
+      g, f, {g.param("ray direction x"), g.param("ray direction y"), g.param("ray direction z")});
   std::string s = "// zeroset interval formula block (generated by src/codegen): F and dF/dt along a ray segment.\n";
   // The nodes as affine forms along the segment t = tm + h tau (vec3 (c, s, r),
   // affine_prelude.frag.glsl); operations without a first-order rule use their interval
   // rule (zsi_*) on the operands' ranges.
-  const Bodies ray = emitNodes(g, f, grad);
+  const Bodies ray = emitNodes(g, f, df, firstDirection);
   auto aname = [&](NodeId id) { return ray.names[static_cast<std::size_t>(id)]; };
   s += "// F and dF/dt as affine forms in tau along the segment t = tm + h tau.\n";
   s += "void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out bool "
        "partial) {\n";
   s += "  bool zs_u = false;   // F is defined nowhere on the segment\n";
-  s += "  bool zs_ug = false;  // the gradient is defined nowhere on the segment\n";
+  s += "  bool zs_ug = false;  // dF/dt is defined nowhere on the segment\n";
   s += "  zsi_partial = false;\n";
   s += "  vec3 AX = zsa_var(o.x, d.x, tm, h), AY = zsa_var(o.y, d.y, tm, h), "
        "AZ = zsa_var(o.z, d.z, tm, h);\n";
   s += ray.f;
   s += "  partial = zsi_partial;\n";
-  s += ray.grad;
-  s += "  zsa_finish(" + aname(f) + ", zsa_dot(" + aname(grad[0]) + ", " + aname(grad[1]) + ", " +
-       aname(grad[2]) + ", d), zs_u, zs_ug || zsi_partial, F, D);\n}\n";
+  s += ray.df;
+  s += "  zsa_finish(" + aname(f) + ", " + aname(df) + ", zs_u, zs_ug || zsi_partial, F, D);\n}\n";
   return {s};
 }
 

@@ -1,6 +1,5 @@
 #pragma once
-// Interval GLSL for a formula: takes the expression graph with the roots of F and of its
-// gradient, puts out the block the interval method (tracing.method = "interval") joins after
+// Interval GLSL for a formula: takes the expression graph and the root of F, puts out the block the interval method (tracing.method = "interval") joins after
 // the formula block:
 //
 //   void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out bool partial)
@@ -11,7 +10,7 @@
 // shaders/templates/interval_prelude.frag.glsl); constants are rounded outward to floats.
 // F = vec3(c, s, r) holds F(o + t d) in c + s tau +- r for t = tm + h tau, tau in [-1, 1]
 // (r = -1 where F is defined nowhere on the segment); D encloses the derivative along d,
-// grad F . d, over the segment (whole where it cannot be bounded); `partial` is true where
+// grad F . d (derived in forward mode along d, expr/derivative.hpp), over the segment (whole where it cannot be bounded); `partial` is true where
 // some operation of F was restricted to its domain or divided by an interval holding 0 (F
 // may be undefined or unbounded on part of the segment). docs/codegen.md ("Interval GLSL")
 // states the contract.
@@ -26,7 +25,7 @@ struct IntervalGlsl {
   std::string source;  // the interval block, ending with a newline
 };
 
-// f and grad must be nodes of g (grad as returned by gradient(g, f)).
-IntervalGlsl emitIntervalGlsl(const Graph& g, NodeId f, const std::array<NodeId, 3>& grad);
+// f must be a node of g; the derivative along the ray is derived here (g is not changed).
+IntervalGlsl emitIntervalGlsl(const Graph& g, NodeId f);
 
 }  // namespace zs

@@ -73,10 +73,9 @@ NodeId derive(Builder& B, NodeId self, const Node& n, NodeId da, NodeId db) {
   return B.c(0);
 }
 
-}  // namespace
-
-NodeId derivative(Graph& g, NodeId root, int axis) {
-  const Op var = axis == 0 ? Op::VarX : axis == 1 ? Op::VarY : Op::VarZ;
+// Forward mode over the topological order; leaf(op) is the derivative of the variable `op`.
+template <class Leaf>
+NodeId forwardDerivative(Graph& g, NodeId root, Leaf leaf) {
   Builder B{g};
   const std::vector<NodeId> order = reachable(g, {root});
   std::vector<NodeId> d(g.size(), kNoNode);
@@ -86,7 +85,7 @@ NodeId derivative(Graph& g, NodeId root, int axis) {
     if (g.isSpatiallyConstant(id)) {
       r = B.c(0);
     } else if (opInfo(n.op).arity == 0) {
-      r = B.c(n.op == var ? 1.0 : 0.0);
+      r = leaf(n.op);
     } else {
       const NodeId da = d[static_cast<std::size_t>(n.a)];
       const NodeId db = opInfo(n.op).arity >= 2 ? d[static_cast<std::size_t>(n.b)] : kNoNode;
@@ -95,6 +94,19 @@ NodeId derivative(Graph& g, NodeId root, int axis) {
     d[static_cast<std::size_t>(id)] = r;
   }
   return d[static_cast<std::size_t>(root)];
+}
+
+}  // namespace
+
+NodeId derivative(Graph& g, NodeId root, int axis) {
+  const Op var = axis == 0 ? Op::VarX : axis == 1 ? Op::VarY : Op::VarZ;
+  return forwardDerivative(g, root, [&](Op op) { return g.constant(op == var ? 1.0 : 0.0); });
+}
+
+NodeId directionalDerivative(Graph& g, NodeId root, const std::array<NodeId, 3>& direction) {
+  return forwardDerivative(g, root, [&](Op op) {
+    return direction[op == Op::VarX ? 0 : op == Op::VarY ? 1 : 2];
+  });
 }
 
 std::array<NodeId, 3> gradient(Graph& g, NodeId root) {

@@ -44,6 +44,11 @@ bool opIsTotal(Op op) {
 
 }  // namespace
 
+NodeId Graph::find(const Node& n) const {
+  const auto it = index_.find(n);
+  return it != index_.end() ? it->second : kNoNode;
+}
+
 NodeId Graph::intern(const Node& n) {
   if (auto it = index_.find(n); it != index_.end()) return it->second;
   const auto id = static_cast<NodeId>(nodes_.size());

@@ -44,6 +44,9 @@ class Graph {
   NodeId binary(Op op, NodeId a, NodeId b);
   NodeId powi(NodeId a, int exponent);
 
+  // The id of a node equal to n (operands, value, exponent) if the graph has one, else kNoNode.
+  NodeId find(const Node& n) const;
+
   const Node& operator[](NodeId id) const { return nodes_[static_cast<std::size_t>(id)]; }
   std::size_t size() const { return nodes_.size(); }
   const std::vector<std::string>& params() const { return params_; }

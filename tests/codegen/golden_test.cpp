@@ -58,7 +58,7 @@ void checkIntervalGolden(const GoldenCase& c) {
   std::optional<Formula> formula = parseOrFail(c.formula);
   ASSERT_TRUE(formula.has_value());
   const std::array<NodeId, 3> grad = gradient(formula->graph, formula->root);
-  const IntervalGlsl interval = emitIntervalGlsl(formula->graph, formula->root, grad);
+  const IntervalGlsl interval = emitIntervalGlsl(formula->graph, formula->root);
   expectGolden(goldenPath(std::string("interval_") + c.name),
                std::string("// formula: ") + c.formula + "\n" + interval.source);
   const GlslFormula glsl = emitFormulaGlsl(formula->graph, formula->root, grad);

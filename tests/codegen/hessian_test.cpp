@@ -33,7 +33,7 @@ Generated generate(const std::string& text) {
   g.glsl = emitFormulaGlsl(f.graph, f.root, grad);
   g.hessian = emitHessianGlsl(f.graph, grad);
   g.poly = emitRayPolynomialGlsl(f.graph, f.root);
-  g.interval = emitIntervalGlsl(f.graph, f.root, grad);
+  g.interval = emitIntervalGlsl(f.graph, f.root);
   return g;
 }
 

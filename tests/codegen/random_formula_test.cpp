@@ -77,7 +77,7 @@ TEST(RandomFormula, EveryFormulaParsesAndPassesGlslang) {
     ASSERT_TRUE(result.ok) << formatInternalShaderError("fragment shader", result);
     // The interval method's shader (the default for every formula that is not a polynomial).
     const ValidationResult interval = validateGlsl(
-        assembleFragmentShader(glsl, emitIntervalGlsl(formula->graph, formula->root, grad)),
+        assembleFragmentShader(glsl, emitIntervalGlsl(formula->graph, formula->root)),
         Stage::Fragment);
     ASSERT_TRUE(interval.ok) << formatInternalShaderError("interval fragment shader", interval);
     largestNodes = std::max(largestNodes, formula->graph.size());
@@ -109,7 +109,7 @@ TEST(RandomFormula, VeryLargeFormulaPassesGlslang) {
   const auto start = std::chrono::steady_clock::now();
   const ValidationResult result = validateGlsl(assembleFragmentShader(glsl), Stage::Fragment);
   const ValidationResult interval = validateGlsl(
-      assembleFragmentShader(glsl, emitIntervalGlsl(formula->graph, formula->root, grad)),
+      assembleFragmentShader(glsl, emitIntervalGlsl(formula->graph, formula->root)),
       Stage::Fragment);
   EXPECT_TRUE(interval.ok) << formatInternalShaderError("interval fragment shader", interval);
   const double ms =

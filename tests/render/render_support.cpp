@@ -62,7 +62,7 @@ std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& erro
     fragment = assembleFragmentShader(glsl, *emitRayPolynomialGlsl(formula.graph, formula.root),
                                       markers);
   } else if (interval) {
-    fragment = assembleFragmentShader(glsl, emitIntervalGlsl(formula.graph, formula.root, grad),
+    fragment = assembleFragmentShader(glsl, emitIntervalGlsl(formula.graph, formula.root),
                                       markers);
   } else {
     fragment = assembleFragmentShader(glsl, markers);
