@@ -33,11 +33,15 @@ vec2 zsa_range(vec3 a) {
   return zsi_unNaN(zsi_out(vec2(a.x - w, a.x + w)));
 }
 
+// How far the points enclosed may lie off the ray o + t d in each coordinate: 0 for one ray;
+// the beam pass (raytrace_beam.frag.glsl) encloses all rays of a tile around its central one.
+float zsa_lateral = 0.0;
+
 // The coordinate o + d t on the segment; the slack also covers the point evaluations of the
 // tracer at the segment's ends, which compute o + t d in float.
 vec3 zsa_var(float o, float d, float tm, float h) {
   float c = o + d * tm, s = d * h;
-  return vec3(c, s, (abs(o) + abs(d * tm) + abs(s)) * (2.0 * ZSI_REL) + ZSI_TINY);
+  return vec3(c, s, (abs(o) + abs(d * tm) + abs(s)) * (2.0 * ZSI_REL) + ZSI_TINY + zsa_lateral);
 }
 vec3 zsa_point(float v) { return vec3(v, 0.0, abs(v) * ZSI_REL + ZSI_TINY); }
 

@@ -35,6 +35,9 @@ layout(location = 2) out float rtOutValue;
 #ifndef RT_COLOR
 #define RT_COLOR 0       // the coloring (raytrace_shading.frag.glsl)
 #endif
+#ifndef RT_BEAM_TILE
+#define RT_BEAM_TILE 8   // pixels per side of a beam pass tile (interval method)
+#endif
 #ifndef RT_KEY_LIGHT
 #define RT_KEY_LIGHT (-rt.forward)  // towards the first directional light, else the eye
 #endif
@@ -76,7 +79,28 @@ vec3 safeInverse(vec3 d) { return 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0)))
 vec3 shade(vec3 p, vec4 g, vec3 rd);
 float rtShadeValue = 0.0;
 
-float rtFirstSegment = 1e30, rtIsolatedWidth = 0.0, firstW = 0.0;
+// The ray through image point q, in pixels from the top-left corner of the full image
+// (docs/camera.md): its origin ro and unit direction rd.
+void cameraRay(vec2 q, out vec3 ro, out vec3 rd) {
+  vec2 uv = vec2((2.0 * q.x / rt.resolution.x - 1.0) * rt.resolution.x / rt.resolution.y,
+                 1.0 - 2.0 * q.y / rt.resolution.y) * rt.planeHalf;
+  ro = (rt.ortho != 0) ? rt.eye + uv.x * rt.right + uv.y * rt.up : rt.eye;
+  rd = (rt.ortho != 0) ? rt.forward : normalize(rt.forward + uv.x * rt.right + uv.y * rt.up);
+}
+
+// The interval method's hints for the first segment of a ray's walk (raytrace_interval.frag.glsl):
+// its length, and (set by rtFirstRoot) the width of the segment that isolated the last root.
+float rtFirstSegment = 1e30, rtIsolatedWidth = 0.0;
+
+#ifdef RT_HAS_BEAM
+// The beam pass's result for this pixel's tile (raytrace_beam.frag.glsl): no ray of the tile
+// has a root before x, and y is the length of the segment there that the beam could not
+// clear. rtBeamOn is 0 when no beam pass ran for this picture (the curvature probe).
+uniform sampler2D rtBeam;
+uniform int rtBeamOn;
+#endif
+
+#ifndef RT_BEAM  // the beam pass has its own main (raytrace_beam.frag.glsl)
 void main() {
   // Pixel (i, j) from the top-left of the full image (docs/camera.md).
   vec2 pixel = vec2(gl_FragCoord.x - 0.5, rt.resolution.y - gl_FragCoord.y - 0.5);
@@ -90,16 +114,25 @@ void main() {
   float value = uintBitsToFloat(0x7FC00000u);  // NaN: no hit
   vec3 sum = vec3(0.0);
 
+  // Where the primary rays' walk starts, and the length of its first segment. A single ray
+  // can decide longer segments than the whole tile's beam could: 8 times the beam's last
+  // took the fewest steps (4 and 16 more, on the gyroid, Schwarz P, metaballs, bumpy sphere).
+  float beamStart = 0.0, beamSegment = 1e30;
+#ifdef RT_HAS_BEAM
+  if (rtBeamOn != 0) {
+    vec2 beam = texelFetch(rtBeam, ivec2(gl_FragCoord.xy) / RT_BEAM_TILE, 0).xy;
+    beamStart = beam.x;
+    beamSegment = 8.0 * beam.y;
+  }
+#endif
+
   // do-while, not for: llvmpipe tests a loop's exit only at the end of its body, so a for
   // loop runs its (large) body once more, masked off, after its last real iteration.
   int s = 0;
   do {
     vec2 offset = s < grid ? (vec2(s % n, s / n) + 0.5) / float(n) - 0.5 : vec2(0.0);
-    vec2 q = pixel + offset + 0.5;
-    vec2 uv = vec2((2.0 * q.x / rt.resolution.x - 1.0) * rt.resolution.x / rt.resolution.y,
-                   1.0 - 2.0 * q.y / rt.resolution.y) * rt.planeHalf;
-    vec3 ro = (rt.ortho != 0) ? rt.eye + uv.x * rt.right + uv.y * rt.up : rt.eye;
-    vec3 rd = (rt.ortho != 0) ? rt.forward : normalize(rt.forward + uv.x * rt.right + uv.y * rt.up);
+    vec3 ro, rd;
+    cameraRay(pixel + offset + 0.5, ro, rd);
     bool colorRay = s < grid;
     vec3 color = vec3(0.0);
     float firstT = -1.0;
@@ -109,10 +142,11 @@ void main() {
     // hit weighted w when reflecting). Pass 1: one opaque reflection ray off the first hit,
     // weighted alpha * (1 - w). One loop, so rtMarch and its calls of F are inlined once.
     int pass = 0;
-    rtFirstSegment = 1e30;
+    float firstW = 0.0;  // the width of the segment that isolated the first hit
     do {
       vec3 o = ro, d = rd;
-      float tStart = 0.0, passAlpha = alpha, passScale = 1.0;
+      float tStart = beamStart, passAlpha = alpha, passScale = 1.0;
+      rtFirstSegment = beamSegment;
       int wanted = RT_MAX_HITS;
       if (pass == 1) {
         vec3 nrm = length(firstG.xyz) > 0.0 ? normalize(firstG.xyz) : -rd;
@@ -183,3 +217,4 @@ void main() {
   rtOutValue = depth < uintBitsToFloat(0x7F800000u) ? value : uintBitsToFloat(0x7FC00000u);
 #endif
 }
+#endif  // RT_BEAM

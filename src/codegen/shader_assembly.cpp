@@ -88,14 +88,17 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
                 interval->source);
   }
   appendPiece(out, "shaders/templates/" + std::string(kFrameTemplate), string++,
-              "#define RT_FRAME_STORAGE in\n" + std::string(shaderTemplate(kFrameTemplate)));
+              "#define RT_FRAME_STORAGE in\n" + std::string(shaderTemplate(kFrameTemplate)) +
+                  (interval ? std::string(kHasBeamDefine) : std::string()));
   if (!markers.empty()) appendPiece(out, "highlights.singular markers", string++, markers);
   appendPiece(out, "shaders/templates/" + std::string(kRaytraceTemplate), string++, raytrace);
   appendPiece(out, "shaders/templates/" + std::string(kShadingTemplate), string++,
               shaderTemplate(kShadingTemplate));
   appendPiece(out, "shaders/templates/" + std::string(marchName), string++, march);
   if (!firstRoots.empty())
-    appendPiece(out, "shaders/templates/" + std::string(kFirstRootsTemplate), string, firstRoots);
+    appendPiece(out, "shaders/templates/" + std::string(kFirstRootsTemplate), string++, firstRoots);
+  if (interval)
+    appendPiece(out, "shaders/templates/" + std::string(kBeamTemplate), string, shaderTemplate(kBeamTemplate));
   return out;
 }
 

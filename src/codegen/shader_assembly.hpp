@@ -36,6 +36,10 @@ inline constexpr std::string_view kSamplingTemplate = "raytrace_sampling.frag.gl
 inline constexpr std::string_view kBernsteinTemplate = "raytrace_bernstein.frag.glsl";
 inline constexpr std::string_view kIntervalTemplate = "raytrace_interval.frag.glsl";
 inline constexpr std::string_view kFirstRootsTemplate = "raytrace_first_roots.frag.glsl";
+// The interval method's beam pass: its main() with RT_BEAM defined (render/ray_tracer.cpp).
+inline constexpr std::string_view kBeamTemplate = "raytrace_beam.frag.glsl";
+// Where a fragment shader has a beam pass (the interval method's), it says so with this line.
+inline constexpr std::string_view kHasBeamDefine = "#define RT_HAS_BEAM\n";
 inline constexpr std::string_view kIntervalPreludeTemplate = "interval_prelude.frag.glsl";
 inline constexpr std::string_view kAffinePreludeTemplate = "affine_prelude.frag.glsl";
 inline constexpr std::string_view kVertexTemplate = "fullscreen.vert.glsl";

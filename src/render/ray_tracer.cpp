@@ -18,7 +18,14 @@ namespace zs {
 
 RayTracer::RayTracer() : preferred_(variantFor(RenderSettings{})) { glGenVertexArrays(1, &vao_); }
 
+namespace {
+// Pixels per side of a beam pass tile: 8 x 8 rays share one walk through empty space. Smaller
+// tiles enclose tighter but cost more beam fragments; 8 measured best (docs/renderer.md).
+constexpr int kBeamTile = 8;
+}  // namespace
+
 RayTracer::~RayTracer() {
+  releaseBeam();
   releaseTarget();
   deletePrograms();
   if (nodeTexture_) glDeleteTextures(1, &nodeTexture_);
@@ -46,6 +53,8 @@ bool RayTracer::build(std::string_view vertexSource, std::string_view fragmentSo
   }
   for (auto& [variant, old] : previous) glDeleteProgram(old);
   program_ = first;
+  // shader_assembly.cpp's kHasBeamDefine: the interval method's shaders have a beam pass.
+  hasBeam_ = fragmentSource_.find("\n#define RT_HAS_BEAM\n") != std::string::npos;
   locations_.clear();
   return true;
 }
@@ -66,8 +75,9 @@ unsigned RayTracer::program(const Variant& v, std::string& log) {
   const std::size_t eol = source.find('\n');
   const std::string defines = "#define RT_SAMPLES " + std::to_string(v.samples) +
                               "\n#define RT_MAX_HITS " + std::to_string(v.maxHits) +
-                              "\n#define RT_REFLECTION " + (v.reflection ? "1" : "0") + "\n" +
-                              v.shading + "#line 2 0\n";
+                              "\n#define RT_REFLECTION " + (v.reflection ? "1" : "0") +
+                              "\n#define RT_BEAM_TILE " + std::to_string(kBeamTile) + "\n" +
+                              (v.beam ? "#define RT_BEAM\n" : "") + v.shading + "#line 2 0\n";
   source.insert(eol == std::string::npos ? source.size() : eol + 1, defines);
   const unsigned p = compileProgram(vertexSource_, source, log);
   if (!p) return 0;  // the variants that work stay, so going back to them still works
@@ -123,6 +133,63 @@ std::string RayTracer::setHierarchy(std::span<const float> packed) {
 
 void RayTracer::setParams(std::span<const float> params) {
   params_.assign(params.begin(), params.end());
+}
+
+void RayTracer::releaseBeam() {
+  if (beamFbo_) glDeleteFramebuffers(1, &beamFbo_);
+  if (beamTex_) glDeleteTextures(1, &beamTex_);
+  beamFbo_ = beamTex_ = 0;
+  beamWidth_ = beamHeight_ = 0;
+}
+
+bool RayTracer::drawBeam(const RenderSettings& settings, const Domain& domain, int width,
+                         int height) {
+  if (!hasBeam_) return false;
+  Variant v = preferred_;
+  v.beam = true;
+  std::string log;
+  const unsigned beam = program(v, log);
+  if (!beam) return false;  // the pixels then walk on their own (the picture is the same)
+  const int w = (width + kBeamTile - 1) / kBeamTile, h = (height + kBeamTile - 1) / kBeamTile;
+  if (!beamFbo_ || w != beamWidth_ || h != beamHeight_) {
+    releaseBeam();
+    glGenTextures(1, &beamTex_);
+    glBindTexture(GL_TEXTURE_2D, beamTex_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, w, h, 0, GL_RG, GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glGenFramebuffers(1, &beamFbo_);
+    glBindFramebuffer(GL_FRAMEBUFFER, beamFbo_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, beamTex_, 0);
+    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+      releaseBeam();
+      return false;
+    }
+    beamWidth_ = w;
+    beamHeight_ = h;
+  }
+  GLint bound = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+  const unsigned main = program_;
+  program_ = beam;
+  locations_.clear();
+  glUseProgram(beam);
+  glBindFramebuffer(GL_FRAMEBUFFER, beamFbo_);
+  const GLenum buffer = GL_COLOR_ATTACHMENT0;
+  glDrawBuffers(1, &buffer);
+  // The full picture's uniforms: the beam shader finds each tile's rays from rt.resolution.
+  const int vertices = setUniforms(settings, domain, width, height);
+  setDrawState(settings, w, h, false);
+  // Tiles no fragment covers say nothing: start at 0 with no first segment hint.
+  const float none[4] = {0.0f, std::numeric_limits<float>::max(), 0.0f, 0.0f};
+  glClearBufferfv(GL_COLOR, 0, none);
+  if (vertices > 0) glDrawArrays(GL_TRIANGLES, 0, vertices);
+  program_ = main;
+  locations_.clear();
+  glUseProgram(main);
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(bound));
+  return true;
 }
 
 void RayTracer::releaseTarget() {
@@ -192,9 +259,17 @@ std::string RayTracer::prepare(const RenderSettings& settings, const Domain& dom
   curvatureRange_ = needsCurvature(settings.shading.color)
                         ? resolveCurvatureRange(settings, domain, width, height)
                         : 0;
+  const bool beam = drawBeam(settings, domain, width, height);
   if (offscreen) glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   vertices_ = setUniforms(settings, domain, width, height);
   setDrawState(settings, width, height, offscreen);
+  if (beam) {
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, beamTex_);
+    glActiveTexture(GL_TEXTURE0);
+    glUniform1i(uniform("rtBeam"), 1);
+    glUniform1i(uniform("rtBeamOn"), 1);
+  }
   return {};
 }
 

@@ -89,6 +89,11 @@ class RayTracer {
   int uniform(const char* name);
   std::string ensureTarget(int width, int height);
   void releaseTarget();
+  // The interval method's beam pass (raytrace_beam.frag.glsl) into beamTex_, one texel per
+  // tile of the picture; false where the shader has none or it could not run. Leaves the
+  // program in use and the framebuffer binding as they were.
+  bool drawBeam(const RenderSettings& settings, const Domain& domain, int width, int height);
+  void releaseBeam();
 
   // One program per feature variant (supersampling, kept hits, reflection: compile-time in
   // the shader, see raytrace_main.frag.glsl), compiled when a frame first needs it.
@@ -96,9 +101,10 @@ class RayTracer {
     int samples = 1, maxHits = 1;
     bool reflection = true;
     std::string shading;  // lights and coloring (render/shading_defines.hpp)
+    bool beam = false;    // the beam pass's program (raytrace_beam.frag.glsl)
     bool operator<(const Variant& o) const {
-      return std::tie(samples, maxHits, reflection, shading) <
-             std::tie(o.samples, o.maxHits, o.reflection, o.shading);
+      return std::tie(samples, maxHits, reflection, shading, beam) <
+             std::tie(o.samples, o.maxHits, o.reflection, o.shading, o.beam);
     }
   };
   static Variant variantFor(const RenderSettings& settings);
@@ -118,6 +124,9 @@ class RayTracer {
   double curvatureRange_ = 0;
   unsigned fbo_ = 0, colorTex_ = 0, depthTex_ = 0, valueTex_ = 0;
   int targetWidth_ = 0, targetHeight_ = 0;
+  unsigned beamFbo_ = 0, beamTex_ = 0;
+  int beamWidth_ = 0, beamHeight_ = 0;
+  bool hasBeam_ = false;  // the fragment shader has a beam pass
   GpuHierarchy hierarchy_;
   std::vector<float> params_;
   bool tangentRoots_ = true;

@@ -62,9 +62,13 @@ void checkIntervalGolden(const GoldenCase& c) {
   expectGolden(goldenPath(std::string("interval_") + c.name),
                std::string("// formula: ") + c.formula + "\n" + interval.source);
   const GlslFormula glsl = emitFormulaGlsl(formula->graph, formula->root, grad);
-  const ValidationResult result =
-      validateGlsl(assembleFragmentShader(glsl, interval), Stage::Fragment);
+  std::string source = assembleFragmentShader(glsl, interval);
+  const ValidationResult result = validateGlsl(source, Stage::Fragment);
   EXPECT_TRUE(result.ok) << formatInternalShaderError("interval fragment shader", result);
+  // The beam pass's program is the same text with RT_BEAM defined (render/ray_tracer.cpp).
+  source.insert(source.find('\n') + 1, "#define RT_BEAM\n#line 2 0\n");
+  const ValidationResult beam = validateGlsl(source, Stage::Fragment);
+  EXPECT_TRUE(beam.ok) << formatInternalShaderError("interval beam pass shader", beam);
 }
 
 class GoldenThesis : public ::testing::TestWithParam<GoldenCase> {};

@@ -3,7 +3,7 @@
 // F and dF/dt as affine forms in tau along the segment t = tm + h tau.
 void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out bool partial) {
   bool zs_u = false;   // F is defined nowhere on the segment
-  bool zs_ug = false;  // the gradient is defined nowhere on the segment
+  bool zs_ug = false;  // dF/dt is defined nowhere on the segment
   zsi_partial = false;
   vec3 AX = zsa_var(o.x, d.x, tm, h), AY = zsa_var(o.y, d.y, tm, h), AZ = zsa_var(o.z, d.z, tm, h);
   vec3 a0 = zsa_powi(AX, 2);
@@ -14,36 +14,42 @@ void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out b
   vec3 a5 = zsa_sqrt(a4, zs_u);
   vec3 a6 = zsa_sub(a5, vec3(1.0, 0.0, 0.0));
   vec3 a7 = zsa_scale(AX, 10.0);
-  vec3 a8 = zsa_sin(a7);
-  vec3 a9 = zsa_mul(zsa_fromInterval(vec2(0.08, 0.080000006)), a8);
-  vec3 a10 = zsa_scale(AY, 10.0);
-  vec3 a11 = zsa_sin(a10);
-  vec3 a12 = zsa_mul(a9, a11);
-  vec3 a13 = zsa_scale(AZ, 10.0);
-  vec3 a14 = zsa_sin(a13);
-  vec3 a15 = zsa_mul(a12, a14);
-  vec3 a16 = zsa_sub(a6, a15);
+  vec3 a8, a9;
+  zsa_sincos(a7, a8, a9);
+  vec3 a10 = zsa_mul(zsa_fromInterval(vec2(0.08, 0.080000006)), a8);
+  vec3 a11 = zsa_scale(AY, 10.0);
+  vec3 a12, a13;
+  zsa_sincos(a11, a12, a13);
+  vec3 a14 = zsa_mul(a10, a12);
+  vec3 a15 = zsa_scale(AZ, 10.0);
+  vec3 a16, a17;
+  zsa_sincos(a15, a16, a17);
+  vec3 a18 = zsa_mul(a14, a16);
+  vec3 a19 = zsa_sub(a6, a18);
   partial = zsi_partial;
-  vec3 a17 = zsa_scale(AX, 2.0);
-  vec3 a18 = zsa_scale(AY, 2.0);
-  vec3 a19 = zsa_scale(AZ, 2.0);
-  vec3 a20 = zsa_scale(a5, 2.0);
-  vec3 a21 = zsa_div(a17, a20);
-  vec3 a22 = zsa_cos(a7);
-  vec3 a23 = zsa_mul(zsa_fromInterval(vec2(0.79999995, 0.8)), a22);
-  vec3 a24 = zsa_cos(a10);
-  vec3 a25 = zsa_mul(a23, a11);
-  vec3 a26 = zsa_cos(a13);
-  vec3 a27 = zsa_mul(a25, a14);
-  vec3 a28 = zsa_sub(a21, a27);
-  vec3 a29 = zsa_div(a18, a20);
-  vec3 a30 = zsa_scale(a24, 10.0);
+  vec3 a20 = zsa_scale(AX, 2.0);
+  vec3 a21 = zsa_scale(AY, 2.0);
+  vec3 a22 = zsa_scale(AZ, 2.0);
+  vec3 a23 = zsa_scale(a5, 2.0);
+  vec3 a24 = zsa_scale(a20, d.x);
+  vec3 a25 = zsa_scale(a21, d.y);
+  vec3 a26 = zsa_add(a24, a25);
+  vec3 a27 = zsa_scale(a22, d.z);
+  vec3 a28 = zsa_add(a26, a27);
+  vec3 a29 = zsa_div(a28, a23);
+  vec3 a30 = zsa_scale(vec3(d.x, 0.0, 0.0), 10.0);
   vec3 a31 = zsa_mul(a9, a30);
-  vec3 a32 = zsa_mul(a31, a14);
-  vec3 a33 = zsa_sub(a29, a32);
-  vec3 a34 = zsa_div(a19, a20);
-  vec3 a35 = zsa_scale(a26, 10.0);
-  vec3 a36 = zsa_mul(a12, a35);
-  vec3 a37 = zsa_sub(a34, a36);
-  zsa_finish(a16, zsa_dot(a28, a33, a37, d), zs_u, zs_ug || zsi_partial, F, D);
+  vec3 a32 = zsa_mul(zsa_fromInterval(vec2(0.08, 0.080000006)), a31);
+  vec3 a33 = zsa_scale(vec3(d.y, 0.0, 0.0), 10.0);
+  vec3 a34 = zsa_mul(a13, a33);
+  vec3 a35 = zsa_mul(a10, a34);
+  vec3 a36 = zsa_mul(a32, a12);
+  vec3 a37 = zsa_add(a36, a35);
+  vec3 a38 = zsa_scale(vec3(d.z, 0.0, 0.0), 10.0);
+  vec3 a39 = zsa_mul(a17, a38);
+  vec3 a40 = zsa_mul(a14, a39);
+  vec3 a41 = zsa_mul(a37, a16);
+  vec3 a42 = zsa_add(a41, a40);
+  vec3 a43 = zsa_sub(a29, a42);
+  zsa_finish(a19, a43, zs_u, zs_ug || zsi_partial, F, D);
 }

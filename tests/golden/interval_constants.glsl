@@ -3,7 +3,7 @@
 // F and dF/dt as affine forms in tau along the segment t = tm + h tau.
 void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out bool partial) {
   bool zs_u = false;   // F is defined nowhere on the segment
-  bool zs_ug = false;  // the gradient is defined nowhere on the segment
+  bool zs_ug = false;  // dF/dt is defined nowhere on the segment
   zsi_partial = false;
   vec3 AX = zsa_var(o.x, d.x, tm, h), AY = zsa_var(o.y, d.y, tm, h), AZ = zsa_var(o.z, d.z, tm, h);
   vec3 a0 = zsa_mul(zsa_fromInterval(vec2(0.099999994, 0.1)), AX);
@@ -16,5 +16,10 @@ void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out b
   vec3 a7 = zsa_scale(a6, 0.0);
   vec3 a8 = zsa_add(a5, a7);
   partial = zsi_partial;
-  zsa_finish(a8, zsa_dot(zsa_fromInterval(vec2(0.099999994, 0.1)), zsa_fromInterval(vec2(3.4028235e+38, ZSI_INF)), zsa_fromInterval(vec2(0.0, 1.1754944e-38)), d), zs_u, zs_ug || zsi_partial, F, D);
+  vec3 a9 = zsa_scale(zsa_fromInterval(vec2(0.099999994, 0.1)), d.x);
+  vec3 a10 = zsa_scale(zsa_fromInterval(vec2(3.4028235e+38, ZSI_INF)), d.y);
+  vec3 a11 = zsa_add(a9, a10);
+  vec3 a12 = zsa_scale(zsa_fromInterval(vec2(0.0, 1.1754944e-38)), d.z);
+  vec3 a13 = zsa_add(a11, a12);
+  zsa_finish(a8, a13, zs_u, zs_ug || zsi_partial, F, D);
 }

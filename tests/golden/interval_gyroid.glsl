@@ -3,32 +3,40 @@
 // F and dF/dt as affine forms in tau along the segment t = tm + h tau.
 void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out bool partial) {
   bool zs_u = false;   // F is defined nowhere on the segment
-  bool zs_ug = false;  // the gradient is defined nowhere on the segment
+  bool zs_ug = false;  // dF/dt is defined nowhere on the segment
   zsi_partial = false;
   vec3 AX = zsa_var(o.x, d.x, tm, h), AY = zsa_var(o.y, d.y, tm, h), AZ = zsa_var(o.z, d.z, tm, h);
-  vec3 a0 = zsa_sin(AX);
-  vec3 a1 = zsa_cos(AY);
-  vec3 a2 = zsa_mul(a0, a1);
-  vec3 a3 = zsa_sin(AY);
-  vec3 a4 = zsa_cos(AZ);
-  vec3 a5 = zsa_mul(a3, a4);
-  vec3 a6 = zsa_add(a2, a5);
-  vec3 a7 = zsa_sin(AZ);
-  vec3 a8 = zsa_cos(AX);
-  vec3 a9 = zsa_mul(a7, a8);
-  vec3 a10 = zsa_add(a6, a9);
+  vec3 a0, a1;
+  zsa_sincos(AX, a0, a1);
+  vec3 a3, a2;
+  zsa_sincos(AY, a3, a2);
+  vec3 a4 = zsa_mul(a0, a2);
+  vec3 a6, a5;
+  zsa_sincos(AZ, a6, a5);
+  vec3 a7 = zsa_mul(a3, a5);
+  vec3 a8 = zsa_add(a4, a7);
+  vec3 a9 = zsa_mul(a6, a1);
+  vec3 a10 = zsa_add(a8, a9);
   partial = zsi_partial;
-  vec3 a11 = zsa_mul(a8, a1);
-  vec3 a12 = zsa_neg(a0);
-  vec3 a13 = zsa_mul(a7, a12);
-  vec3 a14 = zsa_add(a11, a13);
-  vec3 a15 = zsa_neg(a3);
-  vec3 a16 = zsa_mul(a0, a15);
-  vec3 a17 = zsa_mul(a1, a4);
-  vec3 a18 = zsa_add(a16, a17);
-  vec3 a19 = zsa_neg(a7);
+  vec3 a11 = zsa_scale(a1, d.x);
+  vec3 a12 = zsa_scale(a3, d.y);
+  vec3 a13 = zsa_neg(a12);
+  vec3 a14 = zsa_mul(a0, a13);
+  vec3 a15 = zsa_mul(a11, a2);
+  vec3 a16 = zsa_add(a15, a14);
+  vec3 a17 = zsa_scale(a2, d.y);
+  vec3 a18 = zsa_scale(a6, d.z);
+  vec3 a19 = zsa_neg(a18);
   vec3 a20 = zsa_mul(a3, a19);
-  vec3 a21 = zsa_mul(a4, a8);
-  vec3 a22 = zsa_add(a20, a21);
-  zsa_finish(a10, zsa_dot(a14, a18, a22, d), zs_u, zs_ug || zsi_partial, F, D);
+  vec3 a21 = zsa_mul(a17, a5);
+  vec3 a22 = zsa_add(a21, a20);
+  vec3 a23 = zsa_add(a16, a22);
+  vec3 a24 = zsa_scale(a5, d.z);
+  vec3 a25 = zsa_scale(a0, d.x);
+  vec3 a26 = zsa_neg(a25);
+  vec3 a27 = zsa_mul(a6, a26);
+  vec3 a28 = zsa_mul(a24, a1);
+  vec3 a29 = zsa_add(a28, a27);
+  vec3 a30 = zsa_add(a23, a29);
+  zsa_finish(a10, a30, zs_u, zs_ug || zsi_partial, F, D);
 }

@@ -3,7 +3,7 @@
 // F and dF/dt as affine forms in tau along the segment t = tm + h tau.
 void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out bool partial) {
   bool zs_u = false;   // F is defined nowhere on the segment
-  bool zs_ug = false;  // the gradient is defined nowhere on the segment
+  bool zs_ug = false;  // dF/dt is defined nowhere on the segment
   zsi_partial = false;
   vec3 AX = zsa_var(o.x, d.x, tm, h), AY = zsa_var(o.y, d.y, tm, h), AZ = zsa_var(o.z, d.z, tm, h);
   vec3 a0 = zsa_sub(AX, vec3(0.5, 0.0, 0.0));
@@ -31,26 +31,31 @@ void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out b
   vec3 a22 = zsa_add(a14, a21);
   vec3 a23 = zsa_sub(a22, zsa_fromInterval(vec2(0.59999996, 0.6)));
   partial = zsi_partial;
-  vec3 a24 = zsa_scale(a0, (-8.0));
-  vec3 a25 = zsa_mul(a7, a24);
-  vec3 a26 = zsa_scale(a8, (-8.0));
-  vec3 a27 = zsa_mul(a13, a26);
-  vec3 a28 = zsa_add(a25, a27);
-  vec3 a29 = zsa_scale(AX, (-8.0));
-  vec3 a30 = zsa_mul(a21, a29);
-  vec3 a31 = zsa_add(a28, a30);
-  vec3 a32 = zsa_scale(AY, (-8.0));
-  vec3 a33 = zsa_mul(a7, a32);
-  vec3 a34 = zsa_mul(a13, a32);
-  vec3 a35 = zsa_add(a33, a34);
-  vec3 a36 = zsa_scale(a16, (-8.0));
-  vec3 a37 = zsa_mul(a21, a36);
-  vec3 a38 = zsa_add(a35, a37);
-  vec3 a39 = zsa_scale(AZ, (-8.0));
-  vec3 a40 = zsa_mul(a7, a39);
-  vec3 a41 = zsa_mul(a13, a39);
-  vec3 a42 = zsa_add(a40, a41);
-  vec3 a43 = zsa_mul(a21, a39);
-  vec3 a44 = zsa_add(a42, a43);
-  zsa_finish(a23, zsa_dot(a31, a38, a44, d), zs_u, zs_ug || zsi_partial, F, D);
+  vec3 a24 = zsa_scale(a0, 2.0);
+  vec3 a25 = zsa_scale(AY, 2.0);
+  vec3 a26 = zsa_scale(AZ, 2.0);
+  vec3 a27 = zsa_scale(a8, 2.0);
+  vec3 a28 = zsa_scale(AX, 2.0);
+  vec3 a29 = zsa_scale(a16, 2.0);
+  vec3 a30 = zsa_scale(a24, d.x);
+  vec3 a31 = zsa_scale(a25, d.y);
+  vec3 a32 = zsa_add(a30, a31);
+  vec3 a33 = zsa_scale(a26, d.z);
+  vec3 a34 = zsa_add(a32, a33);
+  vec3 a35 = zsa_scale(a34, (-4.0));
+  vec3 a36 = zsa_mul(a7, a35);
+  vec3 a37 = zsa_scale(a27, d.x);
+  vec3 a38 = zsa_add(a37, a31);
+  vec3 a39 = zsa_add(a38, a33);
+  vec3 a40 = zsa_scale(a39, (-4.0));
+  vec3 a41 = zsa_mul(a13, a40);
+  vec3 a42 = zsa_add(a36, a41);
+  vec3 a43 = zsa_scale(a28, d.x);
+  vec3 a44 = zsa_scale(a29, d.y);
+  vec3 a45 = zsa_add(a43, a44);
+  vec3 a46 = zsa_add(a45, a33);
+  vec3 a47 = zsa_scale(a46, (-4.0));
+  vec3 a48 = zsa_mul(a21, a47);
+  vec3 a49 = zsa_add(a42, a48);
+  zsa_finish(a23, a49, zs_u, zs_ug || zsi_partial, F, D);
 }

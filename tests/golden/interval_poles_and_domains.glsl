@@ -3,7 +3,7 @@
 // F and dF/dt as affine forms in tau along the segment t = tm + h tau.
 void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out bool partial) {
   bool zs_u = false;   // F is defined nowhere on the segment
-  bool zs_ug = false;  // the gradient is defined nowhere on the segment
+  bool zs_ug = false;  // dF/dt is defined nowhere on the segment
   zsi_partial = false;
   vec3 AX = zsa_var(o.x, d.x, tm, h), AY = zsa_var(o.y, d.y, tm, h), AZ = zsa_var(o.z, d.z, tm, h);
   vec3 a0 = zsa_div(vec3(1.0, 0.0, 0.0), AX);
@@ -23,24 +23,30 @@ void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out b
   vec3 a14 = zsa_add(a12, a13);
   partial = zsi_partial;
   vec3 a15 = zsa_powi(AX, 2);
-  vec3 a16 = zsa_div(vec3((-1.0), 0.0, 0.0), a15);
-  vec3 a17 = zsa_scale(a2, 2.0);
-  vec3 a18 = zsa_scale(AZ, 2.0);
-  vec3 a19 = zsa_powi(a7, 2);
-  vec3 a20 = zsa_sub(vec3(1.0, 0.0, 0.0), a19);
-  vec3 a21 = zsa_sqrt(a20, zs_ug);
-  vec3 a22 = zsa_div(vec3(0.5, 0.0, 0.0), a21);
-  vec3 a23 = zsa_add(a16, a22);
-  vec3 a24 = zsa_powi(a10, 2);
-  vec3 a25 = zsa_sub(vec3(1.0, 0.0, 0.0), a24);
-  vec3 a26 = zsa_sqrt(a25, zs_ug);
-  vec3 a27 = zsa_cos(AZ);
-  vec3 a28 = zsa_powi(a27, 2);
-  vec3 a29 = zsa_div(vec3(1.0, 0.0, 0.0), a17);
-  vec3 a30 = zsa_div(vec3(0.5, 0.0, 0.0), a26);
-  vec3 a31 = zsa_sub(a29, a30);
-  vec3 a32 = zsa_div(a18, a4);
-  vec3 a33 = zsa_div(vec3(1.0, 0.0, 0.0), a28);
-  vec3 a34 = zsa_add(a32, a33);
-  zsa_finish(a14, zsa_dot(a23, a31, a34, d), zs_u, zs_ug || zsi_partial, F, D);
+  vec3 a16 = zsa_scale(a2, 2.0);
+  vec3 a17 = zsa_scale(AZ, 2.0);
+  vec3 a18 = zsa_powi(a7, 2);
+  vec3 a19 = zsa_sub(vec3(1.0, 0.0, 0.0), a18);
+  vec3 a20 = zsa_sqrt(a19, zs_ug);
+  vec3 a21 = zsa_powi(a10, 2);
+  vec3 a22 = zsa_sub(vec3(1.0, 0.0, 0.0), a21);
+  vec3 a23 = zsa_sqrt(a22, zs_ug);
+  vec3 a24 = zsa_cos(AZ);
+  vec3 a25 = zsa_powi(a24, 2);
+  vec3 a26 = zsa_neg(vec3(d.x, 0.0, 0.0));
+  vec3 a27 = zsa_div(a26, a15);
+  vec3 a28 = zsa_div(vec3(d.y, 0.0, 0.0), a16);
+  vec3 a29 = zsa_add(a27, a28);
+  vec3 a30 = zsa_scale(a17, d.z);
+  vec3 a31 = zsa_div(a30, a4);
+  vec3 a32 = zsa_add(a29, a31);
+  vec3 a33 = zsa_div(vec3(d.x, 0.0, 0.0), vec3(2.0, 0.0, 0.0));
+  vec3 a34 = zsa_div(a33, a20);
+  vec3 a35 = zsa_add(a32, a34);
+  vec3 a36 = zsa_div(vec3(d.y, 0.0, 0.0), vec3(2.0, 0.0, 0.0));
+  vec3 a37 = zsa_div(a36, a23);
+  vec3 a38 = zsa_sub(a35, a37);
+  vec3 a39 = zsa_div(vec3(d.z, 0.0, 0.0), a25);
+  vec3 a40 = zsa_add(a38, a39);
+  zsa_finish(a14, a40, zs_u, zs_ug || zsi_partial, F, D);
 }
