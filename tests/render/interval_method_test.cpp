@@ -35,6 +35,7 @@ struct Case {
   int samples = 1000;  // reference samples per ray
   int size = 48;
   TracingMethod method = TracingMethod::Auto;
+  Projection projection = Projection::Perspective;
 };
 
 using Measured = test::DepthComparison;
@@ -54,20 +55,23 @@ Measured measure(const Case& c) {
   auto tracer = test::makeTracer(spec, error);
   EXPECT_NE(tracer, nullptr) << error;
   if (!tracer) return m;
-  const RenderSettings s = test::testSettings(c.eye);
+  RenderSettings s = test::testSettings(c.eye);
+  s.camera.projection = c.projection;
+  s.camera.height = 12.0;  // orthographic: the gyroid's and Schwarz P's boxes fill the view
   const Frame frame = tracer->render(s, c.domain, c.size, c.size);
   EXPECT_EQ(frame.error, "");
 
   PointEvaluator shown = evaluatorFor(c.reference.empty() ? c.formula : c.reference);
   // The pixel footprint at distance t, as the shader computes it, plus tracing.epsilon.
-  const double planeHalf = std::tan(s.camera.fovY * M_PI / 360.0);
+  const bool ortho = c.projection == Projection::Orthographic;
+  const double planeHalf = ortho ? 0.5 * s.camera.height : std::tan(s.camera.fovY * M_PI / 360.0);
   const test::DepthComparison d = test::compareDepth(
       frame.depth, s.camera, c.size, shown,
       [&](const Ray& r) {
         const auto [t0, t1] = test::rayInBox(r, c.domain);
         return t0 <= t1 ? test::sampledFirstHit(shown, r, t0, t1, c.samples) : NAN;
       },
-      [&](double t) { return 2.0 * (s.tracing.epsilon + 2.0 * planeHalf / c.size * t); });
+      [&](double t) { return 2.0 * (s.tracing.epsilon + 2.0 * planeHalf / c.size * (ortho ? 1.0 : t)); });
   m = d;
   std::printf("  %s: %d reference hits, %d missed, %d extra, worst depth error %.3g; left out: "
               "%d grazing, %d within a footprint\n",
@@ -105,6 +109,16 @@ TEST(IntervalMethod, BumpySphere) {
   expectExact({"sqrt(x^2+y^2+z^2) - 1 - 0.08*sin(10*x)*sin(10*y)*sin(10*z)", "", cube(1.5),
                {0.6, 0.9, 3.2}},
               500);
+}
+
+// The beam pass (raytrace_beam.frag.glsl) encloses a tile's rays by their spread in origin
+// and direction: with parallel rays only the origins spread, and a picture whose size is no
+// multiple of the tile has partial tiles at two edges.
+TEST(IntervalMethod, BeamOfAnOrthographicViewWithPartialTiles) {
+  Case c{"sin(x)*cos(y) + sin(y)*cos(z) + sin(z)*cos(x)", "", cube(5), {12, 9, 15}};
+  c.projection = Projection::Orthographic;
+  c.size = 52;
+  expectExact(c, 1000);
 }
 
 TEST(IntervalMethod, ThinSheetsAreDrawnWhereverTheyAreHit) {
