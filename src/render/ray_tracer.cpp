@@ -55,6 +55,7 @@ bool RayTracer::build(std::string_view vertexSource, std::string_view fragmentSo
   program_ = first;
   // shader_assembly.cpp's kHasBeamDefine: the interval method's shaders have a beam pass.
   hasBeam_ = fragmentSource_.find("\n#define RT_HAS_BEAM\n") != std::string::npos;
+  framesDrawn_ = 0;
   locations_.clear();
   return true;
 }
@@ -144,7 +145,9 @@ void RayTracer::releaseBeam() {
 
 bool RayTracer::drawBeam(const RenderSettings& settings, const Domain& domain, int width,
                          int height) {
-  if (!hasBeam_) return false;
+  const bool wanted = beamPass_ == BeamPass::Always ||
+                      (beamPass_ == BeamPass::FromSecondFrame && framesDrawn_ > 0);
+  if (!hasBeam_ || !wanted) return false;
   Variant v = preferred_;
   v.beam = true;
   std::string log;
@@ -180,8 +183,9 @@ bool RayTracer::drawBeam(const RenderSettings& settings, const Domain& domain, i
   glDrawBuffers(1, &buffer);
   // The full picture's uniforms: the beam shader finds each tile's rays from rt.resolution.
   const int vertices = setUniforms(settings, domain, width, height);
-  setDrawState(settings, w, h, false);
+  setDrawState(w, h);
   // Tiles no fragment covers say nothing: start at 0 with no first segment hint.
+  glDisable(GL_SCISSOR_TEST);
   const float none[4] = {0.0f, std::numeric_limits<float>::max(), 0.0f, 0.0f};
   glClearBufferfv(GL_COLOR, 0, none);
   if (vertices > 0) glDrawArrays(GL_TRIANGLES, 0, vertices);
@@ -260,9 +264,11 @@ std::string RayTracer::prepare(const RenderSettings& settings, const Domain& dom
                         ? resolveCurvatureRange(settings, domain, width, height)
                         : 0;
   const bool beam = drawBeam(settings, domain, width, height);
+  ++framesDrawn_;
   if (offscreen) glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   vertices_ = setUniforms(settings, domain, width, height);
-  setDrawState(settings, width, height, offscreen);
+  setDrawState(width, height);
+  clearBackground(settings, offscreen);
   if (beam) {
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, beamTex_);
@@ -273,8 +279,7 @@ std::string RayTracer::prepare(const RenderSettings& settings, const Domain& dom
   return {};
 }
 
-void RayTracer::setDrawState(const RenderSettings& settings, int width, int height,
-                             bool offscreen) {
+void RayTracer::setDrawState(int width, int height) {
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_BUFFER, nodeTexture_);
   glBindVertexArray(vao_);
@@ -290,7 +295,6 @@ void RayTracer::setDrawState(const RenderSettings& settings, int width, int heig
     glDisable(GL_CULL_FACE);
   }
   glViewport(0, 0, width, height);
-  clearBackground(settings, offscreen);
 }
 
 void RayTracer::clearBackground(const RenderSettings& settings, bool offscreen) {
@@ -326,7 +330,8 @@ double RayTracer::resolveCurvatureRange(const RenderSettings& settings, const Do
   RenderSettings probe = settings;
   probe.shading.curvatureRange = 1;
   const int vertices = setUniforms(probe, domain, w, h);
-  setDrawState(settings, w, h, true);
+  setDrawState(w, h);
+  clearBackground(settings, true);
   if (vertices > 0) glDrawArrays(GL_TRIANGLES, 0, vertices);
   std::vector<float> values(std::size_t(w) * h);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);

@@ -38,6 +38,12 @@ using ProgressFn = std::function<bool(int tilesDone, int tilesTotal)>;
 // hits can lie, so background pixels cost nothing (same picture; docs/renderer.md).
 enum class Proxy { FullScreen, Box };
 
+// When the interval method's beam pass runs (raytrace_beam.frag.glsl; the picture keeps its
+// guarantee either way). Its program is a second JIT compile, longer than a frame at
+// 800 x 600, so by default the first frame of new shader text goes without it: a new formula
+// shows up as soon as before, and the frames after it are faster.
+enum class BeamPass { FromSecondFrame, Always, Off };
+
 class RayTracer {
  public:
   RayTracer();
@@ -73,6 +79,7 @@ class RayTracer {
   // docs/renderer.md). On by default; off only to measure what the fix costs.
   void setTangentRoots(bool on) { tangentRoots_ = on; }
   void setProxy(Proxy proxy) { proxy_ = proxy; }
+  void setBeamPass(BeamPass mode) { beamPass_ = mode; }
   // The curvature range of the last frame drawn (the viewer's legend); 0 before any.
   double curvatureRange() const { return curvatureRange_; }
 
@@ -82,9 +89,9 @@ class RayTracer {
   // Sets every uniform; returns the number of vertices to draw (0: nothing can be hit).
   int setUniforms(const RenderSettings& settings, const Domain& domain, int width, int height);
   int setProxyUniforms(const Camera& camera, const Domain& domain, int width, int height);
-  // Everything a draw needs besides the program and its uniforms: the hierarchy texture, the
-  // proxy's vertex array and culling, the viewport, and the cleared background.
-  void setDrawState(const RenderSettings& settings, int width, int height, bool offscreen);
+  // Everything a draw needs besides the program, its uniforms and the cleared target: the
+  // hierarchy texture, the proxy's vertex array and culling, the viewport.
+  void setDrawState(int width, int height);
   void clearBackground(const RenderSettings& settings, bool offscreen);
   int uniform(const char* name);
   std::string ensureTarget(int width, int height);
@@ -127,6 +134,8 @@ class RayTracer {
   unsigned beamFbo_ = 0, beamTex_ = 0;
   int beamWidth_ = 0, beamHeight_ = 0;
   bool hasBeam_ = false;  // the fragment shader has a beam pass
+  BeamPass beamPass_ = BeamPass::FromSecondFrame;
+  int framesDrawn_ = 0;  // frames prepared since the shader text last changed
   GpuHierarchy hierarchy_;
   std::vector<float> params_;
   bool tangentRoots_ = true;

@@ -81,6 +81,42 @@ TEST(Gradient, AgreesWithCentralDifferences) {
   }
 }
 
+// dF/dt along a direction given by three nodes (here parameters, as the interval GLSL's ray
+// direction) is grad F . d, from one forward pass.
+TEST(DirectionalDerivative, IsTheGradientAlongTheDirection) {
+  std::mt19937_64 rng(777);
+  std::uniform_real_distribution<double> coord(-1.5, 1.5);
+  for (const char* text : kFormulas) {
+    Formula f = parsed(text);
+    const auto grad = gradient(f.graph, f.root);
+    std::vector<double> params = {0.7, -1.3, 2.1};
+    params.resize(f.graph.params().size());
+    const NodeId dd = directionalDerivative(
+        f.graph, f.root, {f.graph.param("dx"), f.graph.param("dy"), f.graph.param("dz")});
+    const Tape tape = compileTape(f.graph, {f.root, grad[0], grad[1], grad[2], dd});
+    PointEvaluator ev(tape);
+    const std::size_t first = params.size();
+    params.resize(first + 3);
+    int checked = 0;
+    for (int i = 0; i < 300; ++i) {
+      for (int k = 0; k < 3; ++k) params[first + k] = coord(rng);
+      double out[5];
+      ev.eval(coord(rng), coord(rng), coord(rng), params, out);
+      if (!std::isfinite(out[4]) || !std::isfinite(out[1]) || !std::isfinite(out[2]) ||
+          !std::isfinite(out[3]))
+        continue;  // outside the domain
+      double dot = 0, scale = 1;
+      for (int k = 0; k < 3; ++k) {
+        dot += out[1 + k] * params[first + k];
+        scale += std::fabs(out[1 + k] * params[first + k]);
+      }
+      EXPECT_NEAR(out[4], dot, 1e-12 * scale) << text;
+      ++checked;
+    }
+    EXPECT_GT(checked, 100) << text;
+  }
+}
+
 TEST(Gradient, OfAVariableFreeFormulaIsZero) {
   Formula f = parsed("a^2 + sin(b)");
   for (NodeId d : gradient(f.graph, f.root)) {

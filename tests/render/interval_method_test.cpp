@@ -55,6 +55,7 @@ Measured measure(const Case& c) {
   auto tracer = test::makeTracer(spec, error);
   EXPECT_NE(tracer, nullptr) << error;
   if (!tracer) return m;
+  tracer->setBeamPass(BeamPass::Always);  // one frame: the default would draw it without
   RenderSettings s = test::testSettings(c.eye);
   s.camera.projection = c.projection;
   s.camera.height = 12.0;  // orthographic: the gyroid's and Schwarz P's boxes fill the view
@@ -119,6 +120,35 @@ TEST(IntervalMethod, BeamOfAnOrthographicViewWithPartialTiles) {
   c.projection = Projection::Orthographic;
   c.size = 52;
   expectExact(c, 1000);
+}
+
+// The beam only moves where each ray's walk starts: with and without it the pictures agree
+// but for rays the walk decides by where its segments fall (grazing ones).
+TEST(IntervalMethod, BeamPassKeepsThePicture) {
+  std::string error;
+  ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
+  const Domain domain = cube(1.5);
+  const RenderSettings s = test::testSettings({0.6, 0.9, 3.2});
+  auto depth = [&](BeamPass mode) {
+    auto tracer = test::makeTracer(
+        {"sqrt(x^2+y^2+z^2) - 1 - 0.08*sin(10*x)*sin(10*y)*sin(10*z)", domain, 1}, error);
+    EXPECT_NE(tracer, nullptr) << error;
+    if (!tracer) return DepthMap{};
+    tracer->setBeamPass(mode);
+    return tracer->render(s, domain, 160, 120).depth;
+  };
+  const DepthMap with = depth(BeamPass::Always), without = depth(BeamPass::Off);
+  ASSERT_EQ(with.values.size(), without.values.size());
+  int hits = 0, differ = 0;
+  for (std::size_t k = 0; k < with.values.size(); ++k) {
+    const float a = with.values[k], b = without.values[k];
+    hits += std::isfinite(b);
+    differ += std::isfinite(a) != std::isfinite(b) || (std::isfinite(a) && std::abs(a - b) > 2e-3);
+  }
+  std::printf("  bumpy sphere at 160 x 120: %d hits without the beam, %d pixels differ with it\n",
+              hits, differ);
+  EXPECT_GT(hits, 4000);
+  EXPECT_LE(differ, hits / 500) << "pixels whose hit or depth the beam pass changed";
 }
 
 TEST(IntervalMethod, ThinSheetsAreDrawnWhereverTheyAreHit) {
