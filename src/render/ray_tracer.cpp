@@ -55,7 +55,6 @@ bool RayTracer::build(std::string_view vertexSource, std::string_view fragmentSo
   program_ = first;
   // shader_assembly.cpp's kHasBeamDefine: the interval method's shaders have a beam pass.
   hasBeam_ = fragmentSource_.find("\n#define RT_HAS_BEAM\n") != std::string::npos;
-  framesDrawn_ = 0;
   locations_.clear();
   return true;
 }
@@ -145,9 +144,7 @@ void RayTracer::releaseBeam() {
 
 bool RayTracer::drawBeam(const RenderSettings& settings, const Domain& domain, int width,
                          int height) {
-  const bool wanted = beamPass_ == BeamPass::Always ||
-                      (beamPass_ == BeamPass::FromSecondFrame && framesDrawn_ > 0);
-  if (!hasBeam_ || !wanted) return false;
+  if (!hasBeam_ || !beamPass_) return false;
   Variant v = preferred_;
   v.beam = true;
   std::string log;
@@ -264,7 +261,6 @@ std::string RayTracer::prepare(const RenderSettings& settings, const Domain& dom
                         ? resolveCurvatureRange(settings, domain, width, height)
                         : 0;
   const bool beam = drawBeam(settings, domain, width, height);
-  ++framesDrawn_;
   if (offscreen) glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   vertices_ = setUniforms(settings, domain, width, height);
   setDrawState(width, height);

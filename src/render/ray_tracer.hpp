@@ -38,12 +38,6 @@ using ProgressFn = std::function<bool(int tilesDone, int tilesTotal)>;
 // hits can lie, so background pixels cost nothing (same picture; docs/renderer.md).
 enum class Proxy { FullScreen, Box };
 
-// When the interval method's beam pass runs (raytrace_beam.frag.glsl; the picture keeps its
-// guarantee either way). Its program is a second JIT compile, longer than a frame at
-// 800 x 600, so by default the first frame of new shader text goes without it: a new formula
-// shows up as soon as before, and the frames after it are faster.
-enum class BeamPass { FromSecondFrame, Always, Off };
-
 class RayTracer {
  public:
   RayTracer();
@@ -79,7 +73,9 @@ class RayTracer {
   // docs/renderer.md). On by default; off only to measure what the fix costs.
   void setTangentRoots(bool on) { tangentRoots_ = on; }
   void setProxy(Proxy proxy) { proxy_ = proxy; }
-  void setBeamPass(BeamPass mode) { beamPass_ = mode; }
+  // The interval method's beam pass (raytrace_beam.frag.glsl); on by default. The picture
+  // keeps its guarantee either way: off only to measure what it gains or to compare.
+  void setBeamPass(bool on) { beamPass_ = on; }
   // The curvature range of the last frame drawn (the viewer's legend); 0 before any.
   double curvatureRange() const { return curvatureRange_; }
 
@@ -134,8 +130,7 @@ class RayTracer {
   unsigned beamFbo_ = 0, beamTex_ = 0;
   int beamWidth_ = 0, beamHeight_ = 0;
   bool hasBeam_ = false;  // the fragment shader has a beam pass
-  BeamPass beamPass_ = BeamPass::FromSecondFrame;
-  int framesDrawn_ = 0;  // frames prepared since the shader text last changed
+  bool beamPass_ = true;
   GpuHierarchy hierarchy_;
   std::vector<float> params_;
   bool tangentRoots_ = true;

@@ -24,6 +24,7 @@ int RayTracer::setUniforms(const RenderSettings& s, const Domain& clip, int widt
   glUniform4f(uniform("rtBall"), float(clip.center[0]), float(clip.center[1]),
               float(clip.center[2]), ball ? float(clip.radius) : 0.0f);
   glUniform1i(uniform("rtHierarchy"), 0);
+  glUniform1i(uniform("rtBeam"), 1);    // its own unit: never aliases the hierarchy's
   glUniform1i(uniform("rtBeamOn"), 0);  // prepare() turns it on after a beam pass
   glUniform1i(uniform("rtNodeCount"), hierarchy_.count);
   glUniform1i(uniform("rtFirstNode"), hierarchy_.rootIsLeaf ? 0 : 1);

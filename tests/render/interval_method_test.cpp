@@ -55,7 +55,6 @@ Measured measure(const Case& c) {
   auto tracer = test::makeTracer(spec, error);
   EXPECT_NE(tracer, nullptr) << error;
   if (!tracer) return m;
-  tracer->setBeamPass(BeamPass::Always);  // one frame: the default would draw it without
   RenderSettings s = test::testSettings(c.eye);
   s.camera.projection = c.projection;
   s.camera.height = 12.0;  // orthographic: the gyroid's and Schwarz P's boxes fill the view
@@ -129,15 +128,15 @@ TEST(IntervalMethod, BeamPassKeepsThePicture) {
   ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
   const Domain domain = cube(1.5);
   const RenderSettings s = test::testSettings({0.6, 0.9, 3.2});
-  auto depth = [&](BeamPass mode) {
+  auto depth = [&](bool beam) {
     auto tracer = test::makeTracer(
         {"sqrt(x^2+y^2+z^2) - 1 - 0.08*sin(10*x)*sin(10*y)*sin(10*z)", domain, 1}, error);
     EXPECT_NE(tracer, nullptr) << error;
     if (!tracer) return DepthMap{};
-    tracer->setBeamPass(mode);
+    tracer->setBeamPass(beam);
     return tracer->render(s, domain, 160, 120).depth;
   };
-  const DepthMap with = depth(BeamPass::Always), without = depth(BeamPass::Off);
+  const DepthMap with = depth(true), without = depth(false);
   ASSERT_EQ(with.values.size(), without.values.size());
   int hits = 0, differ = 0;
   for (std::size_t k = 0; k < with.values.size(); ++k) {
