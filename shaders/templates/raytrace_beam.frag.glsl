@@ -73,7 +73,7 @@ void main() {
     }
     // Shorter than the beam is wide, a segment no longer gets tighter: stop there.
     float width = 2.0 * (rhoO + rhoD * max(cut, 0.0));
-    bool stuck = !none && (t1 - cut <= 2.0 * width || step + 1 >= RT_BEAM_STEPS);
+    bool stuck = !none && (t1 - cut <= width || step + 1 >= RT_BEAM_STEPS);
     start = stuck ? cut : start;
     segment = stuck ? t1 - cut : segment;
     // Next: after a clear segment the one to its right, 1.5 times as long; else the left
