@@ -23,6 +23,10 @@
 //     domains change sign without a root.
 //  4. An isolated root is refined by the Illinois variant of regula falsi on F until its
 //     bracket is below tracing.epsilon.
+//  5. The first segment is rtFirstSegment long (raytrace_main.frag.glsl): for a primary ray
+//     8 times the last segment of its tile's beam (raytrace_beam.frag.glsl), which also moved
+//     the ray's start; for a reflection ray the width of the segment that isolated the primary
+//     hit (rtIsolatedWidth): a scale at which the walk could decide F near there.
 // llvmpipe runs every branch of a loop body for each group of pixels: the isolation body is
 // one affine evaluation and one point evaluation, refinement has its own loop, and loops
 // are do-while (a for loop runs its body once more, masked, after its last iteration).

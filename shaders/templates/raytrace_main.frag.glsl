@@ -6,6 +6,9 @@
 // between the two, defines shade()):
 //   raytrace_sampling.frag.glsl   thesis Algorithm 1: sign samples + bisection per leaf
 //   raytrace_bernstein.frag.glsl  exact root isolation of polynomials, octree front to back
+//   raytrace_interval.frag.glsl   affine forms along the ray for every other formula; its
+//                                 primary rays start where the beam pass left their tile
+//                                 (raytrace_beam.frag.glsl, whose main() replaces this one's)
 // docs/renderer.md explains the design; docs/camera.md the camera contract. No array is
 // indexed by a run-time value: llvmpipe keeps constant-indexed arrays in registers but
 // spills dynamically indexed ones to memory.
