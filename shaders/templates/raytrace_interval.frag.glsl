@@ -40,7 +40,8 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   float fl = zs_F(o + ta * d), fr = 0.0;  // F at the left and right end of the segment
   bool dl = !zs_isUndefined(fl);
   bool done = !(len > 0.0), found = false, bracketed = false;
-  float u = 0.0, v = clamp(rtFirstSegment / len, 0.0, 1.0);  // the segment [u, v] being classified, in [0, 1]
+  // The segment [u, v] being classified, in [0, 1]; the first one as long as the hint (5.).
+  float u = 0.0, v = clamp(rtFirstSegment / len, 0.0, 1.0);
   // tracing.epsilon in units of the segment: the smallest step forward after a segment
   // without root, and the width refinement stops at.
   float least = rt.epsilon / len;

@@ -90,8 +90,9 @@ Bodies emitNodes(const Graph& g, NodeId f, NodeId df, int firstDirection) {
       case Op::VarY: own = "AY"; return;
       case Op::VarZ: own = "AZ"; return;
       case Op::Param:  // exact: the direction zsa_var moves the coordinates by
-        own = direction(id) ? std::string("vec3(") + kDirection[n.ival - firstDirection] + ", 0.0, 0.0)"
-                            : "zsa_point(zs_params[" + std::to_string(n.ival) + "])";
+        own = direction(id)
+                  ? std::string("vec3(") + kDirection[n.ival - firstDirection] + ", 0.0, 0.0)"
+                  : "zsa_point(zs_params[" + std::to_string(n.ival) + "])";
         return;
       case Op::Const:
         own = affineConstant(n.value);
@@ -114,7 +115,8 @@ Bodies emitNodes(const Graph& g, NodeId f, NodeId df, int firstDirection) {
         mate = "a" + std::to_string(next++);
         const std::string& sn = n.op == Op::Sin ? own : mate;
         const std::string& cs = n.op == Op::Sin ? mate : own;
-        body += "  vec3 " + sn + ", " + cs + ";\n  zsa_sincos(" + name(n.a) + ", " + sn + ", " + cs + ");\n";
+        body += "  vec3 " + sn + ", " + cs + ";\n";
+        body += "  zsa_sincos(" + name(n.a) + ", " + sn + ", " + cs + ");\n";
         return;
       }
     }

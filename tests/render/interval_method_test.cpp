@@ -71,7 +71,9 @@ Measured measure(const Case& c) {
         const auto [t0, t1] = test::rayInBox(r, c.domain);
         return t0 <= t1 ? test::sampledFirstHit(shown, r, t0, t1, c.samples) : NAN;
       },
-      [&](double t) { return 2.0 * (s.tracing.epsilon + 2.0 * planeHalf / c.size * (ortho ? 1.0 : t)); });
+      [&](double t) {
+        return 2.0 * (s.tracing.epsilon + 2.0 * planeHalf / c.size * (ortho ? 1.0 : t));
+      });
   m = d;
   std::printf("  %s: %d reference hits, %d missed, %d extra, worst depth error %.3g; left out: "
               "%d grazing, %d within a footprint\n",
