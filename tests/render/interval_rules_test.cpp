@@ -117,6 +117,7 @@ std::vector<float> runOnGpu(const std::string& fragment, const std::vector<float
                operands.data());
   glViewport(0, 0, kLanes, 1);
   glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_CULL_FACE);  // a ray tracer drawn before in this process culls front faces
   glDrawArrays(GL_TRIANGLES, 0, 3);
   std::vector<float> out(4 * kLanes);
   glReadPixels(0, 0, kLanes, 1, GL_RGBA, GL_FLOAT, out.data());
