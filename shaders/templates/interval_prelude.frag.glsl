@@ -1,10 +1,10 @@
 // ---- interval_prelude.frag.glsl (codegen stage): interval arithmetic for the interval
 // method (tracing.method = "interval"). Joined after raytrace_prelude.frag.glsl, before
 // affine_prelude.frag.glsl, whose zsa_* rules fall back on these (one zsi_* rule per
-// opcode, src/codegen/op_interval_glsl.cpp) for the operations without a first-order rule. The rules mirror the CPU's
-// (src/interval): an interval is a vec2 (lo, hi); an operand that lies partly outside an
-// operation's domain is restricted to it (zsi_partial records that it happened), one wholly
-// outside sets the flag u (F is defined nowhere there).
+// opcode, src/codegen/op_interval_glsl.cpp) for the operations without a first-order rule.
+// The rules mirror the CPU's (src/interval): an interval is a vec2 (lo, hi); an operand that
+// lies partly outside an operation's domain is restricted to it (zsi_partial records that it
+// happened), one wholly outside sets the flag u (F is defined nowhere there).
 //
 // Rounding (docs/codegen.md, "Interval GLSL"): GLSL has no directed rounding, so every
 // result is widened outward after it is computed: arithmetic by ZSI_REL of its magnitude,

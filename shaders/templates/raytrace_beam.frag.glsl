@@ -61,15 +61,12 @@ void main() {
     zs_FAffine(oc, dc, tm, h, F, D, partial);
     vec2 range = zsa_range(F);
     bool none = !(range.x <= 0.0 && range.y >= 0.0);  // also F defined nowhere
-    // Roots lie only where |c + s tau| <= r: the segment before the first such tau is clear
-    // too (pulled back by a margin for the rounding of tau <-> t).
+    // Roots lie only where |c + s tau| <= r (rtZeroWindow): the segment before that window
+    // is clear too (pulled back by a further 1e-4 of tau).
     float cut = t0;
     if (!none && F.y != 0.0) {
-      float q1 = (-F.z - F.x) / F.y, q2 = (F.z - F.x) / F.y;
-      float first = min(q1, q2);
-      first -= (max(q1, q2) - first) * 0.03125 + (abs(q1) + abs(q2)) * ZSI_REL + 1e-4;
-      float tc = tm + h * first - (abs(tm) + h) * (8.0 * ZSI_REL);
-      cut = first > -1.0 ? clamp(tc, t0, t1) : t0;
+      float first = rtZeroWindow(F, h, abs(tm) + h).x - 1e-4;
+      cut = first > -1.0 ? clamp(tm + h * first, t0, t1) : t0;
     }
     // Shorter than the beam is wide, a segment no longer gets tighter: stop there.
     float width = 2.0 * (rhoO + rhoD * max(cut, 0.0));
@@ -89,6 +86,6 @@ void main() {
   }
   // No ray of the tile has a root in the box: the largest float, so each ray's walk is empty.
   start = clear ? 3.4028235e38 : start;
-  rtOutColor = vec4(start, segment, 0.0, 1.0);
+  rtOutColor = vec4(start, segment, 0.0, 1.0);  // the beam target's one (RG32F) attachment
 }
 #endif  // RT_BEAM

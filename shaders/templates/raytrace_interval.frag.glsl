@@ -33,6 +33,18 @@
 
 const int RT_MAX_STEPS = 256;  // safety bound on isolation + refinement steps per segment
 
+// Where |c + s tau| <= r can hold for the form F = (c, s, r), s != 0: the tau window, widened
+// by 1/32 of itself and by the rounding of tau <-> t (t values of magnitude tScale), so that
+// the form alone proves F's sign just outside it. Roots lie nowhere else (header, 2.; the
+// beam pass clips with it too).
+vec2 rtZeroWindow(vec3 F, float h, float tScale) {
+  float q1 = (-F.z - F.x) / F.y, q2 = (F.z - F.x) / F.y;
+  float lo = min(q1, q2), hi = max(q1, q2);
+  float margin = (hi - lo) * 0.03125 + (abs(q1) + abs(q2)) * ZSI_REL +
+                 tScale * (8.0 * ZSI_REL) / h;
+  return vec2(lo - margin, hi + margin);
+}
+
 bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float tAfter) {
   float len = tb - ta;
   // A pixel's width at distance t along the ray (a constant when orthographic).
@@ -80,12 +92,8 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     // value (Illinois needs only its sign and a rough size).
     float nu = u, nv = v, nfl = fl;
     if (tame && !none && !found && F.y != 0.0) {
-      float q1 = (-F.z - F.x) / F.y, q2 = (F.z - F.x) / F.y;
-      float lo = min(q1, q2), hi = max(q1, q2);
-      float margin = (hi - lo) * 0.03125 + (abs(q1) + abs(q2)) * ZSI_REL +
-                     (abs(tm) + abs(ta) + len) * (8.0 * ZSI_REL) / h;
-      lo -= margin;
-      hi += margin;
+      vec2 window = rtZeroWindow(F, h, abs(tm) + abs(ta) + len);
+      float lo = window.x, hi = window.y;
       float ul = (tm + h * lo - ta) / len, uh = (tm + h * hi - ta) / len;
       float value = F.x + F.y * lo;
       if (ul > u && lo > -1.0 && value != 0.0) { nu = ul; nfl = value; }
