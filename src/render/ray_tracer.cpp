@@ -51,11 +51,10 @@ bool RayTracer::build(std::string_view vertexSource, std::string_view fragmentSo
     fragmentSource_ = oldFragment;
     return false;
   }
-  for (auto& [variant, old] : previous) glDeleteProgram(old);
+  for (auto& [variant, old] : previous) dropProgram(old);
   program_ = first;
   // shader_assembly.cpp's kHasBeamDefine: the interval method's shaders have a beam pass.
   hasBeam_ = fragmentSource_.find("\n#define RT_HAS_BEAM\n") != std::string::npos;
-  locations_.clear();
   return true;
 }
 
@@ -88,7 +87,7 @@ unsigned RayTracer::program(const Variant& v, std::string& log) {
       continue;
     }
     if (it->second == program_) program_ = 0;
-    glDeleteProgram(it->second);
+    dropProgram(it->second);
     it = programs_.erase(it);
   }
   programs_.emplace(v, p);
@@ -96,15 +95,20 @@ unsigned RayTracer::program(const Variant& v, std::string& log) {
 }
 
 void RayTracer::deletePrograms() {
-  for (auto& [variant, p] : programs_) glDeleteProgram(p);
+  for (auto& [variant, p] : programs_) dropProgram(p);
   programs_.clear();
   program_ = 0;
-  locations_.clear();
+}
+
+void RayTracer::dropProgram(unsigned p) {
+  glDeleteProgram(p);
+  locations_.erase(p);  // GL may hand the id out again
 }
 
 int RayTracer::uniform(const char* name) {
-  auto it = locations_.find(name);
-  if (it == locations_.end()) it = locations_.emplace(name, glGetUniformLocation(program_, name)).first;
+  auto& cache = locations_[program_];
+  auto it = cache.find(name);
+  if (it == cache.end()) it = cache.emplace(name, glGetUniformLocation(program_, name)).first;
   return it->second;
 }
 
@@ -173,7 +177,6 @@ bool RayTracer::drawBeam(const RenderSettings& settings, const Domain& domain, i
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
   const unsigned main = program_;
   program_ = beam;
-  locations_.clear();
   glUseProgram(beam);
   glBindFramebuffer(GL_FRAMEBUFFER, beamFbo_);
   const GLenum buffer = GL_COLOR_ATTACHMENT0;
@@ -187,7 +190,6 @@ bool RayTracer::drawBeam(const RenderSettings& settings, const Domain& domain, i
   glClearBufferfv(GL_COLOR, 0, none);
   if (vertices > 0) glDrawArrays(GL_TRIANGLES, 0, vertices);
   program_ = main;
-  locations_.clear();
   glUseProgram(main);
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(bound));
   return true;
@@ -246,10 +248,7 @@ std::string RayTracer::prepare(const RenderSettings& settings, const Domain& dom
   preferred_ = variantFor(settings);
   const unsigned variant = program(preferred_, log);
   if (!variant) return "the shader variant for these settings does not compile:\n" + log;
-  if (variant != program_) {
-    program_ = variant;
-    locations_.clear();
-  }
+  program_ = variant;
   if (offscreen) {
     if (std::string error = ensureTarget(width, height); !error.empty()) return error;
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);

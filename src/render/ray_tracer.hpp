@@ -114,6 +114,7 @@ class RayTracer {
   // The program of `v`, compiling it if needed; 0 with `log` set when it does not compile.
   unsigned program(const Variant& v, std::string& log);
   void deletePrograms();
+  void dropProgram(unsigned program);  // deletes it and forgets its uniform locations
   // shading.curvature_range, or for 0 the range measured on a picture a quarter the size
   // (render/shading_defines.hpp curvatureRangeOf); needs the current program in use.
   double resolveCurvatureRange(const RenderSettings& settings, const Domain& domain, int width,
@@ -136,7 +137,9 @@ class RayTracer {
   bool tangentRoots_ = true;
   Proxy proxy_ = Proxy::Box;
   int vertices_ = 6;  // of the current frame
-  std::unordered_map<std::string, int> locations_;
+  // Uniform locations per program: switching between the beam's and the frame's program
+  // every frame keeps both.
+  std::unordered_map<unsigned, std::unordered_map<std::string, int>> locations_;
 };
 
 }  // namespace zs
