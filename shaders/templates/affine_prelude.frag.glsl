@@ -6,88 +6,115 @@
 // Why: the natural interval extension forgets that x, y and z move together along a ray, so
 // sin x cos y over a segment is as wide as over the segment's whole box and rays split far
 // down. Here every quantity is a function of tau in [-1, 1], where the segment is
-// t = tm + h tau, enclosed by an affine form vec3(c, s, r): each of its values at tau lies in
+// t = tm + h tau, enclosed by an affine form vec4(c, s, r, m): each of its values at tau lies in
 // c + s tau +- r (reduced affine arithmetic, Knoll et al. 2009; a Taylor model of order 1).
 // The remainder r of a product or of sin of a short segment shrinks with the square of its
 // length, so F's enclosure is tight enough to clip the segment to where c + s tau +- r can
 // hold 0 (raytrace_interval.frag.glsl).
 //
-// Rounding: as the interval rules (docs/codegen.md, "Interval GLSL"): r is widened after
-// each rule by ZSI_REL of the magnitudes that were rounded (twice that for the products),
-// plus FLT_MIN; function values and slopes carry the built-in functions' margins. An
-// operation without a first-order rule, or whose operand's range leaves the function's
-// domain, goes through its interval rule (zsa_fromInterval(zsi_*(zsa_range(a)))), which keeps
-// the flags `u` and zsi_partial exactly as the interval block sets them. A NaN anywhere
-// (overflow) makes the range the whole line: only looser.
+// Rounding (docs/codegen.md, "Interval GLSL"): a form is vec4(c, s, r, m), where m bounds
+// |c| + |s| + r of the same operations done on absolute values, plus ZSI_ETA. The polynomial
+// operations (neg, add, sub, scale, mul, sqr) are not widened one by one: each float
+// operation errs by at most u |x| + FLT_MIN <= u m (u = 2^-24, FLT_MIN for results flushed
+// to zero, hence ZSI_ETA = FLT_MIN / u in m), and errors that propagate through additions and
+// products stay within u m per float operation on the path (the classical bound gamma_k m of
+// a product-sum program, Higham, "Accuracy and Stability of Numerical Algorithms", ch. 3).
+// So a chain of k such operations is exact to within k (2 ZSI_REL) m (2 ZSI_REL = 8u covers
+// the at most 6 float operations deep of one affine product), and zsa_settle adds that to r
+// once: the emitter settles a form before any other rule reads it and at the end (F and
+// dF/dt), with k the longest chain since the last settling. Widening every operation cost
+// about 9 % of a gyroid frame (3.5 ms of 38 on llvmpipe). The other rules take settled
+// operands and return settled results: r widened by ZSI_REL of the magnitudes that were
+// rounded (twice that for the Taylor forms), plus FLT_MIN; function values and slopes carry
+// the built-in functions' margins. An operation without a first-order rule, or whose
+// operand's range leaves the function's domain, goes through its interval rule
+// (zsa_fromInterval(zsi_*(zsa_range(a)))), which keeps the flags `u` and zsi_partial exactly
+// as the interval block sets them. A NaN anywhere (overflow) makes the range the whole line:
+// only looser.
 
-// The form of a float interval (s = 0); unbounded ends give the whole line.
-vec3 zsa_fromInterval(vec2 I) {
-  if (!(I.x > -ZSI_INF && I.y < ZSI_INF)) return vec3(0.0, 0.0, ZSI_INF);
+const float ZSI_ETA = 1.9721523e-31;  // 2^-102 = FLT_MIN / 2^-24
+
+// The form of a float interval (s = 0); unbounded ends give the whole line. Settled.
+vec4 zsa_fromInterval(vec2 I) {
+  if (!(I.x > -ZSI_INF && I.y < ZSI_INF)) return vec4(0.0, 0.0, ZSI_INF, ZSI_INF);
   float c = 0.5 * I.x + 0.5 * I.y, r = 0.5 * I.y - 0.5 * I.x;
-  return vec3(c, 0.0, r + (abs(c) + abs(r)) * ZSI_REL + ZSI_TINY);
+  r = r + (abs(c) + abs(r)) * ZSI_REL + ZSI_TINY;
+  return vec4(c, 0.0, r, abs(c) + r + ZSI_ETA);
 }
+// An exact value (a constant that is a float, a component of the ray direction). Settled.
+vec4 zsa_const(float v) { return vec4(v, 0.0, 0.0, abs(v) + ZSI_ETA); }
 
-// Every value the form takes on [-1, 1], outward; NaN ends are unbounded.
+// Every value a settled form (or the tracer's (c, s, r)) takes on [-1, 1], outward; NaN
+// ends are unbounded.
 vec2 zsa_range(vec3 a) {
   float w = abs(a.y) + a.z;
   return zsi_unNaN(zsi_out(vec2(a.x - w, a.x + w)));
 }
+vec2 zsa_range(vec4 a) { return zsa_range(a.xyz); }
 
 // How far the points enclosed may lie off the ray o + t d in each coordinate: 0 for one ray;
 // the beam pass (raytrace_beam.frag.glsl) encloses all rays of a tile around its central one.
 float zsa_lateral = 0.0;
 
 // The coordinate o + d t on the segment; the slack also covers the point evaluations of the
-// tracer at the segment's ends, which compute o + t d in float.
-vec3 zsa_var(float o, float d, float tm, float h) {
+// tracer at the segment's ends, which compute o + t d in float. Settled.
+vec4 zsa_var(float o, float d, float tm, float h) {
   float c = o + d * tm, s = d * h;
-  return vec3(c, s, (abs(o) + abs(d * tm) + abs(s)) * (2.0 * ZSI_REL) + ZSI_TINY + zsa_lateral);
+  float r = (abs(o) + abs(d * tm) + abs(s)) * (2.0 * ZSI_REL) + ZSI_TINY + zsa_lateral;
+  return vec4(c, s, r, abs(c) + abs(s) + r + ZSI_ETA);
 }
-vec3 zsa_point(float v) { return vec3(v, 0.0, abs(v) * ZSI_REL + ZSI_TINY); }
+vec4 zsa_point(float v) {
+  float r = abs(v) * ZSI_REL + ZSI_TINY;
+  return vec4(v, 0.0, r, abs(v) + r + ZSI_ETA);
+}
 
-vec3 zsa_round(vec3 v, float magnitude, float rel) {
-  return vec3(v.xy, v.z + (magnitude + v.z) * rel + ZSI_TINY);
+// The rounding of a chain of k polynomial operations, added to r once (header).
+vec4 zsa_settle(vec4 a, float k) { return vec4(a.xy, a.z + (k * (2.0 * ZSI_REL)) * a.w, a.w); }
+
+// A settled result of a rule whose (c, s) were rounded from terms of size `magnitude`: r
+// widened by rel of them (and of itself) and FLT_MIN, and m recomputed.
+vec4 zsa_round(vec3 v, float magnitude, float rel) {
+  float r = v.z + (magnitude + v.z) * rel + ZSI_TINY;
+  return vec4(v.xy, r, magnitude + r + ZSI_ETA);
 }
 
-vec3 zsa_neg(vec3 a) { return vec3(-a.xy, a.z); }
-vec3 zsa_add(vec3 a, vec3 b) {
-  vec3 v = vec3(a.xy + b.xy, a.z + b.z);
-  return zsa_round(v, abs(v.x) + abs(v.y), ZSI_REL);
-}
-vec3 zsa_sub(vec3 a, vec3 b) { return zsa_add(a, zsa_neg(b)); }
-vec3 zsa_scale(vec3 a, float k) {
-  if (k == 0.0) return vec3(0.0);  // 0 * inf is 0 here
-  vec3 v = vec3(a.xy * k, a.z * abs(k));
-  return zsa_round(v, abs(v.x) + abs(v.y), ZSI_REL);
+// The polynomial operations: unsettled (header).
+vec4 zsa_neg(vec4 a) { return vec4(-a.xy, a.zw); }
+vec4 zsa_add(vec4 a, vec4 b) { return a + b; }
+vec4 zsa_sub(vec4 a, vec4 b) { return zsa_add(a, zsa_neg(b)); }
+vec4 zsa_scale(vec4 a, float k) {
+  if (k == 0.0) return vec4(0.0);  // 0 * inf is 0 here
+  float ak = abs(k);
+  return vec4(a.xy * k, a.z * ak, a.w * ak + ZSI_ETA);
 }
 
 // (ca + sa tau + ea)(cb + sb tau + eb): the tau^2 term sa sb tau^2 lies in sa sb (1/2 +- 1/2),
-// so half of it moves into the center; the cross terms with the e's go into r.
-vec3 zsa_mul(vec3 a, vec3 b) {
+// so half of it moves into the center; the cross terms with the e's go into r. The terms of
+// (c, s, r) on absolute values add up to ma mb exactly.
+vec4 zsa_mul(vec4 a, vec4 b) {
   float ss = a.y * b.y, cc = a.x * b.x;
   float cs = a.x * b.y, sc = b.x * a.y;
   vec2 as = abs(a.xy), bs = abs(b.xy);
   float r = as.x * b.z + bs.x * a.z + 0.5 * abs(ss) + (as.y + a.z) * b.z + a.z * bs.y;
-  vec3 v = vec3(cc + 0.5 * ss, cs + sc, r);
-  return zsa_round(v, abs(cc) + abs(ss) + abs(cs) + abs(sc), 2.0 * ZSI_REL);
+  return vec4(cc + 0.5 * ss, cs + sc, r, a.w * b.w + ZSI_ETA);
 }
 // (c + s tau + e)^2 = c^2 + s^2/2 + 2 c s tau + s^2 (tau^2 - 1/2) + 2 (c + s tau) e + e^2.
-vec3 zsa_sqr(vec3 a) {
+vec4 zsa_sqr(vec4 a) {
   float ss = a.y * a.y, cc = a.x * a.x, cs = 2.0 * a.x * a.y;
   float r = 0.5 * ss + 2.0 * (abs(a.x) + abs(a.y)) * a.z + a.z * a.z;
-  return zsa_round(vec3(cc + 0.5 * ss, cs, r), cc + ss + abs(cs), 2.0 * ZSI_REL);
+  return vec4(cc + 0.5 * ss, cs, r, a.w * a.w + ZSI_ETA);
 }
 
 // The tighter of a first-order result and the interval rule's result over the same operand
 // range (a long segment's Taylor remainder can exceed the function's whole range).
-vec3 zsa_tighter(vec3 A, vec2 I) {
+vec4 zsa_tighter(vec4 A, vec2 I) {
   return (abs(A.y) + A.z <= 0.5 * (I.y - I.x)) ? A : zsa_fromInterval(I);
 }
 
 // f(x) for x = c + s tau + e with |s| + r <= R, from f(c) = v and f'(c) = p (each computed to
 // within err) and the range q of f'' over c +- R: f(x) = f(c) + f'(c)(x - c) + f''(xi)/2 (x - c)^2
 // with (x - c)^2 in [0, R^2] (Lagrange).
-vec3 zsa_taylor(vec3 a, float R, float v, float p, float err, vec2 q) {
+vec4 zsa_taylor(vec4 a, float R, float v, float p, float err, vec2 q) {
   float half2 = 0.5 * R * R * (1.0 + 4.0 * ZSI_REL);
   vec2 quad = half2 * vec2(min(q.x, 0.0), max(q.y, 0.0));
   float s = p * a.y;
@@ -95,22 +122,22 @@ vec3 zsa_taylor(vec3 a, float R, float v, float p, float err, vec2 q) {
   vec3 t = vec3(v + 0.5 * (quad.x + quad.y), s, r);
   return zsa_round(t, abs(v) + abs(quad.x) + abs(quad.y) + abs(s), 2.0 * ZSI_REL);
 }
-float zsa_radius(vec3 a) { return (abs(a.y) + a.z) * (1.0 + ZSI_REL); }
+float zsa_radius(vec4 a) { return (abs(a.y) + a.z) * (1.0 + ZSI_REL); }
 
 // sin and cos: one sin and one cos of the center serve the value, the slope and the range of
 // f'' (= -f) over c +- R, which is f(c) +- (R |f'(c)| + R^2/2) (the interval rule's Taylor
 // range, zsi_taylorTrig, without its clamping). The form is exact enough wherever it is
 // narrower than [-1, 1]; where it is not (long segments), [-1, 1] itself.
-vec3 zsa_trig(vec3 a, float R, float v, float p) {
+vec4 zsa_trig(vec4 a, float R, float v, float p) {
   float err = ZSI_FN_REL + ZSI_FN_ABS + ZSI_ARG * abs(a.x);
   float spread = (R * (abs(p) + err) + 0.5 * R * R + err) * (1.0 + 4.0 * ZSI_REL);
-  vec3 A = zsa_taylor(a, R, v, p, err, vec2(-v - spread, -v + spread));
-  return abs(A.y) + A.z <= 1.0 ? A : vec3(0.0, 0.0, 1.0);
+  vec4 A = zsa_taylor(a, R, v, p, err, vec2(-v - spread, -v + spread));
+  return abs(A.y) + A.z <= 1.0 ? A : vec4(0.0, 0.0, 1.0, 1.0 + ZSI_ETA);
 }
-vec3 zsa_sin(vec3 a) { return zsa_trig(a, zsa_radius(a), sin(a.x), cos(a.x)); }
-vec3 zsa_cos(vec3 a) { return zsa_trig(a, zsa_radius(a), cos(a.x), -sin(a.x)); }
+vec4 zsa_sin(vec4 a) { return zsa_trig(a, zsa_radius(a), sin(a.x), cos(a.x)); }
+vec4 zsa_cos(vec4 a) { return zsa_trig(a, zsa_radius(a), cos(a.x), -sin(a.x)); }
 // Both of one operand (the emitter pairs them): one sin and one cos of the center for the two.
-void zsa_sincos(vec3 a, out vec3 s, out vec3 c) {
+void zsa_sincos(vec4 a, out vec4 s, out vec4 c) {
   float R = zsa_radius(a), sa = sin(a.x), ca = cos(a.x);
   s = zsa_trig(a, R, sa, ca);
   c = zsa_trig(a, R, ca, -sa);
@@ -118,7 +145,7 @@ void zsa_sincos(vec3 a, out vec3 s, out vec3 c) {
 
 // exp = exp' = exp'': the range of f'' is the interval rule's result, exp(c) / exp(R) to
 // exp(c) exp(R), with the margins of three evaluations.
-vec3 zsa_exp(vec3 a) {
+vec4 zsa_exp(vec4 a) {
   float R = zsa_radius(a), e = exp(a.x), eR = exp(R);
   float rel = ZSI_FN_REL + ZSI_ARG * abs(a.x);
   vec2 I = zsi_widen(vec2(e / eR, e * eR), 3.0 * rel + ZSI_ARG * R + 2.0 * ZSI_REL, ZSI_TINY);
@@ -128,7 +155,7 @@ vec3 zsa_exp(vec3 a) {
 
 // sqrt and log where the operand's range lies inside (0, inf); their interval rules (and
 // flags) otherwise. f'' is monotone there, so its range is given by the range's ends.
-vec3 zsa_sqrt(vec3 a, inout bool u) {
+vec4 zsa_sqrt(vec4 a, inout bool u) {
   vec2 X = zsa_range(a);
   vec2 I = zsi_sqrt(X, u);
   if (!(X.x > 0.0 && X.y < ZSI_INF)) return zsa_fromInterval(I);
@@ -140,7 +167,7 @@ vec3 zsa_sqrt(vec3 a, inout bool u) {
   vec2 q = zsi_outFn(vec2(-0.25 / (X.x * sqrt(X.x)), -0.25 / (X.y * sqrt(X.y))), 0.0);
   return zsa_tighter(zsa_taylor(a, R, v, p, err, q), I);
 }
-vec3 zsa_log(vec3 a, inout bool u) {
+vec4 zsa_log(vec4 a, inout bool u) {
   vec2 X = zsa_range(a);
   vec2 I = zsi_log(X, u);
   if (!(X.x > 0.0 && X.y < ZSI_INF)) return zsa_fromInterval(I);
@@ -152,7 +179,7 @@ vec3 zsa_log(vec3 a, inout bool u) {
 
 // 1/b where b's range keeps one sign (1/x'' = 2/x^3, monotone there); the interval rule (the
 // whole line, partial) where it holds 0.
-vec3 zsa_recip(vec3 b) {
+vec4 zsa_recip(vec4 b) {
   vec2 X = zsa_range(b);
   vec2 I = zsi_div(vec2(1.0), X);
   if (X.x <= 0.0 && X.y >= 0.0) return zsa_fromInterval(I);
@@ -162,19 +189,19 @@ vec3 zsa_recip(vec3 b) {
   vec2 q = zsi_widen(vec2(2.0 / cube.y, 2.0 / cube.x), 8.0 * ZSI_REL, ZSI_TINY);
   return zsa_tighter(zsa_taylor(b, R, v, p, err, vec2(min(q.x, q.y), max(q.x, q.y))), I);
 }
-vec3 zsa_div(vec3 a, vec3 b) {
+vec4 zsa_div(vec4 a, vec4 b) {
   vec2 B = zsa_range(b);
   if (B.x <= 0.0 && B.y >= 0.0) return zsa_fromInterval(zsi_div(zsa_range(a), B));
-  return zsa_mul(a, zsa_recip(b));
+  return zsa_settle(zsa_mul(a, zsa_recip(b)), 1.0);
 }
 
 // x^k: squares by their own rule, other exponents by the Taylor form with
 // f'' = k (k - 1) x^(k-2) over the range (the interval rule of x^(k-2)), where the range keeps
 // away from 0 for negative k.
-vec3 zsa_powi(vec3 a, int k) {
-  if (k == 0) return vec3(1.0, 0.0, 0.0);
+vec4 zsa_powi(vec4 a, int k) {
+  if (k == 0) return zsa_const(1.0);
   if (k == 1) return a;
-  if (k == 2) return zsa_sqr(a);
+  if (k == 2) return zsa_settle(zsa_sqr(a), 1.0);
   vec2 X = zsa_range(a);
   vec2 I = zsi_powi(X, k);
   if (k < 0 && X.x <= 0.0 && X.y >= 0.0) return zsa_fromInterval(I);
@@ -192,22 +219,23 @@ vec3 zsa_powi(vec3 a, int k) {
 }
 
 // abs, min and max are exact where the ranges decide them; their interval rules otherwise.
-vec3 zsa_abs(vec3 a) {
+vec4 zsa_abs(vec4 a) {
   vec2 X = zsa_range(a);
   return X.x >= 0.0 ? a : (X.y <= 0.0 ? zsa_neg(a) : zsa_fromInterval(zsi_abs(X)));
 }
-vec3 zsa_min(vec3 a, vec3 b) {
+vec4 zsa_min(vec4 a, vec4 b) {
   vec2 A = zsa_range(a), B = zsa_range(b);
   return A.y <= B.x ? a : (B.y <= A.x ? b : zsa_fromInterval(zsi_min(A, B)));
 }
-vec3 zsa_max(vec3 a, vec3 b) {
+vec4 zsa_max(vec4 a, vec4 b) {
   vec2 A = zsa_range(a), B = zsa_range(b);
   return A.x >= B.y ? a : (B.x >= A.y ? b : zsa_fromInterval(zsi_max(A, B)));
 }
 
-// The results of zs_FAffine: F's form with r = -1 (an empty range) where F is defined nowhere,
-// D the range of dF/dt, whole where the gradient cannot be bounded.
-void zsa_finish(vec3 f, vec3 d, bool u, bool ug, out vec3 F, out vec2 D) {
-  F = u ? vec3(0.0, 0.0, -1.0) : f;
+// The results of zs_FAffine from the settled forms of F and dF/dt: F's (c, s, r) with r = -1
+// (an empty range) where F is defined nowhere, D the range of dF/dt, whole where the gradient
+// cannot be bounded.
+void zsa_finish(vec4 f, vec4 d, bool u, bool ug, out vec3 F, out vec2 D) {
+  F = u ? vec3(0.0, 0.0, -1.0) : f.xyz;
   D = (u || ug) ? vec2(-ZSI_INF, ZSI_INF) : zsa_range(d);
 }

@@ -1,5 +1,6 @@
 #include "codegen/emit_interval_glsl.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -54,18 +55,23 @@ std::string glslIntervalLiteral(double value) {
 std::string affineConstant(double value) {
   if (std::isnan(value)) return "";
   const auto [lo, hi] = floatEnclosure(value);
-  if (lo == hi) return "vec3(" + floatText(lo) + ", 0.0, 0.0)";
+  if (lo == hi) return "zsa_const(" + floatText(lo) + ")";
   return "zsa_fromInterval(" + glslIntervalLiteral(value) + ")";
 }
 
 struct Bodies {
   std::string f, df;  // F's statements, then those of the nodes only dF/dt reaches
-  std::vector<std::string> names;
+  std::string fResult, dfResult;  // the settled forms of F and dF/dt
 };
 
-// One `vec3 aN = zsa_<rule>(...);` per non-leaf node of F (undefined flag zs_u), then per
+// One `vec4 aN = zsa_<rule>(...);` per non-leaf node of F (undefined flag zs_u), then per
 // node only the derivative df reaches (zs_ug). Parameters from index `firstDirection` on are
 // the ray direction's components d.x, d.y, d.z.
+//
+// Rounding (affine_prelude.frag.glsl): the polynomial operations leave their rounding
+// unsettled; `depth` counts the longest chain of them since the operand was last settled,
+// and a form is settled (`vec4 sN = zsa_settle(aN, depth)`, once per node) before any other
+// rule reads it and at the end.
 Bodies emitNodes(const Graph& g, NodeId f, NodeId df, int firstDirection) {
   const std::vector<NodeId> fNodes = reachable(g, {f});
   const std::vector<NodeId> all = reachable(g, {f, df});
@@ -74,30 +80,40 @@ Bodies emitNodes(const Graph& g, NodeId f, NodeId df, int firstDirection) {
   };
   static constexpr const char* kDirection[] = {"d.x", "d.y", "d.z"};
   Bodies out;
-  out.names.resize(g.size());
+  std::vector<std::string> names(g.size()), settledNames(g.size());
+  std::vector<int> depth(g.size(), 0);
   std::vector<bool> inF(g.size(), false), wanted(g.size(), false);
   for (NodeId id : fNodes) inF[static_cast<std::size_t>(id)] = true;
   for (NodeId id : all) wanted[static_cast<std::size_t>(id)] = true;
   std::size_t next = 0;
-  auto name = [&](NodeId id) -> const std::string& {
-    return out.names[static_cast<std::size_t>(id)];
+  auto at = [](NodeId id) { return static_cast<std::size_t>(id); };
+  // The node's form, settled first where a chain of polynomial operations ends in it.
+  auto settled = [&](NodeId id, std::string& body) -> const std::string& {
+    if (depth[at(id)] == 0) return names[at(id)];
+    std::string& own = settledNames[at(id)];
+    if (own.empty()) {
+      own = "s" + std::to_string(next++);
+      body += "  vec4 " + own + " = zsa_settle(" + names[at(id)] + ", " +
+              std::to_string(depth[at(id)]) + ".0);\n";
+    }
+    return own;
   };
   auto emit = [&](NodeId id, std::string& body, const char* flag) {
     const Node& n = g[id];
-    std::string& own = out.names[static_cast<std::size_t>(id)];
+    std::string& own = names[at(id)];
     switch (n.op) {
       case Op::VarX: own = "AX"; return;
       case Op::VarY: own = "AY"; return;
       case Op::VarZ: own = "AZ"; return;
       case Op::Param:  // exact: the direction zsa_var moves the coordinates by
         own = direction(id)
-                  ? std::string("vec3(") + kDirection[n.ival - firstDirection] + ", 0.0, 0.0)"
+                  ? std::string("zsa_const(") + kDirection[n.ival - firstDirection] + ")"
                   : "zsa_point(zs_params[" + std::to_string(n.ival) + "])";
         return;
       case Op::Const:
         own = affineConstant(n.value);
         if (own.empty()) {  // a NaN constant: F is undefined wherever it is used
-          own = "vec3(0.0)";
+          own = "vec4(0.0)";
           body += std::string("  ") + flag + " = true;  // constant NaN\n";
         }
         return;
@@ -108,17 +124,28 @@ Bodies emitNodes(const Graph& g, NodeId f, NodeId df, int firstDirection) {
     if (n.op == Op::Sin || n.op == Op::Cos) {
       const Op other = n.op == Op::Sin ? Op::Cos : Op::Sin;
       const NodeId partner = g.find(Node{other, n.a});
-      if (partner != kNoNode && wanted[static_cast<std::size_t>(partner)]) {
-        std::string& mate = out.names[static_cast<std::size_t>(partner)];
+      if (partner != kNoNode && wanted[at(partner)]) {
+        std::string& mate = names[at(partner)];
         if (!mate.empty()) return;  // written with its partner
+        const std::string& operand = settled(n.a, body);
         own = "a" + std::to_string(next++);
         mate = "a" + std::to_string(next++);
         const std::string& sn = n.op == Op::Sin ? own : mate;
         const std::string& cs = n.op == Op::Sin ? mate : own;
-        body += "  vec3 " + sn + ", " + cs + ";\n";
-        body += "  zsa_sincos(" + name(n.a) + ", " + sn + ", " + cs + ");\n";
+        body += "  vec4 " + sn + ", " + cs + ";\n";
+        body += "  zsa_sincos(" + operand + ", " + sn + ", " + cs + ");\n";
         return;
       }
+    }
+    const bool polynomial = affineOpIsPolynomial(n.op, n.ival);
+    // Operands: as they are for a polynomial operation, settled for any other rule.
+    auto operand = [&](NodeId k) -> std::string {
+      return polynomial ? names[at(k)] : settled(k, body);
+    };
+    const std::string a = operand(n.a);
+    const std::string b = n.b == kNoNode ? std::string() : operand(n.b);
+    if (polynomial) {
+      depth[at(id)] = 1 + std::max(depth[at(n.a)], n.b == kNoNode ? 0 : depth[at(n.b)]);
     }
     own = "a" + std::to_string(next++);
     // A product with a constant that is a float, or with a component of the direction, is
@@ -126,19 +153,19 @@ Bodies emitNodes(const Graph& g, NodeId f, NodeId df, int firstDirection) {
     auto scalar = [&](NodeId k) { return exactFloat(g, k) || direction(k); };
     const NodeId k = n.op != Op::Mul ? kNoNode : scalar(n.a) ? n.a : scalar(n.b) ? n.b : kNoNode;
     if (k != kNoNode) {
-      const NodeId other = k == n.a ? n.b : n.a;
       const std::string factor = direction(k) ? kDirection[g[k].ival - firstDirection]
                                               : floatText(float(g[k].value));
-      body += "  vec3 " + own + " = zsa_scale(" + name(other) + ", " + factor + ");\n";
+      body += "  vec4 " + own + " = zsa_scale(" + (k == n.a ? b : a) + ", " + factor + ");\n";
       return;
     }
-    body += "  vec3 " + own + " = " +
-            glslAffineOpExpression(n.op, name(n.a), n.b == kNoNode ? "" : name(n.b), n.ival, flag) + ";\n";
+    body += "  vec4 " + own + " = " + glslAffineOpExpression(n.op, a, b, n.ival, flag) + ";\n";
   };
   for (NodeId id : fNodes) emit(id, out.f, "zs_u");
+  out.fResult = settled(f, out.f);
   for (NodeId id : all) {
-    if (!inF[static_cast<std::size_t>(id)]) emit(id, out.df, "zs_ug");
+    if (!inF[at(id)]) emit(id, out.df, "zs_ug");
   }
+  out.dfResult = settled(df, out.df);
   return out;
 }
 
@@ -155,23 +182,22 @@ IntervalGlsl emitIntervalGlsl(const Graph& graph, NodeId f) {
   const NodeId df = directionalDerivative(
       g, f, {g.param("ray direction x"), g.param("ray direction y"), g.param("ray direction z")});
   std::string s = "// zeroset interval formula block (generated by src/codegen): F and dF/dt along a ray segment.\n";
-  // The nodes as affine forms along the segment t = tm + h tau (vec3 (c, s, r),
+  // The nodes as affine forms along the segment t = tm + h tau (vec4 (c, s, r, m),
   // affine_prelude.frag.glsl); operations without a first-order rule use their interval
   // rule (zsi_*) on the operands' ranges.
   const Bodies ray = emitNodes(g, f, df, firstDirection);
-  auto aname = [&](NodeId id) { return ray.names[static_cast<std::size_t>(id)]; };
   s += "// F and dF/dt as affine forms in tau along the segment t = tm + h tau.\n";
   s += "void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out bool "
        "partial) {\n";
   s += "  bool zs_u = false;   // F is defined nowhere on the segment\n";
   s += "  bool zs_ug = false;  // dF/dt is defined nowhere on the segment\n";
   s += "  zsi_partial = false;\n";
-  s += "  vec3 AX = zsa_var(o.x, d.x, tm, h), AY = zsa_var(o.y, d.y, tm, h), "
+  s += "  vec4 AX = zsa_var(o.x, d.x, tm, h), AY = zsa_var(o.y, d.y, tm, h), "
        "AZ = zsa_var(o.z, d.z, tm, h);\n";
   s += ray.f;
   s += "  partial = zsi_partial;\n";
   s += ray.df;
-  s += "  zsa_finish(" + aname(f) + ", " + aname(df) + ", zs_u, zs_ug || zsi_partial, F, D);\n}\n";
+  s += "  zsa_finish(" + ray.fResult + ", " + ray.dfResult + ", zs_u, zs_ug || zsi_partial, F, D);\n}\n";
   return {s};
 }
 

@@ -43,7 +43,8 @@ std::string glslAffineOpExpression(Op op, std::string_view a, std::string_view b
     case Op::Sub: return affineRule("sub", a, b);
     case Op::Mul: return affineRule("mul", a, b);
     case Op::Div: return affineRule("div", a, b);
-    case Op::PowI: return affineRule("powi", a, std::to_string(ival));
+    case Op::PowI:
+      return ival == 2 ? affineRule("sqr", a) : affineRule("powi", a, std::to_string(ival));
     case Op::Sqrt: return affineRule("sqrt", a, {}, flag);
     case Op::Log: return affineRule("log", a, {}, flag);
     case Op::Sin: return affineRule("sin", a);
@@ -59,6 +60,11 @@ std::string glslAffineOpExpression(Op op, std::string_view a, std::string_view b
       return viaInterval(op, a, b, ival, flag);
   }
   throw std::logic_error("glslAffineOpExpression: opcode out of range");
+}
+
+bool affineOpIsPolynomial(Op op, std::int32_t ival) {
+  return op == Op::Neg || op == Op::Add || op == Op::Sub || op == Op::Mul ||
+         (op == Op::PowI && ival == 2);
 }
 
 std::string glslIntervalOpExpression(Op op, std::string_view a, std::string_view b,

@@ -25,4 +25,9 @@ std::string glslIntervalOpExpression(Op op, std::string_view a, std::string_view
 std::string glslAffineOpExpression(Op op, std::string_view a, std::string_view b, std::int32_t ival,
                                    std::string_view flag);
 
+// Whether the affine rule of `op` is a polynomial one (neg, add, sub, mul, square), which
+// leaves its rounding for zsa_settle (affine_prelude.frag.glsl); every other rule takes
+// settled operands and returns a settled form.
+bool affineOpIsPolynomial(Op op, std::int32_t ival);
+
 }  // namespace zs

@@ -5,21 +5,23 @@ void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out b
   bool zs_u = false;   // F is defined nowhere on the segment
   bool zs_ug = false;  // dF/dt is defined nowhere on the segment
   zsi_partial = false;
-  vec3 AX = zsa_var(o.x, d.x, tm, h), AY = zsa_var(o.y, d.y, tm, h), AZ = zsa_var(o.z, d.z, tm, h);
-  vec3 a0 = zsa_mul(zsa_fromInterval(vec2(0.099999994, 0.1)), AX);
-  vec3 a1 = zsa_mul(zsa_fromInterval(vec2(3.4028235e+38, ZSI_INF)), AY);
-  vec3 a2 = zsa_add(a0, a1);
-  vec3 a3 = zsa_mul(zsa_fromInterval(vec2(0.0, 1.1754944e-38)), AZ);
-  vec3 a4 = zsa_add(a2, a3);
-  vec3 a5 = zsa_sub(a4, zsa_point(zs_params[0]));
-  vec3 a6 = zsa_sqrt(vec3((-1.0), 0.0, 0.0), zs_u);
-  vec3 a7 = zsa_scale(a6, 0.0);
-  vec3 a8 = zsa_add(a5, a7);
+  vec4 AX = zsa_var(o.x, d.x, tm, h), AY = zsa_var(o.y, d.y, tm, h), AZ = zsa_var(o.z, d.z, tm, h);
+  vec4 a0 = zsa_mul(zsa_fromInterval(vec2(0.099999994, 0.1)), AX);
+  vec4 a1 = zsa_mul(zsa_fromInterval(vec2(3.4028235e+38, ZSI_INF)), AY);
+  vec4 a2 = zsa_add(a0, a1);
+  vec4 a3 = zsa_mul(zsa_fromInterval(vec2(0.0, 1.1754944e-38)), AZ);
+  vec4 a4 = zsa_add(a2, a3);
+  vec4 a5 = zsa_sub(a4, zsa_point(zs_params[0]));
+  vec4 a6 = zsa_sqrt(zsa_const((-1.0)), zs_u);
+  vec4 a7 = zsa_scale(a6, 0.0);
+  vec4 a8 = zsa_add(a5, a7);
+  vec4 s9 = zsa_settle(a8, 5.0);
   partial = zsi_partial;
-  vec3 a9 = zsa_scale(zsa_fromInterval(vec2(0.099999994, 0.1)), d.x);
-  vec3 a10 = zsa_scale(zsa_fromInterval(vec2(3.4028235e+38, ZSI_INF)), d.y);
-  vec3 a11 = zsa_add(a9, a10);
-  vec3 a12 = zsa_scale(zsa_fromInterval(vec2(0.0, 1.1754944e-38)), d.z);
-  vec3 a13 = zsa_add(a11, a12);
-  zsa_finish(a8, a13, zs_u, zs_ug || zsi_partial, F, D);
+  vec4 a10 = zsa_scale(zsa_fromInterval(vec2(0.099999994, 0.1)), d.x);
+  vec4 a11 = zsa_scale(zsa_fromInterval(vec2(3.4028235e+38, ZSI_INF)), d.y);
+  vec4 a12 = zsa_add(a10, a11);
+  vec4 a13 = zsa_scale(zsa_fromInterval(vec2(0.0, 1.1754944e-38)), d.z);
+  vec4 a14 = zsa_add(a12, a13);
+  vec4 s15 = zsa_settle(a14, 3.0);
+  zsa_finish(s9, s15, zs_u, zs_ug || zsi_partial, F, D);
 }

@@ -83,12 +83,18 @@ std::string fragmentSource(const Rule& rule) {
 
 // Applies the affine rule of `rule` to the forms of its pixel (a in zsTestInput[2 i].xyz, b in
 // zsTestInput[2 i + 1].xyz): out (c, s, r, undefined everywhere).
+// The operands are settled forms (their m the magnitude of their (c, s, r)); a polynomial
+// rule's result is settled as the emitter settles it, as a chain of one operation.
 std::string affineFragmentSource(const Rule& rule) {
+  const std::string result = glslAffineOpExpression(rule.op, "a", "b", rule.ival, "u");
   return testShader({kIntervalPreludeTemplate, kAffinePreludeTemplate}, 2 * kLanes,
                     "  int i = int(gl_FragCoord.x);\n"
-                    "  vec3 a = zsTestInput[2 * i].xyz, b = zsTestInput[2 * i + 1].xyz;\n"
-                    "  vec3 r = " + glslAffineOpExpression(rule.op, "a", "b", rule.ival, "u") + ";\n"
-                    "  zsTestOut = vec4(r, u ? 1.0 : 0.0);\n");
+                    "  vec3 a3 = zsTestInput[2 * i].xyz, b3 = zsTestInput[2 * i + 1].xyz;\n"
+                    "  vec4 a = vec4(a3, abs(a3.x) + abs(a3.y) + a3.z + ZSI_ETA);\n"
+                    "  vec4 b = vec4(b3, abs(b3.x) + abs(b3.y) + b3.z + ZSI_ETA);\n"
+                    "  vec4 r = " + (affineOpIsPolynomial(rule.op, rule.ival)
+                                         ? "zsa_settle(" + result + ", 1.0)" : result) + ";\n"
+                    "  zsTestOut = vec4(r.xyz, u ? 1.0 : 0.0);\n");
 }
 
 const char* kVertex =
