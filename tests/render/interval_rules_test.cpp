@@ -14,13 +14,17 @@
 #include <cstdio>
 #include <initializer_list>
 #include <random>
+#include <variant>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "codegen/emit_interval_glsl.hpp"
 #include "codegen/op_interval_glsl.hpp"
 #include "codegen/shader_assembly.hpp"
+#include "expr/derivative.hpp"
 #include "expr/tape.hpp"
+#include "parser/parser.hpp"
 #include "render/shader_program.hpp"
 #include "render_support.hpp"
 
@@ -237,6 +241,100 @@ TEST(AffineRules, EveryRuleEnclosesTheOperationAlongTheSegmentOnThisGpu) {
       }
     }
     EXPECT_GT(checked, kLanes * 4) << "too few defined points: the comparison means little";
+  }
+}
+
+// The whole generated block (emit_interval_glsl.cpp), which settles the rounding of chains of
+// polynomial operations once instead of widening each (affine_prelude.frag.glsl): along
+// random segments t = tm + h tau of random rays, F at every sampled tau must lie in the GPU's
+// c + s tau +- r and dF/dt in its D, against double precision. The formulas include long
+// chains with heavy cancellation, where the settled rounding is all that keeps F's value
+// inside: (x + 1000)^2 - 2000 x - 10^6 is x^2 computed through terms of size 10^6.
+TEST(AffineBlock, EnclosesFAndItsDerivativeAlongSegmentsOnThisGpu) {
+  std::string error;
+  ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
+  const char* kFormulas[] = {
+      "sin(x)*cos(y)+sin(y)*cos(z)+sin(z)*cos(x)",
+      "sqrt(x^2+y^2+z^2)-1-0.08*sin(10*x)*sin(10*y)*sin(10*z)",
+      "exp(-4*((x-0.5)^2+y^2+z^2))+exp(-4*((x+0.5)^2+y^2+z^2))-0.6",
+      "(x+1000)^2-2000*x-1000000+(y-3000)*(y+3000)-y^2+9000000-z",
+      "((((x*y+z)*x-y)*z+x)*y-z)*x+(x+y+z)^2*(x-y)*3.7-0.1",
+      "x^4+y^4+z^4-(x^2+y^2+z^2)*1.5+0.5+1/(1+x^2)",
+  };
+  std::mt19937_64 rng(2611);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), sym(-1.0, 1.0);
+  for (const char* text : kFormulas) {
+    SCOPED_TRACE(text);
+    ParseResult parsed = parseFormula(text);
+    ASSERT_TRUE(std::holds_alternative<Formula>(parsed));
+    Formula formula = std::get<Formula>(std::move(parsed));
+    Graph& g = formula.graph;
+    const NodeId f = formula.root;
+    const std::string block = emitIntervalGlsl(g, f).source;
+    std::array<NodeId, 3> grad{};
+    for (int axis = 0; axis < 3; ++axis) grad[std::size_t(axis)] = derivative(g, f, axis);
+    PointEvaluator reference(compileTape(g, {f, grad[0], grad[1], grad[2]}));
+    // Lanes: (o, tm) and (d, h); out (c, s, r, 0) from the first program, (D, partial, 0)
+    // from the second.
+    std::vector<float> operands(8 * kLanes, 0.0f);
+    for (int i = 0; i < kLanes; ++i) {
+      const double scale = std::pow(10.0, -4.0 * unit(rng));  // segments from 2 down to 2e-4
+      double d[3] = {sym(rng), sym(rng), sym(rng)};
+      const double n = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      float* a = &operands[8 * i];
+      for (int k = 0; k < 3; ++k) {
+        a[k] = float(2.0 * sym(rng));
+        a[4 + k] = float(d[k] / n);
+      }
+      a[3] = float(2.0 * sym(rng));
+      a[7] = float(scale);
+    }
+    auto source = [&](const char* out) {
+      return testShader({kIntervalPreludeTemplate, kAffinePreludeTemplate}, 2 * kLanes,
+                        "  int i = int(gl_FragCoord.x);\n"
+                        "  vec4 a = zsTestInput[2 * i], b = zsTestInput[2 * i + 1];\n"
+                        "  vec3 F;\n  vec2 D;\n  bool partial;\n"
+                        "  zs_FAffine(a.xyz, b.xyz, a.w, b.w, F, D, partial);\n"
+                        "  zsTestOut = " + std::string(out) + ";\n");
+    };
+    // The block goes before main(): testShader puts templates first, so it is one of them.
+    auto withBlock = [&](const char* out) {
+      std::string s = source(out);
+      const std::size_t at = s.find("uniform vec4 zsTestInput");
+      return s.insert(at, block);
+    };
+    const std::vector<float> forms = runOnGpu(withBlock("vec4(F, 0.0)"), operands, error);
+    ASSERT_EQ(error, "");
+    const std::vector<float> slopes =
+        runOnGpu(withBlock("vec4(D, partial ? 1.0 : 0.0, 0.0)"), operands, error);
+    ASSERT_EQ(error, "");
+    int checked = 0, escaped = 0;
+    for (int i = 0; i < kLanes; ++i) {
+      const float* a = &operands[8 * i];
+      const double c = forms[4 * i], s = forms[4 * i + 1], r = forms[4 * i + 2];
+      const double dLo = slopes[4 * i], dHi = slopes[4 * i + 1];
+      if (r < 0.0) continue;  // F defined nowhere on the segment
+      for (int k = 0; k < 40; ++k) {
+        const double tau = k < 2 ? (k == 0 ? -1.0 : 1.0) : sym(rng);
+        const double t = double(a[3]) + double(a[7]) * tau;
+        double out[4];
+        reference.eval(a[0] + t * a[4], a[1] + t * a[5], a[2] + t * a[6], {}, out);
+        if (!std::isfinite(out[0])) continue;
+        ++checked;
+        const double mid = c + s * tau;
+        const double dt = out[1] * a[4] + out[2] * a[5] + out[3] * a[6];
+        const bool inside = mid - r <= out[0] && out[0] <= mid + r;
+        const bool slopeInside = !std::isfinite(dt) || (dLo <= dt && dt <= dHi);
+        if ((!inside || !slopeInside) && escaped++ < 5) {
+          ADD_FAILURE() << "F = " << out[0] << ", dF/dt = " << dt << " at tau " << tau
+                        << " escape the GPU's " << c << " + " << s << " tau +- " << r
+                        << " and [" << dLo << ", " << dHi << "] on the segment tm " << a[3]
+                        << ", h " << a[7] << " of the ray (" << a[0] << ", " << a[1] << ", "
+                        << a[2] << ") + t (" << a[4] << ", " << a[5] << ", " << a[6] << ")";
+        }
+      }
+    }
+    EXPECT_GT(checked, kLanes * 20) << "too few defined points: the comparison means little";
   }
 }
 
