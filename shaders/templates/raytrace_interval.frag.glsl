@@ -12,7 +12,8 @@
 //     where |c + s tau| <= r can hold (roots lie nowhere else), or halved where that keeps
 //     more than half of it, or quartered where the remainder r dwarfs the slope s (the form
 //     is far from first-order tight, and r shrinks with the square of the length). After a
-//     segment with no root comes the one to its right, 1.5 times as long. Only segments
+//     segment with no root comes the one to its right, rtGrowth times as long (1.5, 2 for
+//     a reflection ray: raytrace_main.frag.glsl). Only segments
 //     proven free of roots are passed, so the first segment that holds a root holds the
 //     nearest.
 //  3. Splitting stops at the pixel footprint (plus tracing.epsilon): a segment that small
@@ -101,8 +102,9 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
       // The clipped range misses [u, v] (it lies in the rounding slack of tm +- h).
       none = none || !(nu < nv);
     }
-    // Next: after a segment with no root, the one to its right, 1.5 times as large (twice
-    // as large took more steps: the segment after a near miss is often undecided again);
+    // Next: after a segment with no root, the one to its right, rtGrowth times as large
+    // (for primary rays twice as large took more steps: the segment after a near miss is
+    // often undecided again; reflection rays mostly leave through empty space);
     // else the clipped segment, or the left half of it where clipping gained less than half.
     float kept = nv - nu;
     // Where the remainder dwarfs the slope the form is far from first-order tight (it
@@ -112,7 +114,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     fl = none ? fr : (nu > u ? nfl : fl);
     dl = none ? dr : (dl || nu > u);
     u = none ? v : nu;
-    v = none ? min(1.0, v + max(1.5 * size, least)) : nv;
+    v = none ? min(1.0, v + max(rtGrowth * size, least)) : nv;
     done = done || found || u >= 1.0;
   } while (!done && ++step < RT_MAX_STEPS);
   rtIsolatedWidth = (v - u) * len;

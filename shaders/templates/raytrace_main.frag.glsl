@@ -91,9 +91,10 @@ void cameraRay(vec2 q, out vec3 ro, out vec3 rd) {
   rd = (rt.ortho != 0) ? rt.forward : normalize(rt.forward + uv.x * rt.right + uv.y * rt.up);
 }
 
-// The interval method's hints for the first segment of a ray's walk (raytrace_interval.frag.glsl):
-// its length, and (set by rtFirstRoot) the width of the segment that isolated the last root.
-float rtFirstSegment = 1e30, rtIsolatedWidth = 0.0;
+// The interval method's hints for a ray's walk (raytrace_interval.frag.glsl): the length of its
+// first segment, how much longer each segment after one without root is, and (set by
+// rtFirstRoot) the width of the segment that isolated the last root.
+float rtFirstSegment = 1e30, rtGrowth = 1.5, rtIsolatedWidth = 0.0;
 
 #ifdef RT_HAS_BEAM
 // The beam pass's result for this pixel's tile (raytrace_beam.frag.glsl): no ray of the tile
@@ -150,6 +151,7 @@ void main() {
       vec3 o = ro, d = rd;
       float tStart = beamStart, passAlpha = alpha, passScale = 1.0;
       rtFirstSegment = beamSegment;
+      rtGrowth = 1.5;
       int wanted = RT_MAX_HITS;
       if (pass == 1) {
         vec3 nrm = length(firstG.xyz) > 0.0 ? normalize(firstG.xyz) : -rd;
@@ -158,6 +160,10 @@ void main() {
         tStart = max(4.0 * rt.epsilon, 1e-4 * length(rt.domainMax - rt.domainMin));  // leave the surface
         passAlpha = 1.0; passScale = alpha * (1.0 - w); wanted = 1;
         rtFirstSegment = firstW;
+        // A reflection ray mostly leaves the surface through empty space: segments twice as
+        // long each time took fewer steps (bumpy sphere -4 %, metaballs -5 %, gyroid -2 %,
+        // Schwarz P the same); for primary rays 1.5 is best (docs/PERFORMANCE.md).
+        rtGrowth = 2.0;
       }
       float hitT[RT_MAX_HITS];
       vec4 hitG[RT_MAX_HITS];
