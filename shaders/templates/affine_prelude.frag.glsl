@@ -34,12 +34,18 @@
 
 const float ZSI_ETA = 1.9721523e-31;  // 2^-102 = FLT_MIN / 2^-24
 
+// A settled result of a rule whose (c, s) were rounded from terms of size `magnitude`: r
+// widened by rel of them (and of itself) and FLT_MIN, and m recomputed.
+vec4 zsa_round(vec3 v, float magnitude, float rel) {
+  float r = v.z + (magnitude + v.z) * rel + ZSI_TINY;
+  return vec4(v.xy, r, magnitude + r + ZSI_ETA);
+}
+
 // The form of a float interval (s = 0); unbounded ends give the whole line. Settled.
 vec4 zsa_fromInterval(vec2 I) {
   if (!(I.x > -ZSI_INF && I.y < ZSI_INF)) return vec4(0.0, 0.0, ZSI_INF, ZSI_INF);
   float c = 0.5 * I.x + 0.5 * I.y, r = 0.5 * I.y - 0.5 * I.x;
-  r = r + (abs(c) + abs(r)) * ZSI_REL + ZSI_TINY;
-  return vec4(c, 0.0, r, abs(c) + r + ZSI_ETA);
+  return zsa_round(vec3(c, 0.0, r), abs(c), ZSI_REL);
 }
 // An exact value (a constant that is a float, a component of the ray direction). Settled.
 vec4 zsa_const(float v) { return vec4(v, 0.0, 0.0, abs(v) + ZSI_ETA); }
@@ -63,20 +69,11 @@ vec4 zsa_var(float o, float d, float tm, float h) {
   float r = (abs(o) + abs(d * tm) + abs(s)) * (2.0 * ZSI_REL) + ZSI_TINY + zsa_lateral;
   return vec4(c, s, r, abs(c) + abs(s) + r + ZSI_ETA);
 }
-vec4 zsa_point(float v) {
-  float r = abs(v) * ZSI_REL + ZSI_TINY;
-  return vec4(v, 0.0, r, abs(v) + r + ZSI_ETA);
-}
+// A parameter's value, widened by one rounding. Settled.
+vec4 zsa_point(float v) { return zsa_round(vec3(v, 0.0, 0.0), abs(v), ZSI_REL); }
 
 // The rounding of a chain of k polynomial operations, added to r once (header).
 vec4 zsa_settle(vec4 a, float k) { return vec4(a.xy, a.z + (k * (2.0 * ZSI_REL)) * a.w, a.w); }
-
-// A settled result of a rule whose (c, s) were rounded from terms of size `magnitude`: r
-// widened by rel of them (and of itself) and FLT_MIN, and m recomputed.
-vec4 zsa_round(vec3 v, float magnitude, float rel) {
-  float r = v.z + (magnitude + v.z) * rel + ZSI_TINY;
-  return vec4(v.xy, r, magnitude + r + ZSI_ETA);
-}
 
 // The polynomial operations: unsettled (header).
 vec4 zsa_neg(vec4 a) { return vec4(-a.xy, a.zw); }

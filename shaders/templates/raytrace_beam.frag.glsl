@@ -52,8 +52,7 @@ void main() {
   int step = 0;
   do {
     float t0 = u, t1 = min(u + size, tHi);
-    float tm = 0.5 * t0 + 0.5 * t1;
-    float h = (0.5 * t1 - 0.5 * t0) * (1.0 + ZSI_REL) + abs(tm) * ZSI_REL + ZSI_TINY;
+    float tm = 0.5 * t0 + 0.5 * t1, h = rtHalfWidth(t0, t1, tm);
     zsa_lateral = rhoO + rhoD * max(t1, 0.0);  // the beam is widest at its far end
     vec3 F;
     vec2 D;

@@ -13,9 +13,8 @@
 //     more than half of it, or quartered where the remainder r dwarfs the slope s (the form
 //     is far from first-order tight, and r shrinks with the square of the length). After a
 //     segment with no root comes the one to its right, rtGrowth times as long (1.5, 2 for
-//     a reflection ray: raytrace_main.frag.glsl). Only segments
-//     proven free of roots are passed, so the first segment that holds a root holds the
-//     nearest.
+//     a reflection ray: raytrace_main.frag.glsl). Only segments proven free of roots are
+//     passed, so the first segment that holds a root holds the nearest.
 //  3. Splitting stops at the pixel footprint (plus tracing.epsilon): a segment that small
 //     which still cannot be decided is drawn when F is defined and bounded on it (a
 //     tangency, a root of even multiplicity, a ray grazing the surface: bisected on the
@@ -33,6 +32,12 @@
 // are do-while (a for loop runs its body once more, masked, after its last iteration).
 
 const int RT_MAX_STEPS = 256;  // safety bound on isolation + refinement steps per segment
+
+// The half-width h of t = tm + h tau, tau in [-1, 1], that covers [t0, t1] as rounded
+// (tm = (t0 + t1) / 2 in float).
+float rtHalfWidth(float t0, float t1, float tm) {
+  return (0.5 * t1 - 0.5 * t0) * (1.0 + ZSI_REL) + abs(tm) * ZSI_REL + ZSI_TINY;
+}
 
 // Where |c + s tau| <= r can hold for the form F = (c, s, r), s != 0: the tau window, widened
 // by 1/32 of itself and by the rounding of tau <-> t (t values of magnitude tScale), so that
@@ -61,9 +66,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   int step = 0;
   do {
     float t0 = ta + len * u, t1 = ta + len * v;
-    // t = tm + h tau, tau in [-1, 1], covers [t0, t1] as rounded.
-    float tm = 0.5 * t0 + 0.5 * t1;
-    float h = (0.5 * t1 - 0.5 * t0) * (1.0 + ZSI_REL) + abs(tm) * ZSI_REL + ZSI_TINY;
+    float tm = 0.5 * t0 + 0.5 * t1, h = rtHalfWidth(t0, t1, tm);
     vec3 F;
     vec2 D;
     bool partial;

@@ -1,6 +1,6 @@
 #pragma once
-// Interval GLSL for a formula: takes the expression graph and the root of F, puts out the block the interval method (tracing.method = "interval") joins after
-// the formula block:
+// Interval GLSL for a formula: takes the expression graph and the root of F, puts out the
+// block the interval method (tracing.method = "interval") joins after the formula block:
 //
 //   void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out bool partial)
 //
@@ -12,11 +12,10 @@
 // other rule reads them and at the end: `vec4 sN = zsa_settle(aN, k)`.
 // F = vec3(c, s, r) holds F(o + t d) in c + s tau +- r for t = tm + h tau, tau in [-1, 1]
 // (r = -1 where F is defined nowhere on the segment); D encloses the derivative along d,
-// grad F . d (derived in forward mode along d, expr/derivative.hpp), over the segment (whole where it cannot be bounded); `partial` is true where
-// some operation of F was restricted to its domain or divided by an interval holding 0 (F
-// may be undefined or unbounded on part of the segment). docs/codegen.md ("Interval GLSL")
-// states the contract.
-#include <array>
+// grad F . d (derived in forward mode along d, expr/derivative.hpp), over the segment
+// (whole where it cannot be bounded); `partial` is true where some operation of F was
+// restricted to its domain or divided by an interval holding 0 (F may be undefined or
+// unbounded on part of the segment). docs/codegen.md ("Interval GLSL") states the contract.
 #include <string>
 
 #include "expr/graph.hpp"

@@ -268,8 +268,7 @@ std::string RayTracer::prepare(const RenderSettings& settings, const Domain& dom
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, beamTex_);
     glActiveTexture(GL_TEXTURE0);
-    glUniform1i(uniform("rtBeam"), 1);
-    glUniform1i(uniform("rtBeamOn"), 1);
+    glUniform1i(uniform("rtBeamOn"), 1);  // its unit, 1, is set with the other uniforms
   }
   return {};
 }

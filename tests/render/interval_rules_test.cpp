@@ -61,13 +61,13 @@ const Rule kRules[] = {
     {Op::Min, 0, -10, 10, 5},        {Op::Max, 0, -10, 10, 5},
 };
 
-// The preludes and a main() around `body`, which reads its pixel's operands from zsTestInput
-// (`inputs` vec4s) and sets zsTestOut.
+// The preludes, `declarations` (generated code the body calls) and a main() around `body`,
+// which reads its pixel's operands from zsTestInput (`inputs` vec4s) and sets zsTestOut.
 std::string testShader(std::initializer_list<std::string_view> templates, int inputs,
-                       const std::string& body) {
+                       const std::string& body, const std::string& declarations = {}) {
   std::string s(shaderTemplate(kPreludeTemplate));
   for (std::string_view t : templates) s += shaderTemplate(t);
-  return s + "uniform vec4 zsTestInput[" + std::to_string(inputs) + "];\n"
+  return s + declarations + "uniform vec4 zsTestInput[" + std::to_string(inputs) + "];\n"
              "out vec4 zsTestOut;\n"
              "void main() {\n"
              "  bool u = false;\n"
@@ -271,11 +271,10 @@ TEST(AffineBlock, EnclosesFAndItsDerivativeAlongSegmentsOnThisGpu) {
     Graph& g = formula.graph;
     const NodeId f = formula.root;
     const std::string block = emitIntervalGlsl(g, f).source;
-    std::array<NodeId, 3> grad{};
-    for (int axis = 0; axis < 3; ++axis) grad[std::size_t(axis)] = derivative(g, f, axis);
+    const std::array<NodeId, 3> grad = gradient(g, f);
     PointEvaluator reference(compileTape(g, {f, grad[0], grad[1], grad[2]}));
-    // Lanes: (o, tm) and (d, h); out (c, s, r, 0) from the first program, (D, partial, 0)
-    // from the second.
+    // Lanes: (o, tm) and (d, h); out (c, s, r, 0) from the first program, (D, 0, 0) from
+    // the second.
     std::vector<float> operands(8 * kLanes, 0.0f);
     for (int i = 0; i < kLanes; ++i) {
       const double scale = std::pow(10.0, -4.0 * unit(rng));  // segments from 2 down to 2e-4
@@ -295,18 +294,12 @@ TEST(AffineBlock, EnclosesFAndItsDerivativeAlongSegmentsOnThisGpu) {
                         "  vec4 a = zsTestInput[2 * i], b = zsTestInput[2 * i + 1];\n"
                         "  vec3 F;\n  vec2 D;\n  bool partial;\n"
                         "  zs_FAffine(a.xyz, b.xyz, a.w, b.w, F, D, partial);\n"
-                        "  zsTestOut = " + std::string(out) + ";\n");
+                        "  zsTestOut = " + std::string(out) + ";\n",
+                        block);
     };
-    // The block goes before main(): testShader puts templates first, so it is one of them.
-    auto withBlock = [&](const char* out) {
-      std::string s = source(out);
-      const std::size_t at = s.find("uniform vec4 zsTestInput");
-      return s.insert(at, block);
-    };
-    const std::vector<float> forms = runOnGpu(withBlock("vec4(F, 0.0)"), operands, error);
+    const std::vector<float> forms = runOnGpu(source("vec4(F, 0.0)"), operands, error);
     ASSERT_EQ(error, "");
-    const std::vector<float> slopes =
-        runOnGpu(withBlock("vec4(D, partial ? 1.0 : 0.0, 0.0)"), operands, error);
+    const std::vector<float> slopes = runOnGpu(source("vec4(D, 0.0, 0.0)"), operands, error);
     ASSERT_EQ(error, "");
     int checked = 0, escaped = 0;
     for (int i = 0; i < kLanes; ++i) {
