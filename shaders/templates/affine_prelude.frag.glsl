@@ -159,20 +159,30 @@ vec4 zsa_exp(vec4 a) {
   return zsa_tighter(zsa_taylor(a, R, e, e, e * rel + ZSI_TINY, I), I);
 }
 
-// sqrt and log where the operand's range lies inside (0, inf); their interval rules (and
-// flags) otherwise. f'' is monotone there, so its range is given by the range's ends.
+// sqrt where the operand's range lies inside (0, inf); its interval rule (and flags)
+// otherwise. With x = c + delta, v = sqrt c: sqrt x = v + delta / (2 v) - delta^2 / (2 v (sqrt x + v)^2)
+// exactly, and the last term lies in [-Q, 0], Q = R^2 / (2 v (sqrt X.lo + v)^2): one sqrt
+// of the range's lower end (shared with the interval rule) and one division, instead of the
+// Lagrange form's f'' at both ends of the range.
 vec4 zsa_sqrt(vec4 a, inout bool u) {
   vec2 X = zsa_range(a);
   vec2 I = zsi_sqrt(X, u);
-  if (!(X.x > 0.0 && X.y < ZSI_INF)) return zsa_fromInterval(I);
-  float R = zsa_radius(a), v = sqrt(a.x), p = 0.5 / v;
-  if (!(v > 16.0 * ZSI_FN_ABS)) return zsa_fromInterval(I);
-  // The slope 1/(2 sqrt c) inherits sqrt's absolute margin relative to sqrt c.
-  float err = (v + p) * (2.0 * ZSI_FN_REL) + ZSI_FN_ABS + p * (4.0 * ZSI_FN_ABS / v);
-  // sqrt'' = -x^(-3/2) / 4, from -1/(4 X.x sqrt X.x) to -1/(4 X.y sqrt X.y)
-  vec2 q = zsi_outFn(vec2(-0.25 / (X.x * sqrt(X.x)), -0.25 / (X.y * sqrt(X.y))), 0.0);
-  return zsa_tighter(zsa_taylor(a, R, v, p, err, q), I);
+  float v = sqrt(a.x);
+  if (!(X.x > 0.0 && X.y < ZSI_INF && v > 16.0 * ZSI_FN_ABS)) return zsa_fromInterval(I);
+  float R = zsa_radius(a);
+  // Lower bounds of sqrt c and of sqrt X.lo (I.x, outward), so Q is an upper bound.
+  float vl = v * (1.0 - 2.0 * ZSI_FN_REL) - 2.0 * ZSI_FN_ABS, sl = I.x + vl;
+  float Q = (R * R) / (2.0 * vl * sl * sl) * (1.0 + 8.0 * ZSI_REL);
+  float p = 0.5 / v;
+  // v and p are off by sqrt's margins (p relative to v's, plus one division).
+  float err = v * ZSI_FN_REL + ZSI_FN_ABS + (p * R) * (2.0 * ZSI_FN_REL + 2.0 * ZSI_FN_ABS / vl + ZSI_REL);
+  float s = p * a.y;
+  vec4 A = zsa_round(vec3(v - 0.5 * Q, s, p * a.z + 0.5 * Q + err), v + Q + abs(s), 2.0 * ZSI_REL);
+  return zsa_tighter(A, I);
 }
+// log where the operand's range lies inside (0, inf), by its first-order Taylor form with
+// the Lagrange remainder (log'' = -1/x^2, monotone there, so its range is given by the
+// range's ends); its interval rule (and flags) otherwise.
 vec4 zsa_log(vec4 a, inout bool u) {
   vec2 X = zsa_range(a);
   vec2 I = zsi_log(X, u);
@@ -183,22 +193,29 @@ vec4 zsa_log(vec4 a, inout bool u) {
   return zsa_tighter(zsa_taylor(a, R, v, p, err, q), I);
 }
 
-// 1/b where b's range keeps one sign (1/x'' = 2/x^3, monotone there); the interval rule (the
-// whole line, partial) where it holds 0.
+// 1/b where b's range X keeps one sign: with x = c + delta, v = 1/c,
+// 1/x = v - v^2 delta + v^2 delta^2 / x exactly, and the last term lies between 0 and
+// R^2 v^2 / x for the end of X nearest 0 (the interval rule's 1/X, two divisions): three
+// divisions in all. Where X holds 0: the whole line, and F may be unbounded (zsi_partial),
+// as the interval rule has it.
 vec4 zsa_recip(vec4 b) {
   vec2 X = zsa_range(b);
-  vec2 I = zsi_div(vec2(1.0), X);
-  if (X.x <= 0.0 && X.y >= 0.0) return zsa_fromInterval(I);
-  float R = zsa_radius(b), v = 1.0 / b.x, p = -v * v;
-  float err = (abs(v) + abs(p)) * (4.0 * ZSI_REL);
-  vec2 cube = X * X * X;
-  vec2 q = zsi_widen(vec2(2.0 / cube.y, 2.0 / cube.x), 8.0 * ZSI_REL, ZSI_TINY);
-  return zsa_tighter(zsa_taylor(b, R, v, p, err, vec2(min(q.x, q.y), max(q.x, q.y))), I);
+  bool pole = X.x <= 0.0 && X.y >= 0.0;
+  zsi_partial = zsi_partial || pole;
+  vec2 I = zsi_out(vec2(1.0 / X.y, 1.0 / X.x));  // X of one sign: 1/X, outward
+  float R = zsa_radius(b), v = 1.0 / b.x, v2 = v * v;
+  float k = R * R * v2 * (1.0 + 8.0 * ZSI_REL);
+  // v^2 delta^2 / x in [0, k I.y] (X > 0) or [k I.x, 0] (X < 0): centred.
+  float T = X.x > 0.0 ? k * I.y : k * I.x;
+  float s = -v2 * b.y;
+  // v and v^2 carry one and three roundings; the slope's error times |delta| <= R.
+  float r = v2 * b.z + 0.5 * abs(T) + (abs(v) + v2 * R) * (4.0 * ZSI_REL);
+  vec4 A = zsa_round(vec3(v + 0.5 * T, s, r), abs(v) + abs(T) + abs(s), 2.0 * ZSI_REL);
+  return pole ? vec4(0.0, 0.0, ZSI_INF, ZSI_INF) : zsa_tighter(A, I);
 }
 vec4 zsa_div(vec4 a, vec4 b) {
-  vec2 B = zsa_range(b);
-  if (B.x <= 0.0 && B.y >= 0.0) return zsa_fromInterval(zsi_div(zsa_range(a), B));
-  return zsa_settle(zsa_mul(a, zsa_recip(b)), 1.0);
+  vec4 q = zsa_settle(zsa_mul(a, zsa_recip(b)), 1.0);
+  return q.z < ZSI_INF ? q : vec4(0.0, 0.0, ZSI_INF, ZSI_INF);  // b's range holds 0
 }
 
 // x^k: squares by their own rule, other exponents by the Taylor form with
