@@ -1,5 +1,6 @@
 // Interval evaluations per second for the seven thesis surfaces (F alone, and F with its
-// gradient in one pass), and octree build times at levels 2, 4, 6, 8 with both criteria.
+// gradient in one pass), octree build times at levels 2, 4, 6, 8 with both criteria, and the
+// surface's bounds (the exact tracers' ray clip) for surfaces that fill their domain or not.
 // Results and the machine they ran on: docs/PERFORMANCE.md.
 #include <benchmark/benchmark.h>
 
@@ -11,6 +12,7 @@
 #include "expr/derivative.hpp"
 #include "expr/tape.hpp"
 #include "interval/octree.hpp"
+#include "interval/surface_bounds.hpp"
 #include "interval/tape_eval.hpp"
 #include "parser/parser.hpp"
 
@@ -108,6 +110,28 @@ BENCHMARK(BM_UniformSphere)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MeasureProcessCPUTime();
+
+// The surface's bounds at their default level and budget. Args: index into the list below.
+// The worst case is a face of the surface parallel to the domain's, flat like z = 0.3: a
+// whole layer of cells below it is evaluated before the bound moves past it.
+constexpr std::array<std::string_view, 6> kBoundsSurfaces = {
+    "x^4+y^4+z^4-1",
+    "x^2*y^2+y^2*z^2+z^2*x^2-1",
+    "sqrt(x^2+y^2+z^2)-1-0.08*sin(10*x)*sin(10*y)*sin(10*z)",
+    "exp(-4*((x-0.5)^2+y^2+z^2))+exp(-4*((x+0.5)^2+y^2+z^2))+exp(-4*(x^2+(y-0.7)^2+z^2))-0.6",
+    "sin(x)*cos(y)+sin(y)*cos(z)+sin(z)*cos(x)",
+    "z-0.3",
+};
+void BM_SurfaceBounds(benchmark::State& state) {
+  const Formula f = parse(kBoundsSurfaces[std::size_t(state.range(0))]);
+  Box b;
+  for (auto _ : state) {
+    b = surfaceBounds(f, {}, kDomain, std::nullopt);
+    benchmark::DoNotOptimize(b);
+  }
+  state.counters["xmax"] = b.max[0];
+}
+BENCHMARK(BM_SurfaceBounds)->DenseRange(0, 5)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace zs

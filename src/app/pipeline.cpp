@@ -7,6 +7,7 @@
 #include "codegen/shader_assembly.hpp"
 #include "expr/derivative.hpp"
 #include "interval/sphere_builder.hpp"
+#include "interval/surface_bounds.hpp"
 #include "parser/parser.hpp"
 #include "scene/scene_io.hpp"
 #include "singular/singular.hpp"
@@ -74,6 +75,13 @@ void findMarkedPoints(const Scene& scene, PreparedSurface& s) {
 
 }  // namespace
 
+SphereHierarchy tracingHierarchy(const Formula& formula, std::span<const double> params,
+                                 const Octree& octree, TracingMethod method) {
+  if (method == TracingMethod::Sampling) return buildSphereHierarchy(octree);
+  const Box bounds = surfaceBounds(formula, params, octree.domain, octree.ball);
+  return buildSphereHierarchy(octree, &bounds);
+}
+
 std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bool validate) {
   PreparedSurface s;
   auto t = std::chrono::steady_clock::now();
@@ -89,7 +97,8 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bo
       buildOctree(s.formula, s.params, toBox(scene.domain), scene.octree, toBall(scene.domain));
   if (auto* err = std::get_if<OctreeError>(&tree)) return "error: " + err->message + "\n";
   s.octree = std::get<Octree>(std::move(tree));
-  s.hierarchy = buildSphereHierarchy(s.octree);
+  s.method = resolveMethod(scene.render.tracing.method, s.formula, s.methodWarning);
+  s.hierarchy = tracingHierarchy(s.formula, s.params, s.octree, s.method);
   s.times.octreeMs = msSince(t);
 
   t = std::chrono::steady_clock::now();
@@ -97,7 +106,6 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bo
   // Second derivatives only for the colorings that show curvature (docs/curvature.md).
   if (needsCurvature(scene.render.shading.color))
     s.glsl.source += emitHessianGlsl(s.formula.graph, s.gradient);
-  s.method = resolveMethod(scene.render.tracing.method, s.formula, s.methodWarning);
   std::string markers;
   if (scene.render.singular.enabled) {
     findMarkedPoints(scene, s);

@@ -4,6 +4,7 @@
 // with the time each stage took. Used by every command that shows a surface; no GL here.
 #include <array>
 #include <optional>
+#include <span>
 #include <string>
 #include <variant>
 #include <vector>
@@ -49,6 +50,13 @@ std::optional<Ball> toBall(const Domain& domain);
 // to kMaxBernsteinDegree (Auto or Bernstein asked), interval arithmetic otherwise; sampling
 // and interval when asked for. `warning` explains a fallback from an explicit "bernstein".
 TracingMethod resolveMethod(TracingMethod asked, const Formula& formula, std::string& warning);
+
+// The sphere hierarchy the tracer walks: the octree's leaves, cut for the exact methods
+// (Bernstein, interval) to the surface's bounds (interval/surface_bounds.hpp), which they clip
+// every ray to; the thesis' sampling method keeps the octree's own boxes, so its tables
+// stay reproducible.
+SphereHierarchy tracingHierarchy(const Formula& formula, std::span<const double> params,
+                                 const Octree& octree, TracingMethod method);
 
 // Error text is ready to print (caret formatting, octree budget messages, or an internal
 // shader error that names itself a bug). `validate` runs glslang on the assembled shaders.

@@ -42,10 +42,21 @@ bool isAncestor(const PathEntry& p, const OctreeLeaf& leaf) {
 }
 
 // The octree as explicit nodes in pre-order: the leaves' ancestors rebuilt from their cells.
-std::vector<Tmp> rebuildTree(const Octree& tree) {
+// Leaves are cut to `clip` when given; a leaf that misses it is left out.
+std::vector<Tmp> rebuildTree(const Octree& tree, const Box* clip) {
   std::vector<Tmp> nodes;
   std::vector<PathEntry> path;
   for (const OctreeLeaf& leaf : tree.leaves) {
+    Box box = leaf.box;
+    if (clip) {
+      bool empty = false;
+      for (std::size_t a = 0; a < 3; ++a) {
+        box.min[a] = std::max(box.min[a], clip->min[a]);
+        box.max[a] = std::min(box.max[a], clip->max[a]);
+        empty = empty || box.min[a] > box.max[a];
+      }
+      if (empty) continue;
+    }
     while (!path.empty() && !isAncestor(path.back(), leaf)) path.pop_back();
     for (int level = path.empty() ? 0 : path.back().level + 1; level < leaf.level; ++level) {
       const int shift = leaf.level - level;
@@ -54,7 +65,7 @@ std::vector<Tmp> rebuildTree(const Octree& tree) {
       nodes.push_back({emptyBox(), path.empty() ? -1 : path.back().index, 0, false});
       path.push_back(e);
     }
-    nodes.push_back({leaf.box, path.empty() ? -1 : path.back().index, 0, true});
+    nodes.push_back({box, path.empty() ? -1 : path.back().index, 0, true});
   }
   // Parents precede children, so one backward sweep accumulates boxes and child counts.
   for (std::size_t i = nodes.size(); i-- > 0;) {
@@ -82,8 +93,8 @@ SphereNode sphereAround(const Box& box) {
   return n;
 }
 
-SphereHierarchy buildSphereHierarchy(const Octree& tree) {
-  const std::vector<Tmp> tmp = rebuildTree(tree);
+SphereHierarchy buildSphereHierarchy(const Octree& tree, const Box* clip) {
+  const std::vector<Tmp> tmp = rebuildTree(tree, clip);
   SphereHierarchy h;
   std::vector<std::int32_t> emitted(tmp.size(), -1);  // nearest emitted ancestor-or-self
   std::vector<std::int32_t> parentOut;

@@ -9,7 +9,10 @@
 
 namespace zs {
 
-SphereHierarchy buildSphereHierarchy(const Octree& tree);
+// With `clip` (the surface's bounds, surface_bounds.hpp), every leaf's box is cut to it and
+// leaves outside it are left out: the boxes stay a cover of the surface, and the exact
+// tracing methods, which clip rays to them, walk less empty space.
+SphereHierarchy buildSphereHierarchy(const Octree& tree, const Box* clip = nullptr);
 
 // The sphere around a box: its center, radius = half the diagonal (the smallest sphere
 // that holds the box; the thesis' eq. 4.2 writes the full diagonal, twice as large).

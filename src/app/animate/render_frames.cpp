@@ -11,7 +11,6 @@
 #include "app/animate/video.hpp"
 #include "app/load_surface.hpp"
 #include "app/pipeline.hpp"
-#include "interval/sphere_builder.hpp"
 #include "render/ray_tracer.hpp"
 #include "scene/scene_io.hpp"
 
@@ -33,7 +32,7 @@ std::string rebuildForParams(PreparedSurface& s, const Scene& scene, RayTracer& 
       buildOctree(s.formula, s.params, toBox(scene.domain), scene.octree, toBall(scene.domain));
   if (auto* err = std::get_if<OctreeError>(&tree)) return "error: " + err->message + "\n";
   s.octree = std::get<Octree>(std::move(tree));
-  s.hierarchy = buildSphereHierarchy(s.octree);
+  s.hierarchy = tracingHierarchy(s.formula, s.params, s.octree, s.method);
   if (std::string err = tracer.setHierarchy(s.hierarchy.packed()); !err.empty())
     return "error: " + err + "\n";
   tracer.setParams(s.paramsAsFloats());

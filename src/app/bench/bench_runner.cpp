@@ -9,7 +9,6 @@
 #include <thread>
 
 #include "app/bench/thesis_data.hpp"
-#include "interval/sphere_builder.hpp"
 #include "render/ray_tracer.hpp"
 
 namespace zs::bench {
@@ -83,7 +82,8 @@ std::string loadLevel(const app::PreparedSurface& surface, Scene& scene, int lev
                   app::toBall(scene.domain));
   if (auto* err = std::get_if<OctreeError>(&tree)) return err->message;
   const Octree& octree = std::get<Octree>(tree);
-  const SphereHierarchy hierarchy = buildSphereHierarchy(octree);
+  const SphereHierarchy hierarchy =
+      app::tracingHierarchy(surface.formula, surface.params, octree, surface.method);
   info.octreeMs = msSince(start);
   info.leaves = octree.leaves.size();
   info.spheres = hierarchy.nodes.size();
