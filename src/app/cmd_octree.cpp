@@ -1,5 +1,6 @@
 // `zeroset octree SCENE|FORMULA --level N [--criteria thesis|uniform] [--domain ...]
-// [--dump FILE.csv]`: the CPU subdivision alone, with its statistics.
+// [--dump FILE.csv]`: the CPU subdivision alone, with its statistics and the surface's
+// bounds.
 #include <fstream>
 #include <iostream>
 
@@ -7,6 +8,7 @@
 #include "app/pipeline.hpp"
 #include "app/scene_args.hpp"
 #include "interval/report.hpp"
+#include "interval/surface_bounds.hpp"
 #include "parser/parser.hpp"
 #include "scene/scene_io.hpp"
 
@@ -50,6 +52,16 @@ int runOctree(const OctreeArgs& args) {
   }
   const Octree& tree = std::get<Octree>(built);
   std::cout << octreeReport(tree);
+  // What the exact tracing methods clip rays to (docs/hierarchy.md): a hint for a tighter domain.
+  const Box bounds = surfaceBounds(formula, params, tree.domain, tree.ball);
+  if (isEmpty(bounds)) {
+    std::cout << "surface bounds: empty (no cell of the level-6 grid can hold F = 0)\n";
+  } else {
+    std::cout << "surface bounds: ";
+    for (std::size_t a = 0; a < 3; ++a)
+      std::cout << (a ? "x[" : "[") << bounds.min[a] << "," << bounds.max[a] << "]";
+    std::cout << " (level-6 cells where F = 0 may hold)\n";
+  }
   if (!args.dump.empty()) {
     std::ofstream out(args.dump);
     writeLeafCsv(tree, out);
