@@ -14,6 +14,9 @@ namespace zs {
 
 namespace {
 
+// Tape instructions one face's search may run: 2^20, about 5 ms of interval arithmetic.
+constexpr std::size_t kWorkPerFace = std::size_t(1) << 20;
+
 struct Candidate {
   double reach;  // how far the cell extends in the searched direction
   int level;
@@ -66,7 +69,10 @@ Box surfaceBounds(const Formula& formula, std::span<const double> params, const 
   IntervalEvaluator eval(tape);
   SurfaceBoundsSettings s = settings;
   s.level = std::clamp(s.level, 0, kMaxOctreeLevel);
-  s.faceBudget = std::max<std::size_t>(s.faceBudget, 1);
+  // A huge formula gets fewer evaluations, so the search stays within a few tens of
+  // milliseconds before the first frame; the bounds are only looser then.
+  const std::size_t perFace = kWorkPerFace / std::max<std::size_t>(tape.code.size(), 1);
+  s.faceBudget = std::clamp<std::size_t>(perFace, 1, std::max<std::size_t>(s.faceBudget, 1));
   Box out;
   for (std::size_t a = 0; a < 3; ++a) {
     out.max[a] = faceBound(eval, params, domain, ball, s, a, true);

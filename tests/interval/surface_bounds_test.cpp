@@ -114,6 +114,17 @@ TEST(SurfaceBounds, StayConservativeWhenTheBudgetRunsOut) {
     expectHoldsEverySurfacePoint("sqrt(x^2+y^2+z^2)-1-0.08*sin(10*x)*sin(10*y)*sin(10*z)",
                                  cube(-1.5, 1.5), s);
   }
+  // A formula with a tape of thousands of instructions gets a smaller budget: the plane
+  // z = 0.3 plus 300 terms of size 1e-6 still lies inside the bounds.
+  std::string longFormula = "z-0.3";
+  for (int k = 1; k <= 300; ++k)
+    longFormula += "+0.000001*sin(" + std::to_string(k) + "*x)*cos(" + std::to_string(k) + "*y)";
+  const Box l = surfaceBounds(test::parseOrDie(longFormula), {}, cube(-1, 1), std::nullopt);
+  EXPECT_EQ(l.min[0], -1.0);
+  EXPECT_EQ(l.max[1], 1.0);
+  EXPECT_LE(l.min[2], 0.3 - 3e-4);
+  EXPECT_GE(l.max[2], 0.3 + 3e-4);
+  EXPECT_LT(l.max[2], 1.0);  // still a bound, not the whole domain
   // One evaluation per face proves nothing: the whole domain.
   SurfaceBoundsSettings one;
   one.faceBudget = 1;
