@@ -41,9 +41,12 @@ vec4 zsa_round(vec3 v, float magnitude, float rel) {
   return vec4(v.xy, r, magnitude + r + ZSI_ETA);
 }
 
+// The whole line: a form that holds every value.
+vec4 zsa_whole() { return vec4(0.0, 0.0, ZSI_INF, ZSI_INF); }
+
 // The form of a float interval (s = 0); unbounded ends give the whole line. Settled.
 vec4 zsa_fromInterval(vec2 I) {
-  if (!(I.x > -ZSI_INF && I.y < ZSI_INF)) return vec4(0.0, 0.0, ZSI_INF, ZSI_INF);
+  if (!(I.x > -ZSI_INF && I.y < ZSI_INF)) return zsa_whole();
   float c = 0.5 * I.x + 0.5 * I.y, r = 0.5 * I.y - 0.5 * I.x;
   return zsa_round(vec3(c, 0.0, r), abs(c), ZSI_REL);
 }
@@ -211,20 +214,19 @@ vec4 zsa_recip(vec4 b) {
   // v and v^2 carry one and three roundings; the slope's error times |delta| <= R.
   float r = v2 * b.z + 0.5 * abs(T) + (abs(v) + v2 * R) * (4.0 * ZSI_REL);
   vec4 A = zsa_round(vec3(v + 0.5 * T, s, r), abs(v) + abs(T) + abs(s), 2.0 * ZSI_REL);
-  return pole ? vec4(0.0, 0.0, ZSI_INF, ZSI_INF) : zsa_tighter(A, I);
+  return pole ? zsa_whole() : zsa_tighter(A, I);
 }
 vec4 zsa_div(vec4 a, vec4 b) {
   vec4 q = zsa_settle(zsa_mul(a, zsa_recip(b)), 1.0);
-  return q.z < ZSI_INF ? q : vec4(0.0, 0.0, ZSI_INF, ZSI_INF);  // b's range holds 0
+  return q.z < ZSI_INF ? q : zsa_whole();  // b's range holds 0
 }
 
-// x^k: squares by their own rule, other exponents by the Taylor form with
-// f'' = k (k - 1) x^(k-2) over the range (the interval rule of x^(k-2)), where the range keeps
-// away from 0 for negative k.
+// x^k by the Taylor form with f'' = k (k - 1) x^(k-2) over the range (the interval rule of
+// x^(k-2)), where the range keeps away from 0 for negative k. Squares never come here: the
+// emitter writes them as zsa_sqr, a polynomial rule (op_interval_glsl.cpp).
 vec4 zsa_powi(vec4 a, int k) {
   if (k == 0) return zsa_const(1.0);
   if (k == 1) return a;
-  if (k == 2) return zsa_settle(zsa_sqr(a), 1.0);
   vec2 X = zsa_range(a);
   vec2 I = zsi_powi(X, k);
   if (k < 0 && X.x <= 0.0 && X.y >= 0.0) return zsa_fromInterval(I);

@@ -9,8 +9,10 @@
 //                                       reached), 0.0 for an inner node
 //   Walking: i = 0; while i < count: if ray meets sphere(i) and box(i): if leaf, trace the
 //   segment and go to escape, else go to i + 1 (first child); otherwise go to escape.
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace zs {
@@ -19,6 +21,24 @@ struct Box {
   std::array<double, 3> min{};
   std::array<double, 3> max{};
 };
+
+// True when the box holds no point: min > max (or NaN) on some axis.
+inline bool isEmpty(const Box& b) {
+  for (std::size_t i = 0; i < 3; ++i)
+    if (!(b.min[i] <= b.max[i])) return true;
+  return false;
+}
+
+// The common part of two boxes; none where they do not meet (boxes that touch meet in a face).
+inline std::optional<Box> meet(const Box& a, const Box& b) {
+  Box r;
+  for (std::size_t i = 0; i < 3; ++i) {
+    r.min[i] = std::max(a.min[i], b.min[i]);
+    r.max[i] = std::min(a.max[i], b.max[i]);
+  }
+  if (isEmpty(r)) return std::nullopt;
+  return r;
+}
 
 struct SphereNode {
   std::array<double, 3> center{};

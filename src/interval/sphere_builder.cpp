@@ -47,16 +47,8 @@ std::vector<Tmp> rebuildTree(const Octree& tree, const Box* clip) {
   std::vector<Tmp> nodes;
   std::vector<PathEntry> path;
   for (const OctreeLeaf& leaf : tree.leaves) {
-    Box box = leaf.box;
-    if (clip) {
-      bool empty = false;
-      for (std::size_t a = 0; a < 3; ++a) {
-        box.min[a] = std::max(box.min[a], clip->min[a]);
-        box.max[a] = std::min(box.max[a], clip->max[a]);
-        empty = empty || box.min[a] > box.max[a];
-      }
-      if (empty) continue;
-    }
+    const std::optional<Box> box = clip ? meet(leaf.box, *clip) : leaf.box;
+    if (!box) continue;
     while (!path.empty() && !isAncestor(path.back(), leaf)) path.pop_back();
     for (int level = path.empty() ? 0 : path.back().level + 1; level < leaf.level; ++level) {
       const int shift = leaf.level - level;
@@ -65,7 +57,7 @@ std::vector<Tmp> rebuildTree(const Octree& tree, const Box* clip) {
       nodes.push_back({emptyBox(), path.empty() ? -1 : path.back().index, 0, false});
       path.push_back(e);
     }
-    nodes.push_back({box, path.empty() ? -1 : path.back().index, 0, true});
+    nodes.push_back({*box, path.empty() ? -1 : path.back().index, 0, true});
   }
   // Parents precede children, so one backward sweep accumulates boxes and child counts.
   for (std::size_t i = nodes.size(); i-- > 0;) {

@@ -2,8 +2,8 @@
 // The surface's bounding box: takes a formula, its parameter values and a domain (box, or
 // ball inside its bounding box), puts out the smallest box, on the grid of 2^level cells per
 // axis of the domain, that holds every cell where interval arithmetic cannot rule out a
-// point of F = 0. Every surface point of the domain lies in it; it is empty (min > max)
-// when no cell can hold one.
+// point of F = 0. Every surface point of the domain lies in it; it is empty (isEmpty,
+// hierarchy.hpp) when no cell can hold one.
 //
 // Why: the octree's leaves at the levels users trace with (1-3) are coarse, and the exact
 // tracing methods clip each ray to them; a surface that fills a small part of a generous
@@ -33,9 +33,5 @@ struct SurfaceBoundsSettings {
 // for buildOctree (it checks them first in every pipeline).
 Box surfaceBounds(const Formula& formula, std::span<const double> params, const Box& domain,
                   const std::optional<Ball>& ball, const SurfaceBoundsSettings& settings = {});
-
-inline bool isEmpty(const Box& b) {
-  return b.min[0] > b.max[0] || b.min[1] > b.max[1] || b.min[2] > b.max[2];
-}
 
 }  // namespace zs

@@ -98,16 +98,6 @@ bool strictlyInside(const Box& inner, const Box& outer) {
   return true;
 }
 
-std::optional<Box> meet(const Box& a, const Box& b) {
-  Box r;
-  for (std::size_t i = 0; i < 3; ++i) {
-    r.min[i] = std::max(a.min[i], b.min[i]);
-    r.max[i] = std::min(a.max[i], b.max[i]);
-    if (!(r.min[i] <= r.max[i])) return std::nullopt;
-  }
-  return r;
-}
-
 Mat3 hessianAt(const std::array<double, kOutputs>& v) {
   Mat3 h;
   for (std::size_t i = 0; i < 3; ++i)
