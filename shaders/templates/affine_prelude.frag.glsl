@@ -98,6 +98,13 @@ vec4 zsa_mul(vec4 a, vec4 b) {
   float r = as.x * b.z + bs.x * a.z + 0.5 * abs(ss) + (as.y + a.z) * b.z + a.z * bs.y;
   return vec4(cc + 0.5 * ss, cs + sc, r, a.w * b.w + ZSI_ETA);
 }
+// a times k where k is constant along the ray (the emitter knows: it depends on no
+// coordinate), so its slope is 0 and the product has no tau^2 term: two products for (c, s)
+// instead of four. k's slope still enters r (as |k.y|), so the rule encloses for any k.
+vec4 zsa_mulk(vec4 a, vec4 k) {
+  float r = abs(k.x) * a.z + (k.z + abs(k.y)) * (abs(a.x) + abs(a.y) + a.z);
+  return vec4(a.xy * k.x, r, a.w * k.w + ZSI_ETA);
+}
 // (c + s tau + e)^2 = c^2 + s^2/2 + 2 c s tau + s^2 (tau^2 - 1/2) + 2 (c + s tau) e + e^2.
 vec4 zsa_sqr(vec4 a) {
   float ss = a.y * a.y, cc = a.x * a.x, cs = 2.0 * a.x * a.y;

@@ -12,8 +12,8 @@
 //     where |c + s tau| <= r can hold (roots lie nowhere else), or halved where that keeps
 //     more than half of it, or quartered where the remainder r dwarfs the slope s (the form
 //     is far from first-order tight, and r shrinks with the square of the length). After a
-//     segment with no root comes the one to its right, rtGrowth times as long (1.5, 2 for
-//     a reflection ray: raytrace_main.frag.glsl). Only segments proven free of roots are
+//     segment with no root comes the one to its right, as much longer as its form predicts
+//     it can still clear (half that guess, 1.5 to 8 times; 2 to 8 for a reflection ray). Only segments proven free of roots are
 //     passed, so the first segment that holds a root holds the nearest.
 //  3. Splitting stops at the pixel footprint (plus tracing.epsilon): a segment that small
 //     which still cannot be decided is drawn when F is defined and bounded on it (a
@@ -22,7 +22,8 @@
 //     is unbounded or partly undefined there: poles (1/x) and the edges of sqrt's and log's
 //     domains change sign without a root.
 //  4. An isolated root is refined by the Illinois variant of regula falsi on F until its
-//     bracket is below tracing.epsilon.
+//     bracket is below tracing.epsilon, from the part of its segment where the form allows
+//     a root.
 //  5. The first segment is rtFirstSegment long (raytrace_main.frag.glsl): for a primary ray
 //     8 times the last segment of its tile's beam (raytrace_beam.frag.glsl), which also moved
 //     the ray's start; for a reflection ray the width of the segment that isolated the primary
@@ -31,7 +32,13 @@
 // one affine evaluation and one point evaluation, refinement has its own loop, and loops
 // are do-while (a for loop runs its body once more, masked, after its last iteration).
 
-const int RT_MAX_STEPS = 256;  // safety bound on isolation + refinement steps per segment
+const int RT_MAX_STEPS = 256;
+#ifndef RT_GROWTH_TRUST
+#define RT_GROWTH_TRUST 0.5
+#endif
+#ifndef RT_GROWTH_MAX
+#define RT_GROWTH_MAX 16.0
+#endif  // safety bound on isolation + refinement steps per segment
 
 // The half-width h of t = tm + h tau, tau in [-1, 1], that covers [t0, t1] as rounded
 // (tm = (t0 + t1) / 2 in float).
@@ -94,20 +101,25 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     // out by a margin that covers the rounding of tau <-> t <-> u, so that the form alone
     // proves F's sign there: F(new left end) has the sign of c + s tau, which is kept as its
     // value (Illinois needs only its sign and a rough size).
-    float nu = u, nv = v, nfl = fl;
-    if (tame && !none && !found && F.y != 0.0) {
+    // A root isolated on a monotone segment lies in that window too: its ends, with the
+    // form's values there (whose signs the form proves), become the bracket refinement
+    // starts from, so a tight form leaves little to refine. rtIsolatedWidth keeps the
+    // isolating segment's own width.
+    rtIsolatedWidth = size * len;
+    float nu = u, nv = v, nfl = fl, nfr = fr;
+    if (tame && !none && (!found || root) && F.y != 0.0) {
       vec2 window = rtZeroWindow(F, h, abs(tm) + abs(ta) + len);
       float lo = window.x, hi = window.y;
       float ul = (tm + h * lo - ta) / len, uh = (tm + h * hi - ta) / len;
-      float value = F.x + F.y * lo;
+      float value = F.x + F.y * lo, high = F.x + F.y * hi;
       if (ul > u && lo > -1.0 && value != 0.0) { nu = ul; nfl = value; }
-      if (uh < v && hi < 1.0) nv = uh;
-      // The clipped range misses [u, v] (it lies in the rounding slack of tm +- h).
-      none = none || !(nu < nv);
+      if (uh < v && hi < 1.0 && high != 0.0) { nv = uh; nfr = high; }
+      // The clipped range misses [u, v] (it lies in the rounding slack of tm +- h); a root
+      // whose window collapsed that way keeps its segment.
+      none = none || (!found && !(nu < nv));
+      if (root && !(nu < nv)) { nu = u; nv = v; nfl = fl; nfr = fr; }
     }
-    // Next: after a segment with no root, the one to its right, rtGrowth times as large
-    // (for primary rays twice as large took more steps: the segment after a near miss is
-    // often undecided again; reflection rays mostly leave through empty space);
+    // Next: after a segment with no root, the one to its right, longer by the growth below;
     // else the clipped segment, or the left half of it where clipping gained less than half.
     float kept = nv - nu;
     // Where the remainder dwarfs the slope the form is far from first-order tight (it
@@ -115,12 +127,22 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     float part = F.z > 2.0 * abs(F.y) ? 0.25 : 0.5;
     nv = (!found && kept > 0.5 * size) ? nu + part * kept : nv;
     fl = none ? fr : (nu > u ? nfl : fl);
+    fr = root ? nfr : fr;
     dl = none ? dr : (dl || nu > u);
     u = none ? v : nu;
-    v = none ? min(1.0, v + max(rtGrowth * size, least)) : nv;
+    // How much longer the next segment may be and still be cleared by its form, predicted
+    // from this one's: with e = c + s (the form at the right end), the next segment g times
+    // as long has its center near e + g s, slope g s and remainder g^2 r, which keeps F's
+    // sign while |e| - a g - r g^2 > 0, a = |s| - s sgn(e). Only a guess (any growth is
+    // exact): never below rtGrowth (1.5 for primary rays, whose next segment after a near
+    // miss is often undecided again; 2 for reflection rays, which mostly leave through
+    // empty space).
+    float e = F.x + F.y, E = abs(e), a = abs(F.y) - F.y * sign(e);
+    float g = RT_GROWTH_TRUST * 2.0 * E / (a + sqrt(a * a + 4.0 * E * F.z));
+    float growth = (tame && g > rtGrowth) ? min(g, RT_GROWTH_MAX) : rtGrowth;  // NaN: rtGrowth
+    v = none ? min(1.0, v + max(growth * size, least)) : nv;
     done = done || found || u >= 1.0;
   } while (!done && ++step < RT_MAX_STEPS);
-  rtIsolatedWidth = (v - u) * len;
   found = found && u < 1.0 && len > 0.0;
   float lo = u, hi = v, flo = fl, fhi = fr;
   float x = (bracketed && flo == 0.0) ? lo : ((bracketed && fhi == 0.0) ? hi : 0.5 * (u + v));

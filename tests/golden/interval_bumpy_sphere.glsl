@@ -18,7 +18,7 @@ void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out b
   vec4 s9 = zsa_settle(a8, 1.0);
   vec4 a10, a11;
   zsa_sincos(s9, a10, a11);
-  vec4 a12 = zsa_mul(zsa_fromInterval(vec2(0.08, 0.080000006)), a10);
+  vec4 a12 = zsa_mulk(a10, zsa_fromInterval(vec2(0.08, 0.080000006)));
   vec4 a13 = zsa_scale(AY, 10.0);
   vec4 s14 = zsa_settle(a13, 1.0);
   vec4 a15, a16;
@@ -45,15 +45,15 @@ void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out b
   vec4 s35 = zsa_settle(a28, 1.0);
   vec4 a36 = zsa_div(s34, s35);
   vec4 a37 = zsa_scale(zsa_const(d.x), 10.0);
-  vec4 a38 = zsa_mul(a11, a37);
-  vec4 a39 = zsa_mul(zsa_fromInterval(vec2(0.08, 0.080000006)), a38);
+  vec4 a38 = zsa_mulk(a11, a37);
+  vec4 a39 = zsa_mulk(a38, zsa_fromInterval(vec2(0.08, 0.080000006)));
   vec4 a40 = zsa_scale(zsa_const(d.y), 10.0);
-  vec4 a41 = zsa_mul(a16, a40);
+  vec4 a41 = zsa_mulk(a16, a40);
   vec4 a42 = zsa_mul(a12, a41);
   vec4 a43 = zsa_mul(a39, a15);
   vec4 a44 = zsa_add(a43, a42);
   vec4 a45 = zsa_scale(zsa_const(d.z), 10.0);
-  vec4 a46 = zsa_mul(a21, a45);
+  vec4 a46 = zsa_mulk(a21, a45);
   vec4 a47 = zsa_mul(a17, a46);
   vec4 a48 = zsa_mul(a44, a20);
   vec4 a49 = zsa_add(a48, a47);

@@ -6,10 +6,10 @@ void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out b
   bool zs_ug = false;  // dF/dt is defined nowhere on the segment
   zsi_partial = false;
   vec4 AX = zsa_var(o.x, d.x, tm, h), AY = zsa_var(o.y, d.y, tm, h), AZ = zsa_var(o.z, d.z, tm, h);
-  vec4 a0 = zsa_mul(zsa_fromInterval(vec2(0.099999994, 0.1)), AX);
-  vec4 a1 = zsa_mul(zsa_fromInterval(vec2(3.4028235e+38, ZSI_INF)), AY);
+  vec4 a0 = zsa_mulk(AX, zsa_fromInterval(vec2(0.099999994, 0.1)));
+  vec4 a1 = zsa_mulk(AY, zsa_fromInterval(vec2(3.4028235e+38, ZSI_INF)));
   vec4 a2 = zsa_add(a0, a1);
-  vec4 a3 = zsa_mul(zsa_fromInterval(vec2(0.0, 1.1754944e-38)), AZ);
+  vec4 a3 = zsa_mulk(AZ, zsa_fromInterval(vec2(0.0, 1.1754944e-38)));
   vec4 a4 = zsa_add(a2, a3);
   vec4 a5 = zsa_sub(a4, zsa_point(zs_params[0]));
   vec4 a6 = zsa_sqrt(zsa_const((-1.0)), zs_u);

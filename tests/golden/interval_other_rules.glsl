@@ -90,14 +90,14 @@ void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out b
   vec4 a80 = zsa_add(zsa_const(d.x), zsa_const(d.y));
   vec4 a81 = zsa_scale(a80, 0.5);
   vec4 a82 = zsa_sub(zsa_const(d.x), zsa_const(d.y));
-  vec4 a83 = zsa_mul(a48, a82);
+  vec4 a83 = zsa_mulk(a48, a82);
   vec4 a84 = zsa_scale(a83, 0.5);
   vec4 a85 = zsa_sub(a81, a84);
   vec4 a86 = zsa_add(a79, a85);
   vec4 a87 = zsa_add(zsa_const(d.y), zsa_const(d.z));
   vec4 a88 = zsa_scale(a87, 0.5);
   vec4 a89 = zsa_sub(zsa_const(d.y), zsa_const(d.z));
-  vec4 a90 = zsa_mul(a51, a89);
+  vec4 a90 = zsa_mulk(a51, a89);
   vec4 a91 = zsa_scale(a90, 0.5);
   vec4 a92 = zsa_add(a88, a91);
   vec4 a93 = zsa_add(a86, a92);

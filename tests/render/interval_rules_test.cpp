@@ -260,6 +260,9 @@ TEST(AffineBlock, EnclosesFAndItsDerivativeAlongSegmentsOnThisGpu) {
       "(x+1000)^2-2000*x-1000000+(y-3000)*(y+3000)-y^2+9000000-z",
       "((((x*y+z)*x-y)*z+x)*y-z)*x+(x+y+z)^2*(x-y)*3.7-0.1",
       "x^4+y^4+z^4-(x^2+y^2+z^2)*1.5+0.5+1/(1+x^2)",
+      // Factors constant along the ray that are not floats (zsa_mulk): 0.1, pi, exp(0.7),
+      // and the direction times them in dF/dt.
+      "0.1*(x+y)^2*sin(0.3*z)-exp(0.7)*x*y*0.3+pi*z*cos(x)",
   };
   std::mt19937_64 rng(2611);
   std::uniform_real_distribution<double> unit(0.0, 1.0), sym(-1.0, 1.0);
