@@ -34,8 +34,8 @@
 
 const int RT_MAX_STEPS = 256;  // safety bound on isolation + refinement steps per segment
 // The next segment after one without root: the predicted growth (below) times this, at most
-// RT_GROWTH_MAX, at least rtGrowth. Half the prediction was best on the gyroid (-5 %; the
-// whole prediction +10 %, the maximum 4 or 16 no better); the others did not change.
+// RT_GROWTH_MAX, at least rtGrowth. Half the prediction was best on the gyroid (-1 to -2 %;
+// the whole prediction +10 %, the maximum 4 or 16 no better); the others did not change.
 const float RT_GROWTH_TRUST = 0.5, RT_GROWTH_MAX = 8.0;
 
 // The half-width h of t = tm + h tau, tau in [-1, 1], that covers [t0, t1] as rounded
