@@ -13,8 +13,9 @@
 //     more than half of it, or quartered where the remainder r dwarfs the slope s (the form
 //     is far from first-order tight, and r shrinks with the square of the length). After a
 //     segment with no root comes the one to its right, as much longer as its form predicts
-//     it can still clear (half that guess, 1.5 to 8 times; 2 to 8 for a reflection ray). Only segments proven free of roots are
-//     passed, so the first segment that holds a root holds the nearest.
+//     it can still clear (half that guess, 1.5 to 8 times; 2 to 8 for a reflection ray).
+//     Only segments proven free of roots are passed, so the first segment that holds a root
+//     holds the nearest.
 //  3. Splitting stops at the pixel footprint (plus tracing.epsilon): a segment that small
 //     which still cannot be decided is drawn when F is defined and bounded on it (a
 //     tangency, a root of even multiplicity, a ray grazing the surface: bisected on the
@@ -88,6 +89,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     // thin sheet that precisely; where it is not, it stops at the pixel footprint.
     float footprint = rt.epsilon + pixel * (rt.ortho != 0 ? 1.0 : max(t0, 0.0));
     float size = v - u;
+    rtIsolatedWidth = size * len;  // the last segment's: the one that isolated the root
     bool small = size * len <= (tame ? rt.epsilon : footprint);
     bool root = !none && signChange && (monotone || (small && tame));
     // Undecidable that small: drawn where F is tame (header, 3.).
@@ -101,11 +103,9 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     // value (Illinois needs only its sign and a rough size).
     // A root isolated on a monotone segment lies in that window too: its ends, with the
     // form's values there (whose signs the form proves), become the bracket refinement
-    // starts from, so a tight form leaves little to refine. rtIsolatedWidth keeps the
-    // isolating segment's own width.
-    rtIsolatedWidth = size * len;
+    // starts from, so a tight form leaves little to refine.
     float nu = u, nv = v, nfl = fl, nfr = fr;
-    if (tame && !none && (!found || root) && F.y != 0.0) {
+    if (tame && !none && !touch && F.y != 0.0) {
       vec2 window = rtZeroWindow(F, h, abs(tm) + abs(ta) + len);
       float lo = window.x, hi = window.y;
       float ul = (tm + h * lo - ta) / len, uh = (tm + h * hi - ta) / len;

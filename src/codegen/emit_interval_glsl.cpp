@@ -83,8 +83,6 @@ Bodies emitNodes(const Graph& g, NodeId f, NodeId df, int firstDirection) {
   std::vector<std::string> names(g.size()), settledNames(g.size());
   std::vector<int> depth(g.size(), 0);
   std::vector<bool> inF(g.size(), false), wanted(g.size(), false);
-  // Nodes that depend on no coordinate: constant along the ray (slope 0).
-  std::vector<bool> rayConstant(g.size(), false);
   for (NodeId id : fNodes) inF[static_cast<std::size_t>(id)] = true;
   for (NodeId id : all) wanted[static_cast<std::size_t>(id)] = true;
   std::size_t next = 0;
@@ -102,9 +100,6 @@ Bodies emitNodes(const Graph& g, NodeId f, NodeId df, int firstDirection) {
   };
   auto emit = [&](NodeId id, std::string& body, const char* flag) {
     const Node& n = g[id];
-    rayConstant[at(id)] = n.op != Op::VarX && n.op != Op::VarY && n.op != Op::VarZ &&
-                          (n.a == kNoNode || rayConstant[at(n.a)]) &&
-                          (n.b == kNoNode || rayConstant[at(n.b)]);
     std::string& own = names[at(id)];
     switch (n.op) {
       case Op::VarX: own = "AX"; return;
@@ -165,8 +160,8 @@ Bodies emitNodes(const Graph& g, NodeId f, NodeId df, int firstDirection) {
     }
     // A product with a factor constant along the ray (a constant that is not a float, a
     // parameter, the direction times a constant): no tau^2 term (zsa_mulk).
-    if (n.op == Op::Mul && (rayConstant[at(n.a)] || rayConstant[at(n.b)])) {
-      const bool first = rayConstant[at(n.a)] && !rayConstant[at(n.b)];
+    if (n.op == Op::Mul && (g.isSpatiallyConstant(n.a) || g.isSpatiallyConstant(n.b))) {
+      const bool first = g.isSpatiallyConstant(n.a) && !g.isSpatiallyConstant(n.b);
       body += "  vec4 " + own + " = zsa_mulk(" + (first ? b : a) + ", " + (first ? a : b) + ");\n";
       return;
     }
