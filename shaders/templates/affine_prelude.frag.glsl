@@ -112,10 +112,15 @@ vec4 zsa_sqr(vec4 a) {
   return vec4(cc + 0.5 * ss, cs, r, a.w * a.w + ZSI_ETA);
 }
 
-// The tighter of a first-order result and the interval rule's result over the same operand
-// range (a long segment's Taylor remainder can exceed the function's whole range).
+// A first-order result, or the interval rule's result over the same operand range where the
+// form's remainder alone is wider than that whole range (a long segment's Taylor remainder can
+// exceed the function's whole range). Not the narrower of the two ranges: on a nearly linear
+// stretch the interval's range is narrower than the form's |s| + r by the curvature alone,
+// and taking it threw the slope away (sqrt(x^2 + y^2 + z^2) along a ray lost its slope on
+// every segment), and with it the tracer's clipping to the zero window and its growth
+// prediction: the bumpy sphere took 16 % longer, the metaballs 12 % (docs/PERFORMANCE.md).
 vec4 zsa_tighter(vec4 A, vec2 I) {
-  return (abs(A.y) + A.z <= 0.5 * (I.y - I.x)) ? A : zsa_fromInterval(I);
+  return (A.z <= (I.y - I.x)) ? A : zsa_fromInterval(I);
 }
 
 // f(x) for x = c + s tau + e with |s| + r <= R, from f(c) = v and f'(c) = p (each computed to
@@ -139,7 +144,7 @@ float zsa_radius(vec4 a) { return (abs(a.y) + a.z) * (1.0 + ZSI_REL); }
 // The first term's range is centred (half of v k moves into the value). v and p are each
 // off by at most err, which moves f by at most 2 err. This is tighter than the general Taylor
 // form (zsa_taylor with f'' = -f over c +- R) and takes about half its operations. Where the
-// form is no narrower than [-1, 1] (long segments), [-1, 1] itself.
+// remainder alone exceeds 1 (long segments), [-1, 1] itself (as in zsa_tighter).
 vec4 zsa_trig(vec4 a, float R, float v, float p) {
   float err = ZSI_FN_REL + ZSI_FN_ABS + ZSI_ARG * abs(a.x);
   float R2 = R * R * (1.0 + 4.0 * ZSI_REL);
@@ -148,7 +153,7 @@ vec4 zsa_trig(vec4 a, float R, float v, float p) {
   float hv = 0.5 * k * v, s = p * a.y;
   float r = abs(hv) + abs(p) * (a.z + g) + 2.0 * err;
   vec4 A = zsa_round(vec3(v - hv, s, r), 2.0 * abs(v) + abs(s), 2.0 * ZSI_REL);
-  return abs(A.y) + A.z <= 1.0 ? A : vec4(0.0, 0.0, 1.0, 1.0 + ZSI_ETA);
+  return A.z <= 1.0 ? A : vec4(0.0, 0.0, 1.0, 1.0 + ZSI_ETA);
 }
 vec4 zsa_sin(vec4 a) { return zsa_trig(a, zsa_radius(a), sin(a.x), cos(a.x)); }
 vec4 zsa_cos(vec4 a) { return zsa_trig(a, zsa_radius(a), cos(a.x), -sin(a.x)); }

@@ -51,6 +51,7 @@ void main() {
   bool done = !(size > 0.0), clear = false;
   int step = 0;
   do {
+    if (!done) {  // as in rtFirstRoot: a lane that is done must not run the body again
     float t0 = u, t1 = min(u + size, tHi);
     float tm = 0.5 * t0 + 0.5 * t1, h = rtHalfWidth(t0, t1, tm);
     zsa_lateral = rhoO + rhoD * max(t1, 0.0);  // the beam is widest at its far end
@@ -78,6 +79,7 @@ void main() {
     size = none ? 1.5 * (t1 - t0) : 0.5 * (t1 - cut);
     clear = none && t1 >= tHi;
     done = stuck || clear;
+    }
   } while (!done && ++step < RT_BEAM_STEPS);
   if (!done) {  // out of steps right after a clear segment: stop where the next one starts
     start = u;

@@ -71,6 +71,12 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   float least = rt.epsilon / len;
   int step = 0;
   do {
+    // Redundant by GLSL's rules, needed on llvmpipe (Mesa 22.3): without it, lanes that had
+    // isolated their root in a window clipped at both ends left the loop with found and
+    // bracketed cleared but u at that window (traced on the bumpy sphere at 200 x 200, where
+    // 65 silhouette pixels were missed), as if the body had run on for them while other
+    // lanes of their group walked on. The guard costs nothing: both sides of a branch run.
+    if (!done) {
     float t0 = ta + len * u, t1 = ta + len * v;
     float tm = 0.5 * t0 + 0.5 * t1, h = rtHalfWidth(t0, t1, tm);
     vec3 F;
@@ -140,6 +146,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     float growth = (tame && g > rtGrowth) ? min(g, RT_GROWTH_MAX) : rtGrowth;  // NaN: rtGrowth
     v = none ? min(1.0, v + max(growth * size, least)) : nv;
     done = done || found || u >= 1.0;
+    }
   } while (!done && ++step < RT_MAX_STEPS);
   found = found && u < 1.0 && len > 0.0;
   float lo = u, hi = v, flo = fl, fhi = fr;
