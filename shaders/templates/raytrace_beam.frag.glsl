@@ -52,33 +52,33 @@ void main() {
   int step = 0;
   do {
     if (!done) {  // as in rtFirstRoot: a lane that is done must not run the body again
-    float t0 = u, t1 = min(u + size, tHi);
-    float tm = 0.5 * t0 + 0.5 * t1, h = rtHalfWidth(t0, t1, tm);
-    zsa_lateral = rhoO + rhoD * max(t1, 0.0);  // the beam is widest at its far end
-    vec3 F;
-    vec2 D;
-    bool partial;
-    zs_FAffine(oc, dc, tm, h, F, D, partial);
-    vec2 range = zsa_range(F);
-    bool none = !(range.x <= 0.0 && range.y >= 0.0);  // also F defined nowhere
-    // Roots lie only where |c + s tau| <= r (rtZeroWindow): the segment before that window
-    // is clear too (pulled back by a further 1e-4 of tau).
-    float cut = t0;
-    if (!none && F.y != 0.0) {
-      float first = rtZeroWindow(F, h, abs(tm) + h).x - 1e-4;
-      cut = first > -1.0 ? clamp(tm + h * first, t0, t1) : t0;
-    }
-    // Shorter than the beam is wide, a segment no longer gets tighter: stop there.
-    float width = 2.0 * (rhoO + rhoD * max(cut, 0.0));
-    bool stuck = !none && (t1 - cut <= width || step + 1 >= RT_BEAM_STEPS);
-    start = stuck ? cut : start;
-    segment = stuck ? t1 - cut : segment;
-    // Next: after a clear segment the one to its right, 1.5 times as long; else the left
-    // half of what is left after the cut.
-    u = none ? t1 : cut;
-    size = none ? 1.5 * (t1 - t0) : 0.5 * (t1 - cut);
-    clear = none && t1 >= tHi;
-    done = stuck || clear;
+      float t0 = u, t1 = min(u + size, tHi);
+      float tm = 0.5 * t0 + 0.5 * t1, h = rtHalfWidth(t0, t1, tm);
+      zsa_lateral = rhoO + rhoD * max(t1, 0.0);  // the beam is widest at its far end
+      vec3 F;
+      vec2 D;
+      bool partial;
+      zs_FAffine(oc, dc, tm, h, F, D, partial);
+      vec2 range = zsa_range(F);
+      bool none = !(range.x <= 0.0 && range.y >= 0.0);  // also F defined nowhere
+      // Roots lie only where |c + s tau| <= r (rtZeroWindow): the segment before that window
+      // is clear too (pulled back by a further 1e-4 of tau).
+      float cut = t0;
+      if (!none && F.y != 0.0) {
+        float first = rtZeroWindow(F, h, abs(tm) + h).x - 1e-4;
+        cut = first > -1.0 ? clamp(tm + h * first, t0, t1) : t0;
+      }
+      // Shorter than the beam is wide, a segment no longer gets tighter: stop there.
+      float width = 2.0 * (rhoO + rhoD * max(cut, 0.0));
+      bool stuck = !none && (t1 - cut <= width || step + 1 >= RT_BEAM_STEPS);
+      start = stuck ? cut : start;
+      segment = stuck ? t1 - cut : segment;
+      // Next: after a clear segment the one to its right, 1.5 times as long; else the left
+      // half of what is left after the cut.
+      u = none ? t1 : cut;
+      size = none ? 1.5 * (t1 - t0) : 0.5 * (t1 - cut);
+      clear = none && t1 >= tHi;
+      done = stuck || clear;
     }
   } while (!done && ++step < RT_BEAM_STEPS);
   if (!done) {  // out of steps right after a clear segment: stop where the next one starts

@@ -77,75 +77,73 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     // 65 silhouette pixels were missed), as if the body had run on for them while other
     // lanes of their group walked on. The guard costs nothing: both sides of a branch run.
     if (!done) {
-    float t0 = ta + len * u, t1 = ta + len * v;
-    float tm = 0.5 * t0 + 0.5 * t1, h = rtHalfWidth(t0, t1, tm);
-    vec3 F;
-    vec2 D;
-    bool partial;
-    zs_FAffine(o, d, tm, h, F, D, partial);
-    fr = zs_F(o + t1 * d);
-    bool dr = !zs_isUndefined(fr);
-    vec2 range = zsa_range(F);
-    bool none = !(range.x <= 0.0 && range.y >= 0.0);  // also F undefined everywhere
-    bool tame = !partial && range.x > -ZSI_INF && range.y < ZSI_INF;  // defined and bounded
-    bool monotone = tame && (D.x > 0.0 || D.y < 0.0);
-    bool known = dl && dr;
-    bool signChange = known && (fl == 0.0 || fr == 0.0 || (fl > 0.0) != (fr > 0.0));
-    // Where F is tame, splitting goes on to tracing.epsilon, which places a tangency or a
-    // thin sheet that precisely; where it is not, it stops at the pixel footprint.
-    float footprint = rt.epsilon + pixel * (rt.ortho != 0 ? 1.0 : max(t0, 0.0));
-    float size = v - u;
-    rtIsolatedWidth = size * len;  // the last segment's: the one that isolated the root
-    bool small = size * len <= (tame ? rt.epsilon : footprint);
-    bool root = !none && signChange && (monotone || (small && tame));
-    // Undecidable that small: drawn where F is tame (header, 3.).
-    bool touch = !none && !root && small && tame && !(monotone && known);
-    none = none || (monotone && known && !signChange) || (small && !root && !touch);
-    found = root || touch;
-    bracketed = root;
-    // Clipping (header, 2.): roots lie only where |c + s tau| <= r. The new ends are pulled
-    // out by a margin that covers the rounding of tau <-> t <-> u, so that the form alone
-    // proves F's sign there: F(new left end) has the sign of c + s tau, which is kept as its
-    // value (Illinois needs only its sign and a rough size).
-    // A root isolated on a monotone segment lies in that window too: its ends, with the
-    // form's values there (whose signs the form proves), become the bracket refinement
-    // starts from, so a tight form leaves little to refine.
-    float nu = u, nv = v, nfl = fl, nfr = fr;
-    if (tame && !none && !touch && F.y != 0.0) {
-      vec2 window = rtZeroWindow(F, h, abs(tm) + abs(ta) + len);
-      float lo = window.x, hi = window.y;
-      float ul = (tm + h * lo - ta) / len, uh = (tm + h * hi - ta) / len;
-      float value = F.x + F.y * lo, high = F.x + F.y * hi;
-      if (ul > u && lo > -1.0 && value != 0.0) { nu = ul; nfl = value; }
-      if (uh < v && hi < 1.0 && high != 0.0) { nv = uh; nfr = high; }
-      // The clipped range misses [u, v] (it lies in the rounding slack of tm +- h); a root
-      // whose window collapsed that way keeps its segment.
-      none = none || (!found && !(nu < nv));
-      if (root && !(nu < nv)) { nu = u; nv = v; nfl = fl; nfr = fr; }
-    }
-    // Next: after a segment with no root, the one to its right, longer by the growth below;
-    // else the clipped segment, or the left half of it where clipping gained less than half.
-    float kept = nv - nu;
-    // Where the remainder dwarfs the slope the form is far from first-order tight (it
-    // shrinks with the square of the length): a quarter.
-    float part = F.z > 2.0 * abs(F.y) ? 0.25 : 0.5;
-    nv = (!found && kept > 0.5 * size) ? nu + part * kept : nv;
-    fl = none ? fr : (nu > u ? nfl : fl);
-    fr = root ? nfr : fr;
-    dl = none ? dr : (dl || nu > u);
-    u = none ? v : nu;
-    // How much longer the next segment may be and still be cleared by its form, predicted
-    // from this one's: with e = c + s (the form at the right end), the next segment g times
-    // as long has its center near e + g s, slope g s and remainder g^2 r, which keeps F's
-    // sign while |e| - a g - r g^2 > 0, a = |s| - s sgn(e). Only a guess (any growth is
-    // exact): never below rtGrowth (1.5 for primary rays, whose next segment after a near
-    // miss is often undecided again; 2 for reflection rays, which mostly leave through
-    // empty space).
-    float e = F.x + F.y, E = abs(e), a = abs(F.y) - F.y * sign(e);
-    float g = RT_GROWTH_TRUST * 2.0 * E / (a + sqrt(a * a + 4.0 * E * F.z));
-    float growth = (tame && g > rtGrowth) ? min(g, RT_GROWTH_MAX) : rtGrowth;  // NaN: rtGrowth
-    v = none ? min(1.0, v + max(growth * size, least)) : nv;
-    done = done || found || u >= 1.0;
+      float t0 = ta + len * u, t1 = ta + len * v;
+      float tm = 0.5 * t0 + 0.5 * t1, h = rtHalfWidth(t0, t1, tm);
+      vec3 F;
+      vec2 D;
+      bool partial;
+      zs_FAffine(o, d, tm, h, F, D, partial);
+      fr = zs_F(o + t1 * d);
+      bool dr = !zs_isUndefined(fr);
+      vec2 range = zsa_range(F);
+      bool none = !(range.x <= 0.0 && range.y >= 0.0);  // also F undefined everywhere
+      bool tame = !partial && range.x > -ZSI_INF && range.y < ZSI_INF;  // defined and bounded
+      bool monotone = tame && (D.x > 0.0 || D.y < 0.0);
+      bool known = dl && dr;
+      bool signChange = known && (fl == 0.0 || fr == 0.0 || (fl > 0.0) != (fr > 0.0));
+      // Where F is tame, splitting goes on to tracing.epsilon, which places a tangency or a
+      // thin sheet that precisely; where it is not, it stops at the pixel footprint.
+      float footprint = rt.epsilon + pixel * (rt.ortho != 0 ? 1.0 : max(t0, 0.0));
+      float size = v - u;
+      rtIsolatedWidth = size * len;  // the last segment's: the one that isolated the root
+      bool small = size * len <= (tame ? rt.epsilon : footprint);
+      bool root = !none && signChange && (monotone || (small && tame));
+      // Undecidable that small: drawn where F is tame (header, 3.).
+      bool touch = !none && !root && small && tame && !(monotone && known);
+      none = none || (monotone && known && !signChange) || (small && !root && !touch);
+      found = root || touch;
+      bracketed = root;
+      // Clipping (header, 2.): roots lie only where |c + s tau| <= r. The new ends are pulled
+      // out by a margin that covers the rounding of tau <-> t <-> u, so that the form alone
+      // proves F's sign there: F(new left end) has the sign of c + s tau, which is kept as its
+      // value (Illinois needs only its sign and a rough size).
+      // A root isolated on a monotone segment lies in that window too: its ends, with the
+      // form's values there (whose signs the form proves), become the bracket refinement
+      // starts from, so a tight form leaves little to refine.
+      float nu = u, nv = v, nfl = fl, nfr = fr;
+      if (tame && !none && !touch && F.y != 0.0) {
+        vec2 window = rtZeroWindow(F, h, abs(tm) + abs(ta) + len);
+        float lo = window.x, hi = window.y;
+        float ul = (tm + h * lo - ta) / len, uh = (tm + h * hi - ta) / len;
+        float value = F.x + F.y * lo, high = F.x + F.y * hi;
+        if (ul > u && lo > -1.0 && value != 0.0) { nu = ul; nfl = value; }
+        if (uh < v && hi < 1.0 && high != 0.0) { nv = uh; nfr = high; }
+        // The clipped range misses [u, v] (it lies in the rounding slack of tm +- h); a root
+        // whose window collapsed that way keeps its segment.
+        none = none || (!found && !(nu < nv));
+        if (root && !(nu < nv)) { nu = u; nv = v; nfl = fl; nfr = fr; }
+      }
+      // Next: after a segment with no root, the one to its right, longer by the growth below;
+      // else the clipped segment, or the left half of it where clipping gained less than half.
+      float kept = nv - nu;
+      // Where the remainder dwarfs the slope the form is far from first-order tight (it
+      // shrinks with the square of the length): a quarter.
+      float part = F.z > 2.0 * abs(F.y) ? 0.25 : 0.5;
+      nv = (!found && kept > 0.5 * size) ? nu + part * kept : nv;
+      fl = none ? fr : (nu > u ? nfl : fl);
+      fr = root ? nfr : fr;
+      dl = none ? dr : (dl || nu > u);
+      u = none ? v : nu;
+      // How much longer the next segment may be and still be cleared by its form, predicted
+      // from this one's: with e = c + s (the form at the right end), the next segment g times
+      // as long has its center near e + g s, slope g s and remainder g^2 r, which keeps F's
+      // sign while |e| - a g - r g^2 > 0, a = |s| - s sgn(e). Only a guess (any growth is
+      // exact): never below rtGrowth (raytrace_main.frag.glsl sets it per ray and says why).
+      float e = F.x + F.y, E = abs(e), a = abs(F.y) - F.y * sign(e);
+      float g = RT_GROWTH_TRUST * 2.0 * E / (a + sqrt(a * a + 4.0 * E * F.z));
+      float growth = (tame && g > rtGrowth) ? min(g, RT_GROWTH_MAX) : rtGrowth;  // NaN: rtGrowth
+      v = none ? min(1.0, v + max(growth * size, least)) : nv;
+      done = done || found || u >= 1.0;
     }
   } while (!done && ++step < RT_MAX_STEPS);
   found = found && u < 1.0 && len > 0.0;
