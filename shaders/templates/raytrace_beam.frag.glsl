@@ -90,3 +90,10 @@ void main() {
   rtOutColor = vec4(start, segment, 0.0, 1.0);  // the beam target's one (RG32F) attachment
 }
 #endif  // RT_BEAM
+
+#ifdef RT_TILE_MASK
+// Tile skipping (render/ray_tracer.cpp, markClearTiles) draws the tiles that the beam found
+// clear with this program, color writes off, to mark them in the stencil buffer; the main
+// pass then starts no fragment there.
+void main() { rtOutColor = vec4(0.0); }
+#endif  // RT_TILE_MASK

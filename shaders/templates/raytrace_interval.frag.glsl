@@ -7,11 +7,16 @@
 //     dF/dt as affine forms along it (affine_prelude.frag.glsl: F(t) lies in c + s tau +- r,
 //     tau in [-1, 1]): 0 not in the form's range proves there is no root. Where F is
 //     defined and bounded on the whole segment and dF/dt keeps one sign, F is monotone: the
-//     signs of F at the two ends (one new evaluation per step; the left end's value is
-//     carried) decide between no root and exactly one. Otherwise the segment is clipped to
-//     where |c + s tau| <= r can hold (roots lie nowhere else), or halved where that keeps
-//     more than half of it, or quartered where the remainder r dwarfs the slope s (the form
-//     is far from first-order tight, and r shrinks with the square of the length). After a
+//     signs of F at the two ends decide between no root and exactly one. Those signs come
+//     from the form itself, which proves the sign of c + s tau outside the window where
+//     |c + s tau| <= r can hold (the left end's sign is also carried from the segment
+//     before); F is not evaluated at the ends, which took a tenth of the walk's work.
+//     A monotone segment whose window covers its right end holds a root only near that end:
+//     next comes the segment from the window on, twice as long as what of it lay inside.
+//     Otherwise the segment is clipped to that window (roots lie nowhere else), or halved
+//     where that keeps more than half of it, or quartered where the remainder r dwarfs the
+//     slope s (the form is far from first-order tight, and r shrinks with the square of the
+//     length). After a
 //     segment with no root comes the one to its right, as much longer as its form predicts
 //     it can still clear (half that guess, 1.5 to 8 times; 2 to 8 for a reflection ray).
 //     Only segments proven free of roots are passed, so the first segment that holds a root
@@ -24,14 +29,16 @@
 //     domains change sign without a root.
 //  4. An isolated root is refined by the Illinois variant of regula falsi on F until its
 //     bracket is below tracing.epsilon, from the part of its segment where the form allows
-//     a root.
+//     a root, or until F at the latest point x pins it nearer: on a monotone segment
+//     |dF/dt| lies between m and M (dF/dt's range), so the root lies between |F(x)| / M and
+//     |F(x)| / m from x, on the side of the sign change.
 //  5. The first segment is rtFirstSegment long (raytrace_main.frag.glsl): for a primary ray
 //     8 times the last segment of its tile's beam (raytrace_beam.frag.glsl), which also moved
 //     the ray's start; for a reflection ray the width of the segment that isolated the primary
 //     hit (rtIsolatedWidth): a scale at which the walk could decide F near there.
 // llvmpipe runs every branch of a loop body for each group of pixels: the isolation body is
-// one affine evaluation and one point evaluation, refinement has its own loop, and loops
-// are do-while (a for loop runs its body once more, masked, after its last iteration).
+// one affine evaluation, refinement has its own loop, and loops are do-while (a for loop
+// runs its body once more, masked, after its last iteration).
 
 const int RT_MAX_STEPS = 256;  // safety bound on isolation + refinement steps per segment
 // The next segment after one without root: the predicted growth (below) times this, at most
@@ -61,7 +68,9 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   float len = tb - ta;
   // A pixel's width at distance t along the ray (a constant when orthographic).
   float pixel = 2.0 * rt.planeHalf / rt.resolution.y;
-  float fl = zs_F(o + ta * d), fr = 0.0;  // F at the left and right end of the segment
+  // F at the left and right end of the segment: evaluated at the ray's start, the form's
+  // c + s tau further on (only their signs, which are proven, and rough sizes count).
+  float fl = zs_F(o + ta * d), fr = 0.0;
   bool dl = !zs_isUndefined(fl);
   bool done = !(len > 0.0), found = false, bracketed = false;
   // The segment [u, v] being classified, in [0, 1]; the first one as long as the hint (5.).
@@ -69,6 +78,8 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   // tracing.epsilon in units of the segment: the smallest step forward after a segment
   // without root, and the width refinement stops at.
   float least = rt.epsilon / len;
+  // Bounds of |dF/du| on the segment that isolated the root (0 and inf: none): refinement.
+  float slopeMin = 0.0, slopeMax = ZSI_INF;
   int step = 0;
   do {
     // Redundant by GLSL's rules, needed on llvmpipe (Mesa 22.3): without it, lanes that had
@@ -83,14 +94,23 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
       vec2 D;
       bool partial;
       zs_FAffine(o, d, tm, h, F, D, partial);
-      fr = zs_F(o + t1 * d);
-      bool dr = !zs_isUndefined(fr);
       vec2 range = zsa_range(F);
       bool none = !(range.x <= 0.0 && range.y >= 0.0);  // also F undefined everywhere
       bool tame = !partial && range.x > -ZSI_INF && range.y < ZSI_INF;  // defined and bounded
       bool monotone = tame && (D.x > 0.0 || D.y < 0.0);
-      bool known = dl && dr;
-      bool signChange = known && (fl == 0.0 || fr == 0.0 || (fl > 0.0) != (fr > 0.0));
+      slopeMin = monotone ? len * min(abs(D.x), abs(D.y)) : 0.0;
+      slopeMax = len * max(abs(D.x), abs(D.y));
+      bool sloped = tame && !none && F.y != 0.0;
+      vec2 window = sloped ? rtZeroWindow(F, h, abs(tm) + abs(ta) + len) : vec2(-2.0, 2.0);
+      // F's signs at the ends from the form alone: where it clears the segment, c's; else,
+      // outside the window, those of c + s tau.
+      bool cleared = none && range.x <= range.y;
+      fr = F.x + F.y;
+      bool dr = cleared || (sloped && window.y < 1.0);
+      float fL = dl ? fl : F.x - F.y;
+      bool lk = dl || cleared || (sloped && window.x > -1.0);
+      bool known = lk && dr;
+      bool signChange = known && (fL == 0.0 || (fL > 0.0) != (fr > 0.0));
       // Where F is tame, splitting goes on to tracing.epsilon, which places a tangency or a
       // thin sheet that precisely; where it is not, it stops at the pixel footprint.
       float footprint = rt.epsilon + pixel * (rt.ortho != 0 ? 1.0 : max(t0, 0.0));
@@ -110,9 +130,8 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
       // A root isolated on a monotone segment lies in that window too: its ends, with the
       // form's values there (whose signs the form proves), become the bracket refinement
       // starts from, so a tight form leaves little to refine.
-      float nu = u, nv = v, nfl = fl, nfr = fr;
-      if (tame && !none && !touch && F.y != 0.0) {
-        vec2 window = rtZeroWindow(F, h, abs(tm) + abs(ta) + len);
+      float nu = u, nv = v, nfl = fL, nfr = fr;
+      if (sloped && !touch) {
         float lo = window.x, hi = window.y;
         float ul = (tm + h * lo - ta) / len, uh = (tm + h * hi - ta) / len;
         float value = F.x + F.y * lo, high = F.x + F.y * hi;
@@ -121,7 +140,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
         // The clipped range misses [u, v] (it lies in the rounding slack of tm +- h); a root
         // whose window collapsed that way keeps its segment.
         none = none || (!found && !(nu < nv));
-        if (root && !(nu < nv)) { nu = u; nv = v; nfl = fl; nfr = fr; }
+        if (root && !(nu < nv)) { nu = u; nv = v; nfl = fL; nfr = fr; }
       }
       // Next: after a segment with no root, the one to its right, longer by the growth below;
       // else the clipped segment, or the left half of it where clipping gained less than half.
@@ -129,10 +148,14 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
       // Where the remainder dwarfs the slope the form is far from first-order tight (it
       // shrinks with the square of the length): a quarter.
       float part = F.z > 2.0 * abs(F.y) ? 0.25 : 0.5;
-      nv = (!found && kept > 0.5 * size) ? nu + part * kept : nv;
-      fl = none ? fr : (nu > u ? nfl : fl);
+      // Monotone with the window over the right end: a root lies only near that end, inside or
+      // just past it: the segment from the window on, twice as long as what of it was inside.
+      bool straddle = monotone && !dr && !found && !none && kept < 0.5 * size;
+      nv = straddle ? min(1.0, nu + 2.0 * kept)
+                    : ((!found && kept > 0.5 * size) ? nu + part * kept : nv);
+      fl = none ? fr : (nu > u ? nfl : fL);
       fr = root ? nfr : fr;
-      dl = none ? dr : (dl || nu > u);
+      dl = none ? dr : (lk || nu > u);
       u = none ? v : nu;
       // How much longer the next segment may be and still be cleared by its form, predicted
       // from this one's: with e = c + s (the form at the right end), the next segment g times
@@ -154,6 +177,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   // both ends of the bracket converge (superlinearly) and it ends below tracing.epsilon.
   bool refining = found && bracketed && flo != 0.0 && fhi != 0.0 && hi - lo > least;
   int side = 0;
+  bool pinned = false;
   do {
     if (refining) {  // the body runs once even for lanes with nothing to refine
       float xs = (lo * fhi - hi * flo) / (fhi - flo);
@@ -170,11 +194,17 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
         if (side > 0) flo *= 0.5;
         side = 1;
       }
-      x = xs;
-      refining = f != 0.0 && hi - lo > least;
+      // The root lies between |f| / slopeMax and |f| / slopeMin from xs, on the side of the sign
+      // change: once that pins it to within tracing.epsilon, its middle is the hit.
+      float near = abs(f) / slopeMax, far = abs(f) / slopeMin;
+      float a = left ? max(lo, xs + near) : max(lo, xs - far);
+      float b = left ? min(hi, xs + far) : min(hi, xs - near);
+      pinned = b - a <= least;
+      x = pinned ? 0.5 * (a + b) : xs;
+      refining = f != 0.0 && hi - lo > least && !pinned;
     }
   } while (refining && ++step < RT_MAX_STEPS);
-  if (bracketed && flo != 0.0 && fhi != 0.0) x = clamp((lo * fhi - hi * flo) / (fhi - flo), lo, hi);
+  if (bracketed && !pinned && flo != 0.0 && fhi != 0.0) x = clamp((lo * fhi - hi * flo) / (fhi - flo), lo, hi);
   tHit = ta + len * x;
   tAfter = ta + len * hi;
   return found;

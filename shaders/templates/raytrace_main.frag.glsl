@@ -104,7 +104,8 @@ uniform sampler2D rtBeam;
 uniform int rtBeamOn;
 #endif
 
-#ifndef RT_BEAM  // the beam pass has its own main (raytrace_beam.frag.glsl)
+// The beam pass and its tile mask have their own main (raytrace_beam.frag.glsl).
+#if !defined(RT_BEAM) && !defined(RT_TILE_MASK)
 void main() {
   // Pixel (i, j) from the top-left of the full image (docs/camera.md).
   vec2 pixel = vec2(gl_FragCoord.x - 0.5, rt.resolution.y - gl_FragCoord.y - 0.5);
@@ -226,4 +227,4 @@ void main() {
   rtOutValue = depth < uintBitsToFloat(0x7F800000u) ? value : uintBitsToFloat(0x7FC00000u);
 #endif
 }
-#endif  // RT_BEAM
+#endif  // !RT_BEAM && !RT_TILE_MASK

@@ -76,6 +76,12 @@ class RayTracer {
   // The interval method's beam pass (raytrace_beam.frag.glsl); on by default. The picture
   // keeps its guarantee either way: off only to measure what it gains or to compare.
   void setBeamPass(bool on) { beamPass_ = on; }
+  // After a beam pass, shade only the tiles where it left some ray that may still hit
+  // something: the others are marked off in the stencil buffer and never started
+  // (render/beam_tiles.hpp). On by default; needs a stencil buffer in the framebuffer drawn
+  // to (the offscreen target has one; without one every tile is shaded).
+  // The picture is the same either way: off only to measure what it gains or to compare.
+  void setTileSkipping(bool on) { tileSkipping_ = on; }
   // The curvature range of the last frame drawn (the viewer's legend); 0 before any.
   double curvatureRange() const { return curvatureRange_; }
 
@@ -97,6 +103,12 @@ class RayTracer {
   // program in use and the framebuffer binding as they were.
   bool drawBeam(const RenderSettings& settings, const Domain& domain, int width, int height);
   void releaseBeam();
+  // Reads the beam pass's result back, marks its clear tiles in the stencil buffer
+  // (render/beam_tiles.hpp) and leaves the stencil test on so that the next draw skips
+  // them; false, test off, where no tile is clear or the tile mask does not compile.
+  bool markClearTiles(int width, int height);
+  // The frame's draw call, with the stencil test turned off after it.
+  void drawFrame();
 
   // One program per feature variant (supersampling, kept hits, reflection: compile-time in
   // the shader, see raytrace_main.frag.glsl), compiled when a frame first needs it.
@@ -105,9 +117,10 @@ class RayTracer {
     bool reflection = true;
     std::string shading;  // lights and coloring (render/shading_defines.hpp)
     bool beam = false;    // the beam pass's program (raytrace_beam.frag.glsl)
+    bool tileMask = false;  // its tile mask's (the same file)
     bool operator<(const Variant& o) const {
-      return std::tie(samples, maxHits, reflection, shading, beam) <
-             std::tie(o.samples, o.maxHits, o.reflection, o.shading, o.beam);
+      return std::tie(samples, maxHits, reflection, shading, beam, tileMask) <
+             std::tie(o.samples, o.maxHits, o.reflection, o.shading, o.beam, o.tileMask);
     }
   };
   static Variant variantFor(const RenderSettings& settings);
@@ -127,11 +140,14 @@ class RayTracer {
   Variant preferred_;  // what build() compiles first: the variant of the last frame
   double curvatureRange_ = 0;
   unsigned fbo_ = 0, colorTex_ = 0, depthTex_ = 0, valueTex_ = 0;
+  unsigned stencil_ = 0;  // the offscreen target's stencil (and unused depth) renderbuffer
   int targetWidth_ = 0, targetHeight_ = 0;
   unsigned beamFbo_ = 0, beamTex_ = 0;
   int beamWidth_ = 0, beamHeight_ = 0;
   bool hasBeam_ = false;  // the fragment shader has a beam pass
   bool beamPass_ = true;
+  bool tileSkipping_ = true;
+  unsigned tileBuffer_ = 0;  // the clear tiles' rectangles (vertex attribute 0)
   GpuHierarchy hierarchy_;
   std::vector<float> params_;
   bool tangentRoots_ = true;

@@ -89,7 +89,7 @@ int RayTracer::setUniforms(const RenderSettings& s, const Domain& clip, int widt
 }
 
 int RayTracer::setProxyUniforms(const Camera& camera, const Domain& domain, int width, int height) {
-  glUniform1i(uniform("rtProxyBox"), proxy_ == Proxy::Box);
+  glUniform1i(uniform("rtProxy"), proxy_ == Proxy::Box ? 1 : 0);  // fullscreen.vert.glsl
   if (proxy_ == Proxy::FullScreen) return 6;
   if (hierarchy_.count == 0) return 0;
   // Hits lie in the domain and in the root box of the hierarchy.

@@ -65,10 +65,14 @@ void checkIntervalGolden(const GoldenCase& c) {
   std::string source = assembleFragmentShader(glsl, interval);
   const ValidationResult result = validateGlsl(source, Stage::Fragment);
   EXPECT_TRUE(result.ok) << formatInternalShaderError("interval fragment shader", result);
-  // The beam pass's program is the same text with RT_BEAM defined (render/ray_tracer.cpp).
-  source.insert(source.find('\n') + 1, "#define RT_BEAM\n#line 2 0\n");
-  const ValidationResult beam = validateGlsl(source, Stage::Fragment);
-  EXPECT_TRUE(beam.ok) << formatInternalShaderError("interval beam pass shader", beam);
+  // The beam pass's program and its tile mask's are the same text with RT_BEAM and
+  // RT_TILE_MASK defined (render/ray_tracer.cpp).
+  for (const char* define : {"RT_BEAM", "RT_TILE_MASK"}) {
+    std::string variant = source;
+    variant.insert(variant.find('\n') + 1, std::string("#define ") + define + "\n#line 2 0\n");
+    const ValidationResult result = validateGlsl(variant, Stage::Fragment);
+    EXPECT_TRUE(result.ok) << formatInternalShaderError(std::string("interval ") + define + " shader", result);
+  }
 }
 
 class GoldenThesis : public ::testing::TestWithParam<GoldenCase> {};

@@ -23,6 +23,7 @@ std::string SurfaceView::upload(const PreparedSurface& surface) {
 void SurfaceView::release(Target& t) {
   if (t.fbo) glDeleteFramebuffers(1, &t.fbo);
   if (t.color) glDeleteTextures(1, &t.color);
+  if (t.stencil) glDeleteRenderbuffers(1, &t.stencil);
   t = {};
 }
 
@@ -37,6 +38,11 @@ bool SurfaceView::ensure(Target& t, int width, int height) {
   glGenFramebuffers(1, &t.fbo);
   glBindFramebuffer(GL_FRAMEBUFFER, t.fbo);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t.color, 0);
+  glGenRenderbuffers(1, &t.stencil);
+  glBindRenderbuffer(GL_RENDERBUFFER, t.stencil);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
+  glBindRenderbuffer(GL_RENDERBUFFER, 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, t.stencil);
   const bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (!complete) {

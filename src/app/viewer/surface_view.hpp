@@ -45,6 +45,7 @@ class SurfaceView {
  private:
   struct Target {
     unsigned fbo = 0, color = 0;
+    unsigned stencil = 0;  // the tracer's tile skipping marks tiles off in it
     int width = 0, height = 0;
   };
   bool ensure(Target& target, int width, int height);
