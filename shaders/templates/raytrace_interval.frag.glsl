@@ -16,9 +16,11 @@
 //     Otherwise the segment is clipped to that window (roots lie nowhere else), or halved
 //     where that keeps more than half of it, or quartered where the remainder r dwarfs the
 //     slope s (the form is far from first-order tight, and r shrinks with the square of the
-//     length). After a
-//     segment with no root comes the one to its right, as much longer as its form predicts
-//     it can still clear (half that guess, 1.5 to 8 times; 2 to 8 for a reflection ray).
+//     length). Where a clip cuts a segment's right end, the part cut off is free of roots:
+//     the walk jumps over it once it gets there (the bumpy sphere's reflection rays took
+//     5 % fewer steps). After a segment with no root comes the one to its right, as much
+//     longer as its form predicts it can still clear (half that guess, 1.5 to 8 times; 2 to
+//     8 for a reflection ray).
 //     Only segments proven free of roots are passed, so the first segment that holds a root
 //     holds the nearest.
 //  3. Splitting stops at the pixel footprint (plus tracing.epsilon): a segment that small
@@ -80,6 +82,10 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   float least = rt.epsilon / len;
   // Bounds of |dF/du| on the segment that isolated the root (0 and inf: none): refinement.
   float slopeMin = 0.0, slopeMax = ZSI_INF;
+  // A stretch (gapFrom, gapTo] that a form proved free of roots when it clipped its
+  // segment's right end, with the form's value at gapTo (its sign is proven): the walk
+  // jumps over it when it gets there instead of walking it again.
+  float gapFrom = 2.0, gapTo = 2.0, gapValue = 0.0;
   int step = 0;
   do {
     // Redundant by GLSL's rules, needed on llvmpipe (Mesa 22.3): without it, lanes that had
@@ -136,7 +142,13 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
         float ul = (tm + h * lo - ta) / len, uh = (tm + h * hi - ta) / len;
         float value = F.x + F.y * lo, high = F.x + F.y * hi;
         if (ul > u && lo > -1.0 && value != 0.0) { nu = ul; nfl = value; }
-        if (uh < v && hi < 1.0 && high != 0.0) { nv = uh; nfr = high; }
+        if (uh < v && hi < 1.0 && high != 0.0) {
+          nv = uh; nfr = high;
+          bool joins = v >= gapFrom;  // (uh, v] and the gap before make one stretch
+          gapValue = (joins && gapTo > v) ? gapValue : F.x + F.y;
+          gapTo = joins ? max(gapTo, v) : v;
+          gapFrom = uh;
+        }
         // The clipped range misses [u, v] (it lies in the rounding slack of tm +- h); a root
         // whose window collapsed that way keeps its segment.
         none = none || (!found && !(nu < nv));
@@ -166,6 +178,11 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
       float g = RT_GROWTH_TRUST * 2.0 * E / (a + sqrt(a * a + 4.0 * E * F.z));
       float growth = (tame && g > rtGrowth) ? min(g, RT_GROWTH_MAX) : rtGrowth;  // NaN: rtGrowth
       v = none ? min(1.0, v + max(growth * size, least)) : nv;
+      bool jump = none && u >= gapFrom && u < gapTo;
+      v = jump ? min(1.0, gapTo + (v - u)) : v;
+      fl = jump ? gapValue : fl;
+      dl = dl || jump;
+      u = jump ? gapTo : u;
       done = done || found || u >= 1.0;
     }
   } while (!done && ++step < RT_MAX_STEPS);
