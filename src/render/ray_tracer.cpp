@@ -234,8 +234,10 @@ bool RayTracer::markClearTiles(int width, int height) {
   glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
   glEnableVertexAttribArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
+  const unsigned main = program_;
+  program_ = mask;
   glUseProgram(mask);
-  glUniform1i(glGetUniformLocation(mask, "rtProxy"), 2);  // the rectangles (fullscreen.vert.glsl)
+  glUniform1i(uniform("rtProxy"), 2);  // the rectangles (fullscreen.vert.glsl)
   const GLboolean culling = glIsEnabled(GL_CULL_FACE);
   glDisable(GL_CULL_FACE);
   glDisable(GL_SCISSOR_TEST);
@@ -254,7 +256,8 @@ bool RayTracer::markClearTiles(int width, int height) {
   // shader runs (it neither discards nor writes depth) is never shaded.
   glStencilFunc(GL_EQUAL, 0, 0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-  glUseProgram(program_);
+  program_ = main;
+  glUseProgram(main);
   return true;
 }
 
