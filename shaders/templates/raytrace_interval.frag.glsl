@@ -145,7 +145,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
         if (uh < v && hi < 1.0 && high != 0.0) {
           nv = uh; nfr = high;
           bool joins = v >= gapFrom;  // (uh, v] and the gap before make one stretch
-          gapValue = (joins && gapTo > v) ? gapValue : F.x + F.y;
+          gapValue = (joins && gapTo > v) ? gapValue : fr;  // the form at v
           gapTo = joins ? max(gapTo, v) : v;
           gapFrom = uh;
         }
@@ -221,7 +221,8 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
       refining = f != 0.0 && hi - lo > least && !pinned;
     }
   } while (refining && ++step < RT_MAX_STEPS);
-  if (bracketed && !pinned && flo != 0.0 && fhi != 0.0) x = clamp((lo * fhi - hi * flo) / (fhi - flo), lo, hi);
+  if (bracketed && !pinned && flo != 0.0 && fhi != 0.0)
+    x = clamp((lo * fhi - hi * flo) / (fhi - flo), lo, hi);
   tHit = ta + len * x;
   tAfter = ta + len * hi;
   return found;

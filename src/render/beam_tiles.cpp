@@ -14,10 +14,12 @@ std::vector<float> clearTileRuns(std::span<const float> beam, int tilesX, int ti
   if (tilesX <= 0 || tilesY <= 0 || tile <= 0 || width <= 0 || height <= 0 ||
       beam.size() != std::size_t(tilesX) * std::size_t(tilesY) * 2)
     return runs;
+  // A pixel edge p of a picture `size` pixels across, in clip space.
+  auto clip = [](int p, int size) { return 2.0f * float(p) / float(size) - 1.0f; };
   // Pixel columns x0..x1 and rows y0..y1 (bottom-up) as two counter-clockwise triangles.
   auto addRectangle = [&](int x0, int x1, int y0, int y1) {
-    const float l = 2.0f * float(x0) / float(width) - 1.0f, r = 2.0f * float(x1) / float(width) - 1.0f;
-    const float b = 2.0f * float(y0) / float(height) - 1.0f, t = 2.0f * float(y1) / float(height) - 1.0f;
+    const float l = clip(x0, width), r = clip(x1, width);
+    const float b = clip(y0, height), t = clip(y1, height);
     const float corners[12] = {l, b, r, b, r, t, l, b, r, t, l, t};
     for (float c : corners) runs.push_back(c);
   };

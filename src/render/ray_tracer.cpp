@@ -201,7 +201,7 @@ bool RayTracer::drawBeam(const RenderSettings& settings, const Domain& domain, i
   return true;
 }
 
-bool RayTracer::markClearTiles(int width, int height) {
+void RayTracer::markClearTiles(int width, int height) {
   // The beam's result: on llvmpipe reading it back costs no wait the main pass would not
   // have had anyway (it samples the beam's texture).
   std::vector<float> beam(std::size_t(beamWidth_) * beamHeight_ * 2);
@@ -217,15 +217,15 @@ bool RayTracer::markClearTiles(int width, int height) {
   // tiles skipped save more (the bumpy sphere clears about 40 %).
   std::size_t clear = 0;
   for (std::size_t k = 0; k < beam.size(); k += 2) clear += beamTileIsClear(beam[k]);
-  if (clear * kSkipShare < beam.size() / 2) return false;  // no stencil test either
+  if (clear * kSkipShare < beam.size() / 2) return;  // no stencil test either
   const std::vector<float> runs =
       clearTileRuns(beam, beamWidth_, beamHeight_, kBeamTile, width, height);
-  if (runs.empty()) return false;
+  if (runs.empty()) return;
   Variant v = preferred_;
   v.tileMask = true;
   std::string log;
   const unsigned mask = program(v, log);
-  if (!mask) return false;  // every tile is shaded (the picture is the same)
+  if (!mask) return;  // every tile is shaded (the picture is the same)
   if (!tileBuffer_) glGenBuffers(1, &tileBuffer_);
   glBindBuffer(GL_ARRAY_BUFFER, tileBuffer_);
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(runs.size() * sizeof(float)), runs.data(),
@@ -258,7 +258,6 @@ bool RayTracer::markClearTiles(int width, int height) {
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
   program_ = main;
   glUseProgram(main);
-  return true;
 }
 
 void RayTracer::drawFrame() {
@@ -301,7 +300,7 @@ std::string RayTracer::ensureTarget(int width, int height) {
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colorTex_, 0);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, depthTex_, 0);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, valueTex_, 0);
-  // For tile skipping (markOpenTiles); depth and stencil come in one format everywhere.
+  // For tile skipping (markClearTiles); depth and stencil come in one format everywhere.
   glGenRenderbuffers(1, &stencil_);
   glBindRenderbuffer(GL_RENDERBUFFER, stencil_);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);

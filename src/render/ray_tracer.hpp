@@ -105,8 +105,9 @@ class RayTracer {
   void releaseBeam();
   // Reads the beam pass's result back, marks its clear tiles in the stencil buffer
   // (render/beam_tiles.hpp) and leaves the stencil test on so that the next draw skips
-  // them; false, test off, where no tile is clear or the tile mask does not compile.
-  bool markClearTiles(int width, int height);
+  // them; leaves the test off where too few tiles are clear or the tile mask does not
+  // compile.
+  void markClearTiles(int width, int height);
   // The frame's draw call, with the stencil test turned off after it.
   void drawFrame();
 

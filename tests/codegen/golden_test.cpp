@@ -71,7 +71,8 @@ void checkIntervalGolden(const GoldenCase& c) {
     std::string variant = source;
     variant.insert(variant.find('\n') + 1, std::string("#define ") + define + "\n#line 2 0\n");
     const ValidationResult result = validateGlsl(variant, Stage::Fragment);
-    EXPECT_TRUE(result.ok) << formatInternalShaderError(std::string("interval ") + define + " shader", result);
+    EXPECT_TRUE(result.ok) << formatInternalShaderError(
+        std::string("interval ") + define + " shader", result);
   }
 }
 
