@@ -27,53 +27,83 @@
 // runs its body once more, masked, after its last iteration).
 
 
-const int RT_MAX_STEPS = 160;  // safety bound on isolation + refinement steps per segment
+const int RT_MAX_STEPS = 1000;  // safety bound on isolation + refinement steps per segment
+const int RT_MAX_WINDOWS = 48;  // safety bound on expansions per segment (5.)
 
 bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float tAfter) {
-  float len = tb - ta;
   // float, or double for high degrees (emit_ray_polynomial.hpp kDoubleDegree)
   zs_Real c[zs_N], b0[zs_N], b[zs_N];
-  bool defined = zs_FPoly(zs_Real3(o + (0.5 * (ta + tb)) * d), zs_Real3((0.5 * len) * d), c);
-  zs_toBernstein(c, b0);
-
-  float tolerance = rt.tangentTolerance / len;  // in units of s
-  float stop = rt.epsilon / (16.0 * len);
-  bool valid = defined && len > 0.0;
-  bool done = !valid, found = false, isolated = false;
-  float u = 0.0, size = 1.0;  // the tree interval [u, u + size] being classified
-  // Float rounding of the coefficients: values within `noise` of 0 are undecided.
-  zs_Real noise = zs_Real(8 * zs_DEGREE) * zs_EPS * zs_maxAbs(b0);
-  int step = 0;
-  // Isolation: the first interval of the tree, left to right, that holds a root. The body is
-  // kept to what every step needs (llvmpipe runs all of it for every group of pixels); what
-  // the interval found needs is computed after the loop.
+  // The window [wa, wb] of the segment that the current expansion covers (5.).
+  float wa = ta, wb = tb, len = tb - ta;
+  bool done = !(len > 0.0), found = false, isolated = false;
+  float u = 0.0, size = 1.0;  // the tree interval [u, u + size] of the window being classified
+  int step = 0, windows = 0;
   do {
-    float w = u + size;
-    zs_restrict(b0, u, w, b);
-    zs_Real4 k = zs_classify(b);  // (min, max, V, V of the derivative)
-    bool none = !(k.x <= noise && k.y >= -noise);  // also NaN (overflow): nothing to find
-    bool monotone = k.w == 0.0;
-    bool ends = (b[0] > 0.0) != (b[zs_DEGREE] > 0.0) || b[0] == 0.0 || b[zs_DEGREE] == 0.0;
-    bool oneSign = k.x > 0.0 || k.y < 0.0;  // within the noise of 0, but no sign change
-    // Monotone without a sign change: no root, and no touching either (the least |f| is at
-    // an end, which the neighbouring interval holds).
-    none = none || (monotone && !ends);
-    // One sign and not monotone: a minimum of |f| near 0 inside, i.e. f' has a root there (a
-    // tangency or a double root): subdivided like an undecided interval.
-    isolated = !none && (k.z == 1.0 || (monotone && !oneSign));
-    bool undecidable = !none && !isolated && size <= tolerance;  // a hit (header, 4.)
-    found = valid && (isolated || undecidable);
-    // Next: the left half of an undecided interval; after one with no root, the interval to
-    // the right, which starts at w and is as large as the highest tree node starting there:
-    // 2^(trailing zeros of its index at this level) times this one.
-    int index = int(w / size + 0.5);
-    float climbed = size * float(index & -index);
-    u = none ? w : u;
-    size = found ? size : (none ? climbed : 0.5 * size);
-    done = done || found || u >= 1.0;
-  } while (!done && ++step < RT_MAX_STEPS);
+    len = wb - wa;
+    double wide[zs_N], bound;
+    bool defined = zs_FPoly(dvec3(o) + (0.5 * (double(wa) + double(wb))) * dvec3(d),
+                            (0.5 * double(len)) * dvec3(d), wide, bound);
+    zs_toBernstein(wide, b0, c);
+    // What rounding can have done to any coefficient of any restriction (4.): the Taylor
+    // arithmetic and the conversion in double (a priori, from the absolute-value bound), the
+    // one rounding to zs_Real, and the de Casteljau steps (convex combinations: a few
+    // roundings of the largest coefficient each).
+    zs_Real noise = zs_Real(zs_ROUNDINGS * zs_WIDE_EPS * bound) +
+                    zs_EPS * zs_Real(8 * zs_DEGREE + 2) * zs_maxAbs(b0);
+    float tolerance = rt.tangentTolerance / len;  // in units of s
+    bool mayZoom = windows + 1 < RT_MAX_WINDOWS && len > 4.0 * rt.tangentTolerance;
+    bool zoom = false;
+    done = !defined;  // F undefined on the whole ray: nothing to find
+    u = 0.0;
+    size = 1.0;
+    // Isolation: the first interval of the tree, left to right, that holds a root. The body
+    // is kept to what every step needs (llvmpipe runs all of it for every group of pixels);
+    // what the interval found needs is computed after the loop.
+    do {
+      float w = u + size;
+      zs_restrict(b0, u, w, b);
+      zs_Real4 k = zs_classify(b);  // (min, max, V, V of the derivative)
+      // Signs the rounding cannot have changed.
+      bool startPos = b[0] > noise, startNeg = b[0] < -noise;
+      bool endPos = b[zs_DEGREE] > noise, endNeg = b[zs_DEGREE] < -noise;
+      bool none = !(k.x <= noise && k.y >= -noise);  // also NaN (overflow): nothing to find
+      bool monotone = k.w == 0.0;
+      // Monotone with both ends of one sign: no root, and no touching either (the least |f|
+      // is at an end, which the neighbouring interval holds).
+      none = none || (monotone && ((startPos && endPos) || (startNeg && endNeg)));
+      // Ends of opposite signs hold a root; one sign change of the control polygon, or a
+      // monotone f, makes it the only one.
+      isolated = !none && ((startPos && endNeg) || (startNeg && endPos)) &&
+                 (k.z == 1.0 || monotone);
+      bool undecided = !none && !isolated;
+      // Every coefficient within the noise: this expansion cannot tell f from 0 here, and
+      // halving cannot change that; an expansion about this interval alone can (5.).
+      bool blurred = k.x >= -noise && k.y <= noise && size < 1.0;
+      bool small = size <= tolerance;
+      zoom = undecided && (small || blurred) && mayZoom;
+      found = isolated || (undecided && small && !zoom);  // a hit (header, 4.)
+      // Next: the left half of an undecided interval; after one with no root, the interval to
+      // the right, which starts at w and is as large as the highest tree node starting there:
+      // 2^(trailing zeros of its index at this level) times this one.
+      int index = int(w / size + 0.5);
+      float climbed = size * float(index & -index);
+      u = none ? w : u;
+      size = (found || zoom) ? size : (none ? climbed : 0.5 * size);
+    } while (!(done || found || zoom || u >= 1.0) && ++step < RT_MAX_STEPS);
+    // Next window: the undecided interval; after a window with no root, the rest of the
+    // segment, expanded anew (shorter than the window before, so its noise is smaller). Out
+    // of steps, the segment ends without a hit.
+    bool more = !done && (zoom || (!found && u >= 1.0 && wb < tb));
+    done = !more;
+    if (more) {
+      float next = wa + (u + size) * len;
+      wa = zoom ? wa + u * len : wb;
+      wb = zoom ? next : tb;
+    }
+  } while (!done && ++windows < RT_MAX_WINDOWS);
   isolated = isolated && found;
   float lo = u, hi = u + size, flo = float(b[0]);  // bracket of the root found, and f(lo)
+  float stop = rt.epsilon / (16.0 * len);
   // An isolated root starts its refinement where the control polygon crosses 0; an
   // undecidable interval's hit is its middle.
   float x = isolated ? u + size * zs_firstCrossing(b) : u + 0.5 * size;
@@ -82,7 +112,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   // on the power basis (Horner, far cheaper than a restriction), until a step is below stop.
   // Its own loop: a Horner step is a fraction of an isolation step, and a shared loop body
   // would pay for both on every iteration.
-  bool refining = isolated && b[0] != 0.0;
+  bool refining = isolated;
   do {
     if (refining) {  // the body runs once even for lanes with nothing to refine
       vec3 f = zs_powerAt(c, zs_Real(2.0 * x - 1.0));  // in s' = 2s - 1
@@ -100,8 +130,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
       refining = refining && !converged;
     }
   } while (refining && ++step < RT_MAX_STEPS);
-  if (isolated && b[0] == 0.0) x = lo;
-  tHit = ta + len * x;
-  tAfter = ta + len * hi;
+  tHit = wa + len * x;
+  tAfter = wa + len * hi;
   return found;
 }

@@ -1,11 +1,13 @@
 #include "app/pipeline.hpp"
 
 #include <chrono>
+#include <cstdio>
 
 #include "codegen/emit_hessian.hpp"
 #include "codegen/glsl_validation.hpp"
 #include "codegen/shader_assembly.hpp"
 #include "expr/derivative.hpp"
+#include "expr/tape.hpp"
 #include "interval/sphere_builder.hpp"
 #include "interval/surface_bounds.hpp"
 #include "parser/parser.hpp"
@@ -82,6 +84,30 @@ SphereHierarchy tracingHierarchy(const Formula& formula, std::span<const double>
   return buildSphereHierarchy(octree, &bounds);
 }
 
+namespace {
+
+// A formula free of x, y and z has no surface (or, where it is 0, is a surface everywhere):
+// every method draws that faithfully, and the user is told why the picture looks as it does.
+std::string constantFormulaNote(const Formula& formula, std::span<const double> params) {
+  if (!formula.graph.isSpatiallyConstant(formula.root)) return {};
+  PointEvaluator eval(compileTape(formula.graph, {formula.root}));
+  const double value = eval.eval1(0, 0, 0, params);
+  char text[200];
+  if (value == 0) {
+    std::snprintf(text, sizeof text,
+                  "note: F does not depend on x, y or z and is 0: every point of the domain is "
+                  "on the surface\n");
+  } else {
+    std::snprintf(text, sizeof text,
+                  "note: F does not depend on x, y or z (F = %.6g everywhere): there is no "
+                  "surface to draw\n",
+                  value);
+  }
+  return text;
+}
+
+}  // namespace
+
 std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bool validate) {
   PreparedSurface s;
   auto t = std::chrono::steady_clock::now();
@@ -90,6 +116,7 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bo
   s.formula = std::get<Formula>(std::move(parsed));
   s.gradient = gradient(s.formula.graph, s.formula.root);
   s.params = paramValues(scene, s.formula.graph);
+  s.constantNote = constantFormulaNote(s.formula, s.params);
   s.times.parseMs = msSince(t);
 
   t = std::chrono::steady_clock::now();

@@ -35,6 +35,8 @@ struct PreparedSurface {
   // search that failed or left regions uncertified); empty when the highlight is off.
   std::vector<std::array<double, 3>> singularPoints;
   std::string singularNote;
+  // Said when F does not depend on x, y, z: nothing to draw, or F = 0 everywhere ("" else).
+  std::string constantNote;
   std::string vertexShader, fragmentShader;
   StageTimes times;
 

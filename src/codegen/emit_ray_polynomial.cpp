@@ -37,7 +37,12 @@ double binomial(int n, int k) {
 }
 
 // Writes the truncated Taylor arithmetic of one body; every polynomial node gets its own
-// temporaries "cN_k".
+// temporaries "cN_k". Beside them it writes, per node, the scalar "aN": the same expression
+// evaluated with every operation on absolute values at |p| + |v| (so aN >= sum_k |cN_k| in
+// exact arithmetic), and it counts the roundings n on the longest path to each coefficient.
+// Together they bound the float error of every computed coefficient a priori: |c_k - exact|
+// <= gamma_n sum_k |exact terms| <= n u aN (the standard bound for sums of products, Higham
+// ch. 3), the rigorous noise band of the isolation (raytrace_bernstein.frag.glsl).
 class TaylorWriter {
  public:
   TaylorWriter(const Graph& g, const std::vector<std::string>& names, int degree,
@@ -47,12 +52,15 @@ class TaylorWriter {
   Coeffs node(NodeId id) {
     const Node& n = g_[id];
     switch (n.op) {
-      case Op::VarX: return {"p.x", "v.x"};
-      case Op::VarY: return {"p.y", "v.y"};
-      case Op::VarZ: return {"p.z", "v.z"};
+      case Op::VarX: case Op::VarY: case Op::VarZ: {
+        const std::string axis = n.op == Op::VarX ? "x" : n.op == Op::VarY ? "y" : "z";
+        bound(id, "abs(p." + axis + ") + abs(v." + axis + ")", 0);
+        return {"p." + axis, "v." + axis};
+      }
       case Op::Neg: {
         Coeffs r;
         for (const std::string& a : at(n.a)) r.push_back("-" + a);
+        bound(id, boundOf(n.a), roundingsOf(n.a));
         return declare(r);
       }
       case Op::Add: case Op::Sub: {
@@ -64,9 +72,14 @@ class TaylorWriter {
           else if (i < a.size()) r[i] = a[i];
           else r[i] = n.op == Op::Add ? b[i] : "-" + b[i];
         }
+        bound(id, boundOf(n.a) + " + " + boundOf(n.b),
+              std::max(roundingsOf(n.a), roundingsOf(n.b)) + 1);
         return declare(r);
       }
-      case Op::Mul: return product(at(n.a), at(n.b));
+      case Op::Mul:
+        bound(id, boundOf(n.a) + " * " + boundOf(n.b),
+              roundingsOf(n.a) + roundingsOf(n.b) + productRoundings(at(n.a), at(n.b)));
+        return product(at(n.a), at(n.b));
       case Op::Div: {  // by an expression free of x, y, z (structuralDegrees allows no other)
         const std::string& b = names_[static_cast<std::size_t>(n.b)];
         const std::string inv = "c" + std::to_string(next_++) + "_inv";
@@ -74,9 +87,10 @@ class TaylorWriter {
         out += "  " + real_ + " " + inv + " = 1.0 / " + real_ + "(" + b + ");\n";
         Coeffs r;
         for (const std::string& a : at(n.a)) r.push_back(a + " * " + inv);
+        bound(id, boundOf(n.a) + " * abs(" + inv + ")", roundingsOf(n.a) + roundingsOf(n.b) + 2);
         return declare(r);
       }
-      case Op::PowI: return power(at(n.a), n.ival);
+      case Op::PowI: return power(id, at(n.a), n.ival);
       default: return {};  // not reached: every other opcode is spatially constant here
     }
   }
@@ -86,13 +100,17 @@ class TaylorWriter {
       scalars_.node(id, "zs_u");
       out += scalars_.out;
       scalars_.out.clear();
-      coeffs_.emplace(id, Coeffs{names_[static_cast<std::size_t>(id)]});
+      const std::string& name = names_[static_cast<std::size_t>(id)];
+      coeffs_.emplace(id, Coeffs{name});
+      bound(id, "abs(" + real_ + "(" + name + "))", constantRoundings(id));
       return;
     }
     coeffs_.emplace(id, node(id));
   }
 
   const Coeffs& at(NodeId id) const { return coeffs_.at(id); }
+  const std::string& boundOf(NodeId id) const { return bounds_.at(id); }
+  int roundingsOf(NodeId id) const { return roundings_.at(id); }
 
   std::string out;
 
@@ -129,16 +147,63 @@ class TaylorWriter {
     return declare(r);
   }
 
-  Coeffs power(const Coeffs& a, int k) {
-    if (k == 0) return {"1.0"};
+  // Roundings a convolution adds to its factors' own: one per product, and the longest sum.
+  static int productRoundings(const Coeffs& a, const Coeffs& b) {
+    return int(std::min(a.size(), b.size()));
+  }
+
+  // The bound and rounding count of a product node are those of the squaring chain below.
+  Coeffs power(NodeId id, const Coeffs& a, int k) {
+    const NodeId base = g_[id].a;
+    if (k == 0) {
+      bound(id, "1.0", 0);
+      return {"1.0"};
+    }
     Coeffs result, square = a;
+    std::string resultBound, squareBound = boundOf(base);
+    int resultRoundings = 0, squareRoundings = roundingsOf(base);
     for (int bits = k;;) {
-      if (bits & 1) result = result.empty() ? square : product(result, square);
+      if (bits & 1) {
+        if (result.empty()) {
+          result = square, resultBound = squareBound, resultRoundings = squareRoundings;
+        } else {
+          resultRoundings += squareRoundings + productRoundings(result, square);
+          resultBound = declareBound(resultBound + " * " + squareBound);
+          result = product(result, square);
+        }
+      }
       bits >>= 1;
       if (bits == 0) break;
+      squareRoundings += squareRoundings + productRoundings(square, square);
+      squareBound = declareBound(squareBound + " * " + squareBound);
       square = product(square, square);
     }
+    bound(id, resultBound, resultRoundings);
     return result;
+  }
+
+  // Roundings of a value free of x, y, z computed in the shader's float: a few per level of
+  // its subexpression (library functions are not correctly rounded), counted generously.
+  int constantRoundings(NodeId id) {
+    if (auto it = constantRoundings_.find(id); it != constantRoundings_.end()) return it->second;
+    const Node& n = g_[id];
+    int below = 0;
+    if (n.a != kNoNode) below = std::max(below, constantRoundings(n.a));
+    if (n.b != kNoNode) below = std::max(below, constantRoundings(n.b));
+    const int r = below + (n.op == Op::Const || n.op == Op::Param ? 1 : 4);
+    constantRoundings_.emplace(id, r);
+    return r;
+  }
+
+  std::string declareBound(const std::string& expr) {
+    const std::string name = "a" + std::to_string(next_++);
+    out += "  " + real_ + " " + name + " = " + expr + ";\n";
+    return name;
+  }
+
+  void bound(NodeId id, const std::string& expr, int roundings) {
+    bounds_[id] = declareBound(expr);
+    roundings_[id] = roundings;
   }
 
   const Graph& g_;
@@ -148,6 +213,8 @@ class TaylorWriter {
   std::string real_;  // "float", or "double" where float would lose too much (header)
   int next_ = 0;
   std::unordered_map<NodeId, Coeffs> coeffs_;
+  std::unordered_map<NodeId, std::string> bounds_;
+  std::unordered_map<NodeId, int> roundings_, constantRoundings_;
 };
 
 std::string arrayParam(const std::string& name) { return "zs_Real " + name + "[zs_N]"; }
@@ -186,10 +253,11 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision) {
   std::string s;
   const std::string real = doublePrecision ? "double" : "float";
   s += "#define zs_Real " + real + "\n";
-  s += std::string("#define zs_Real3 ") + (doublePrecision ? "dvec3" : "vec3") + "\n";
   s += std::string("#define zs_Real4 ") + (doublePrecision ? "dvec4" : "vec4") + "\n";
-  // Unit roundoff of zs_Real, for the noise band of the isolation.
-  s += std::string("const float zs_EPS = ") + (doublePrecision ? "1.2e-16" : "1.2e-7") + ";\n";
+  // Twice the unit roundoff (2^-23 of float, 2^-52 of double): the noise band of the
+  // isolation is a first-order bound; the factor 2 covers the rest and its own rounding.
+  s += std::string("const zs_Real zs_EPS = ") + (doublePrecision ? "2.23e-16lf" : "1.2e-7") + ";\n";
+  s += "const double zs_WIDE_EPS = 2.23e-16lf;\n";
   s += "const int zs_DEGREE = " + std::to_string(d) + ";\n";
   s += "const int zs_N = " + std::to_string(d + 1) + ";\n";
 
@@ -197,7 +265,9 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision) {
   // segment's midpoint, whose coefficients stay far smaller than about an end). The
   // Bernstein coefficients of s'^j on [0, 1] are averages of +-1, so |b| <= sum |c|:
   //   b_i = sum_j c_j sum_k (-1)^(j-k) C(j, k) C(d-j, i-k) / C(d, i).
-  s += "\nvoid zs_toBernstein(" + arrayParam("c") + ", out " + arrayParam("b") + ") {\n";
+  // Computed in double from the double expansion, then rounded once to zs_Real; `narrow`
+  // gets the power coefficients rounded once too, for the refinement's Horner steps.
+  s += "\nvoid zs_toBernstein(double c[zs_N], out zs_Real b[zs_N], out zs_Real narrow[zs_N]) {\n";
   for (int i = 0; i <= d; ++i) {
     std::string sum;
     for (int j = 0; j <= d; ++j) {
@@ -207,11 +277,11 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision) {
       }
       m /= binomial(d, i);
       if (m == 0) continue;
-      const std::string factor = doublePrecision ? doubleLiteral(m) : literal(m);
-      const std::string term = m == 1.0 ? idx("c", j) : factor + " * " + idx("c", j);
+      const std::string term = m == 1.0 ? idx("c", j) : doubleLiteral(m) + " * " + idx("c", j);
       sum += (sum.empty() ? "" : " + ") + term;
     }
-    s += "  " + idx("b", i) + " = " + (sum.empty() ? "0.0" : sum) + ";\n";
+    s += "  " + idx("b", i) + " = zs_Real(" + (sum.empty() ? "0.0" : sum) + ");\n";
+    s += "  " + idx("narrow", i) + " = zs_Real(" + idx("c", i) + ");\n";
   }
   s += "}\n";
 
@@ -270,7 +340,9 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision) {
 std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f) {
   const std::optional<int> degree = rayPolynomialDegree(g, f);
   if (!degree) return std::nullopt;
-  const int d = *degree;
+  // A constant F is traced as a polynomial of degree 1 whose slope is 0: the kernels need
+  // two coefficients, and the isolation then finds no root (or, for F = 0, every point).
+  const int d = std::max(*degree, 1);
   const std::vector<NodeId> order = reachable(g, {f});
   const std::vector<std::string> names = nameNodes(g, order);
 
@@ -282,16 +354,25 @@ std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f)
   s += emitBernsteinKernelsGlsl(d, d >= kDoubleDegree);
 
   result.doublePrecision = d >= kDoubleDegree;
-  TaylorWriter taylor(g, names, d, result.doublePrecision ? "double" : "float");
+  TaylorWriter taylor(g, names, d, "double");
   for (NodeId id : order) taylor.define(id);
-  s += "\n// Coefficients of f(s) in the power basis; false where F is undefined on the whole ray.\n";
-  s += "bool zs_FPoly(zs_Real3 p, zs_Real3 v, out zs_Real c[zs_N]) {\n";
+  // The rounding count of the coefficients, plus that of the conversion to Bernstein form
+  // (d + 1 products summed, the matrix entries rounded once).
+  s += "\n// Roundings on the longest path to a Bernstein coefficient in double (zs_FPoly's error\n";
+  s += "// bound, with the conversion's d + 1 products summed).\n";
+  s += "const double zs_ROUNDINGS = " + std::to_string(taylor.roundingsOf(f) + d + 3) + ".0;\n";
+  s += "\n// Coefficients of f(s) in the power basis, in double, and `bound` >= sum_k |c_k| computed\n";
+  s += "// with every operation on absolute values: the error of any Bernstein coefficient made\n";
+  s += "// from them in double is at most zs_ROUNDINGS zs_WIDE_EPS bound. False where F is\n";
+  s += "// undefined on the whole ray.\n";
+  s += "bool zs_FPoly(dvec3 p, dvec3 v, out double c[zs_N], out double bound) {\n";
   s += "  bool zs_u = false;\n";
   s += taylor.out;
   const Coeffs& root = taylor.at(f);
   for (int k = 0; k <= d; ++k) {
     s += "  " + idx("c", k) + " = " + (k < int(root.size()) ? root[std::size_t(k)] : "0.0") + ";\n";
   }
+  s += "  bound = " + taylor.boundOf(f) + ";\n";
   s += "  return !zs_u;\n}\n";
   return result;
 }

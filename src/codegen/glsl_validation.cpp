@@ -1,5 +1,12 @@
 #include "codegen/glsl_validation.hpp"
 
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 
@@ -94,17 +101,54 @@ ValidationResult validateGlsl(std::string_view source, Stage stage) {
   return result;
 }
 
+namespace {
+
+// The first `lines` lines of `log`, and how many were left out.
+std::string head(std::string_view log, int lines) {
+  std::size_t end = 0;
+  for (int i = 0; i < lines && end < log.size(); ++i) {
+    const std::size_t nl = log.find('\n', end);
+    end = nl == std::string_view::npos ? log.size() : nl + 1;
+  }
+  std::string s(log.substr(0, end));
+  if (!s.empty() && s.back() != '\n') s += '\n';
+  if (end < log.size()) {
+    int more = 0;
+    for (std::size_t i = end; i < log.size(); ++i) more += log[i] == '\n';
+    s += "... (" + std::to_string(std::max(more, 1)) + " more lines in the file below)\n";
+  }
+  return s;
+}
+
+// A shader that zeroset got wrong runs to a thousand lines: the whole report goes to a file
+// in the temporary folder, and the message names it. Where no file can be written, the
+// report is the message.
+std::string withReportFile(std::string message, const std::string& report) {
+  static std::atomic<int> counter{0};
+  std::error_code ec;
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path(ec) /
+      ("zeroset-internal-error-" + std::to_string(::getpid()) + "-" +
+       std::to_string(++counter) + ".txt");
+  std::ofstream out(path);
+  if (!ec && out && (out << message << report) && (out.flush(), out)) {
+    return message + "The shader and the whole log: " + path.string() + "\n";
+  }
+  return message + report;
+}
+
+}  // namespace
+
 std::string formatInternalShaderError(std::string_view what, const ValidationResult& result) {
   std::string s = "internal error in zeroset: the generated ";
   s.append(what);
   s += " was rejected by glslang.\n"
        "This is a bug in zeroset's shader code generator, not a problem with your input; "
-       "please report it with the text below.\n--- glslang log ---\n";
-  s += result.log;
-  if (!s.empty() && s.back() != '\n') s += '\n';
-  s += "--- shader source (string:line as in the log) ---\n";
-  s += result.numberedSource;
-  return s;
+       "please report it with the file named below.\n--- glslang log ---\n";
+  std::string report = "--- glslang log ---\n" + result.log;
+  if (report.back() != '\n') report += '\n';
+  report += "--- shader source (string:line as in the log) ---\n" + result.numberedSource;
+  return withReportFile(s + head(result.log, 12), report);
 }
 
 std::string formatDriverShaderError(std::string_view what, Stage stage,
@@ -113,13 +157,13 @@ std::string formatDriverShaderError(std::string_view what, Stage stage,
   std::string s = "internal error in zeroset: the GL driver rejected the ";
   s.append(what);
   s += glslang.ok ? ", which glslang accepted.\n" : ", which glslang rejects too.\n";
-  s += "--- driver log ---\n";
-  s.append(driverLog);
-  if (!s.empty() && s.back() != '\n') s += '\n';
-  s += "--- glslang log ---\n" + glslang.log;
-  if (s.back() != '\n') s += '\n';
-  s += "--- shader source (string:line as in the logs) ---\n" + glslang.numberedSource;
-  return s;
+  s += "--- driver log ---\n" + head(driverLog, 12);
+  std::string report = "--- driver log ---\n" + std::string(driverLog);
+  if (report.back() != '\n') report += '\n';
+  report += "--- glslang log ---\n" + glslang.log;
+  if (report.back() != '\n') report += '\n';
+  report += "--- shader source (string:line as in the logs) ---\n" + glslang.numberedSource;
+  return withReportFile(s, report);
 }
 
 }  // namespace zs

@@ -68,7 +68,7 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
                            " calls neither zs_F nor zs_FGrad, so the generated formula would be unused");
   }
   std::string out(prelude);  // starts with #version, which must come first
-  if (poly && poly->doublePrecision) {
+  if (poly) {  // the ray polynomial is expanded in double
     // An #extension must precede every non-preprocessor token: right after #version.
     const std::size_t firstLine = out.find('\n') + 1;
     out.insert(firstLine, "#extension GL_ARB_gpu_shader_fp64 : require\n#line 2 0\n");

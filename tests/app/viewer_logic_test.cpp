@@ -95,13 +95,17 @@ TEST(PromptCommands, LinesParseToCommandsOrUsageErrors) {
   for (const Case& c : {Case{"  x^2 - y ", K::Formula, "x^2 - y"}, Case{":load a b.surf", K::Load, "a b.surf"},
                         Case{":save  s.surf", K::Save, "s.surf"}, Case{":set tracing.hits=2", K::Set, "tracing.hits=2"},
                         Case{":png o.png", K::Png, "o.png"}, Case{":help", K::Help, ""},
-                        Case{":quit", K::Quit, ""}, Case{"   ", K::Empty, ""}}) {
+                        Case{":quit", K::Quit, ""}, Case{"   ", K::Empty, ""},
+                        // Bare command words a new user types are commands, not h*e*l*p.
+                        Case{"help", K::Help, ""}, Case{" quit", K::Quit, ""},
+                        Case{"exit", K::Quit, ""}, Case{":exit", K::Quit, ""},
+                        Case{"helpx", K::Formula, "helpx"}}) {
     auto parsed = parsePromptLine(c.line);
     ASSERT_TRUE(std::holds_alternative<PromptCommand>(parsed)) << c.line;
     EXPECT_EQ(std::get<PromptCommand>(parsed).kind, c.kind) << c.line;
     EXPECT_EQ(std::get<PromptCommand>(parsed).arg, c.arg) << c.line;
   }
-  for (const char* bad : {":load", ":quit now", ":frobnicate", ":"}) {
+  for (const char* bad : {":load", ":quit now", ":frobnicate", ":", "load a.surf", "png o.png"}) {
     auto parsed = parsePromptLine(bad);
     ASSERT_TRUE(std::holds_alternative<std::string>(parsed)) << bad;
     EXPECT_EQ(std::get<std::string>(parsed).rfind("error: ", 0), 0u) << bad;

@@ -21,7 +21,7 @@ struct CommandSpec {
   const char* argName;  // nullptr: takes no argument
 };
 
-constexpr std::array<CommandSpec, 7> kCommands{{
+constexpr std::array<CommandSpec, 8> kCommands{{
     {"load", PromptCommand::Kind::Load, "FILE"},
     {"save", PromptCommand::Kind::Save, "FILE"},
     {"set", PromptCommand::Kind::Set, "KEY=VALUE"},
@@ -29,27 +29,45 @@ constexpr std::array<CommandSpec, 7> kCommands{{
     {"help", PromptCommand::Kind::Help, nullptr},
     {"quit", PromptCommand::Kind::Quit, nullptr},
     {"q", PromptCommand::Kind::Quit, nullptr},
+    {"exit", PromptCommand::Kind::Quit, nullptr},
 }};
+
+const CommandSpec* findCommand(std::string_view name) {
+  for (const CommandSpec& spec : kCommands)
+    if (spec.name == name) return &spec;
+  return nullptr;
+}
 
 }  // namespace
 
 std::variant<PromptCommand, std::string> parsePromptLine(std::string_view line) {
   line = trim(line);
   if (line.empty()) return PromptCommand{};
-  if (line.front() != ':') return PromptCommand{PromptCommand::Kind::Formula, std::string(line)};
-  const std::string_view body = line.substr(1);
+  const bool colon = line.front() == ':';
+  const std::string_view body = colon ? line.substr(1) : line;
   const auto space = body.find_first_of(" \t");
   const std::string_view name = body.substr(0, space);
   const std::string_view arg = space == std::string_view::npos ? "" : trim(body.substr(space));
-  for (const CommandSpec& spec : kCommands) {
-    if (spec.name != name) continue;
-    if (spec.argName && arg.empty())
-      return "error: :" + std::string(name) + " needs " + spec.argName + "\n";
-    if (!spec.argName && !arg.empty())
-      return "error: :" + std::string(name) + " takes no argument\n";
-    return PromptCommand{spec.kind, std::string(arg)};
+  const CommandSpec* spec = findCommand(name);
+  if (!colon) {
+    // A command word typed without its colon. Alone, a command that takes no argument is
+    // that command (as a formula, "help" would be the constant h*e*l*p, which draws
+    // nothing); followed by an argument, a command that takes one is pointed at.
+    if (spec && !spec->argName && arg.empty()) return PromptCommand{spec->kind, ""};
+    if (spec && spec->argName && !arg.empty()) {
+      return "error: '" + std::string(name) + "' is a command: did you mean :" + std::string(name) +
+             " " + std::string(arg) + "?\n";
+    }
+    return PromptCommand{PromptCommand::Kind::Formula, std::string(line)};
   }
-  return "error: unknown command ':" + std::string(name) + "'\nhint: :help lists the commands\n";
+  if (!spec) {
+    return "error: unknown command ':" + std::string(name) + "'\nhint: :help lists the commands\n";
+  }
+  if (spec->argName && arg.empty())
+    return "error: :" + std::string(name) + " needs " + spec->argName + "\n";
+  if (!spec->argName && !arg.empty())
+    return "error: :" + std::string(name) + " takes no argument\n";
+  return PromptCommand{spec->kind, std::string(arg)};
 }
 
 std::string promptHelp() {
@@ -61,7 +79,7 @@ std::string promptHelp() {
          "                   :set params.a=0.5, :set camera.eye=[0,1,4]\n"
          "  :png FILE        render the current scene to a PNG\n"
          "  :help            this text\n"
-         "  :quit            leave (so does Ctrl+D)\n";
+         "  :quit            leave (so do quit, exit and Ctrl+D)\n";
 }
 
 }  // namespace zs::app
