@@ -4,4 +4,14 @@ set -euo pipefail
 cd "$(dirname "$0")"
 scripts/install-deps.sh
 scripts/build.sh
-ctest --test-dir build --output-on-failure -j "$(nproc)"
+# Every test has a TIMEOUT (tests/CMakeLists.txt); --timeout covers any added without one.
+log=build/Testing/test-run.log
+mkdir -p build/Testing
+status=0
+ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 180 2>&1 | tee "$log" ||
+  status=$?
+# The ten slowest tests of this run: each should stay under 20 s.
+echo "The ten slowest tests of this run (seconds):"
+sed -n 's/^ *[0-9]*\/[0-9]* Test *#[0-9]*: \([^ ]*\) .* \([0-9.]*\) sec$/\2 \1/p' "$log" |
+  sort -rn | awk 'NR <= 10 {printf "  %7.2f  %s\n", $1, $2}'
+exit "$status"

@@ -4,23 +4,33 @@
 // and defines rtFirstRoot() (raytrace_first_roots.frag.glsl, after it, defines rtMarch()):
 //  1. The ray is clipped to the domain (box or ball) and to the box of the octree's leaves. On that
 //     segment f(s) = F(o + t(s) d), s in [0, 1], comes from ONE call of zs_FPoly (a Taylor
-//     expansion about the segment's midpoint), in the Bernstein basis.
+//     expansion about the segment's midpoint, in double), in the Bernstein basis.
 //  2. The Bernstein coefficients bound f on an interval (convex hull) and their sign changes
-//     V bound its number of roots (Descartes): V = 1, or a monotone f (no sign change among
-//     the derivative's coefficients) with a sign change, isolates exactly one root; no
-//     coefficient of the other sign proves there is none. Otherwise the interval is halved,
-//     walking the implicit binary tree of intervals [k, k+1] 2^-level left to right with no
-//     stack: every visited interval is restricted from the segment's coefficients by de
-//     Casteljau, so nothing is kept per level. The first interval that holds a root holds
-//     the nearest one.
+//     V bound its number of roots (Descartes): ends of proven opposite signs with V = 1, or
+//     with a monotone f (no sign change among the derivative's coefficients), isolate one
+//     root; every coefficient beyond the noise band on one side proves there is none.
+//     Otherwise the interval is halved, walking the implicit binary tree of intervals
+//     [k, k+1] 2^-level left to right with no stack: every visited interval is restricted
+//     from the segment's coefficients by de Casteljau, so nothing is kept per level. The
+//     first interval that holds a root holds the nearest one.
 //  3. The isolated root is refined from where the control polygon crosses 0 by Halley steps
 //     safeguarded by bisection inside its bracket until a step is below tracing.epsilon / 16;
 //     f, f' and f'' come from the Taylor coefficients by Horner (3D multiply-adds, against
 //     D^2 for a restriction).
-//  4. An interval narrower than the tangent tolerance (1e-5 of the domain diagonal) that
-//     still cannot be decided holds a root of even multiplicity, a cluster of roots, or a
-//     ray passing closer than that to the surface: it is a hit (a ray touching a sphere,
-//     the squared sphere (x^2+y^2+z^2-1)^2). Nothing that may hold a root is skipped.
+//  4. Rounding: every sign decision is made against a noise band that bounds what rounding
+//     can have done to a coefficient (the expansion's a priori error bound, the one rounding
+//     of its result to zs_Real, the de Casteljau steps). An interval narrower than the
+//     tangent tolerance (1e-5 of the domain diagonal) that still cannot be decided by an
+//     expansion no longer than a few tolerances holds a root of even multiplicity, a
+//     cluster of roots, or a ray passing closer than rounding can tell from touching: it is
+//     a hit (a ray touching a sphere, the squared sphere (x^2+y^2+z^2-1)^2).
+//  5. Re-expansion: the noise band is relative to the largest coefficient of the window,
+//     which grows with the window's length. Where it cannot decide (an undecided interval
+//     whose coefficients all lie inside the band, or one narrower than the tolerance), f is
+//     expanded anew about that interval alone, whose coefficients are those of f near there,
+//     and the walk goes on in it; after a window with no root, the rest of the segment is
+//     expanded anew. So a hit stands on a proven root, or on f within rounding of 0 over a
+//     stretch narrower than the tolerance where f is expanded about that stretch itself.
 // llvmpipe runs every branch of a loop body for each group of pixels: the isolation loop's
 // body makes exactly one zs_restrict call, refinement has a loop of its own (sharing one
 // loop made every refinement step pay for a restriction), and loops are do-while (a for loop

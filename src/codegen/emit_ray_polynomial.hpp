@@ -6,14 +6,17 @@
 // raytrace_bernstein.frag.glsl isolates roots with:
 //
 //   const int zs_DEGREE = D;  const int zs_N = D + 1;
-//   #define zs_Real float (double from kDoubleDegree on), zs_Real3 vec3 (dvec3)
-//   bool zs_FPoly(zs_Real3 p, zs_Real3 v, out zs_Real c[zs_N]);  // power basis, c[k] of s^k
-//   void zs_toBernstein(zs_Real c[zs_N], out float b[zs_N]); // Bernstein on [0, 1], s' = (s+1)/2
-//   void zs_restrict(float b[zs_N], float u, float w, out float r[zs_N]);  // to [u, w]
+//   #define zs_Real float (double from kDoubleDegree on), zs_Real4 vec4 (dvec4)
+//   const double zs_ROUNDINGS;  // roundings on the longest path to a Bernstein coefficient
+//   bool zs_FPoly(dvec3 p, dvec3 v, out double c[zs_N], out double bound);  // c[k] of s^k,
+//        in double; bound: the expansion with every operation on absolute values
+//   void zs_toBernstein(double c[zs_N], out zs_Real b[zs_N], out zs_Real narrow[zs_N]);
+//        // Bernstein on [0, 1] (s' = (s+1)/2) in double, rounded once; narrow: c rounded once
+//   void zs_restrict(zs_Real b[zs_N], float u, float w, out zs_Real r[zs_N]);  // to [u, w]
 //   vec3 zs_powerAt(zs_Real c[zs_N], zs_Real x);  // (f, f', f''/2) at s = x in [-1, 1], Horner
-//   float zs_firstCrossing(float b[zs_N]);    // first zero of the control polygon, in [0, 1]
-//   float zs_maxAbs(float b[zs_N]);           // largest |coefficient|
-//   vec4 zs_classify(float b[zs_N]);  // (min, max, sign changes of b, of its derivative)
+//   float zs_firstCrossing(zs_Real b[zs_N]);  // first zero of the control polygon, in [0, 1]
+//   zs_Real zs_maxAbs(zs_Real b[zs_N]);       // largest |coefficient|
+//   zs_Real4 zs_classify(zs_Real b[zs_N]);  // (min, max, sign changes of b, of its derivative)
 //
 // zs_FPoly is truncated Taylor arithmetic: every node carries the coefficients of its own
 // polynomial in s, up to its structural degree (expr/degree.hpp) and at most D, so products
@@ -28,17 +31,19 @@
 
 namespace zs {
 
-// From this degree on, zs_FPoly and the conversion to Bernstein coefficients run in double
-// (GL_ARB_gpu_shader_fp64): a polynomial typed in the power basis cancels ever larger terms
-// along a ray as its degree grows, and in float that noise hid sheets and moved roots of
-// degree-12 surfaces (tests/render/degree_limit_test.cpp, docs/renderer.md). Isolation and
-// its de Casteljau steps stay in float, on coefficients rounded once.
-inline constexpr int kDoubleDegree = 9;
+// zs_FPoly (the Taylor expansion) and the conversion to Bernstein coefficients always run in
+// double (GL_ARB_gpu_shader_fp64), with an a priori bound of their rounding. From this
+// degree on the isolation (de Casteljau, classification, Horner) runs in double too: below
+// it, float isolation with re-expansion where its noise band cannot decide is faster; from
+// it, float's band (relative to the segment's largest coefficient, which grows like the
+// segment's length to the power D) makes so many rays re-expand that double is faster, and
+// it keeps far sheets of degree-12 surfaces in place (docs/renderer.md).
+inline constexpr int kDoubleDegree = 7;
 
 struct RayPolynomialGlsl {
   std::string source;  // the block, ending with a newline
   int degree = 0;      // D
-  bool doublePrecision = false;  // D >= kDoubleDegree: the block needs GL_ARB_gpu_shader_fp64
+  bool doublePrecision = false;  // D >= kDoubleDegree: the isolation runs in double too
 };
 
 // Degree of f(s) the block would have: the structural degree of F, or nothing when F is not

@@ -1,6 +1,6 @@
 // Random formulas (tests/support): the generator is deterministic and covers the language;
 // every formula it produces parses, and every parsed formula yields a fragment shader that
-// glslang accepts (2000 of them, fixed seed). Also measures glslang's time per formula and
+// glslang accepts for every method that applies (2000 of them, fixed seed). Also measures glslang's time per formula and
 // validates one very large formula; the numbers are printed and recorded in the test XML.
 #include "support/random_formula.hpp"
 
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "codegen/emit_interval_glsl.hpp"
+#include "codegen/emit_ray_polynomial.hpp"
 #include "codegen/glsl_validation.hpp"
 #include "codegen/shader_assembly.hpp"
 #include "codegen_test_util.hpp"
@@ -57,12 +58,19 @@ TEST(RandomFormula, CoversTheLanguage) {
   }
 }
 
-TEST(RandomFormula, EveryFormulaParsesAndPassesGlslang) {
+// Sharded so the shards run in parallel: each validates its share of the formulas with the
+// shader of every method that applies (sampling; interval; Bernstein for polynomials).
+class RandomFormulaShard : public ::testing::TestWithParam<int> {};
+constexpr int kShards = 4;
+
+TEST_P(RandomFormulaShard, EveryFormulaParsesAndPassesGlslangForEveryMethod) {
   std::mt19937_64 rng(20240601);
   std::vector<double> millis;
   std::size_t largestNodes = 0;
+  int polynomials = 0;
   for (int i = 0; i < kFormulas; ++i) {
     const std::string text = randomFormula(rng, optionsFor(i));
+    if (i % kShards != GetParam()) continue;  // every shard draws the same sequence
     SCOPED_TRACE("formula #" + std::to_string(i) + ": " + text);
     std::optional<Formula> formula = parseOrFail(text);
     ASSERT_TRUE(formula);
@@ -80,15 +88,26 @@ TEST(RandomFormula, EveryFormulaParsesAndPassesGlslang) {
         assembleFragmentShader(glsl, emitIntervalGlsl(formula->graph, formula->root)),
         Stage::Fragment);
     ASSERT_TRUE(interval.ok) << formatInternalShaderError("interval fragment shader", interval);
+    // The Bernstein method's (the default for polynomials), constants included.
+    if (auto poly = emitRayPolynomialGlsl(formula->graph, formula->root)) {
+      ++polynomials;
+      const ValidationResult bernstein =
+          validateGlsl(assembleFragmentShader(glsl, *poly), Stage::Fragment);
+      ASSERT_TRUE(bernstein.ok) << formatInternalShaderError("Bernstein fragment shader", bernstein);
+    }
     largestNodes = std::max(largestNodes, formula->graph.size());
   }
   std::sort(millis.begin(), millis.end());
   const double median = millis[millis.size() / 2];
-  std::printf("glslang: %d shaders, median %.2f ms, max %.2f ms, largest graph %zu nodes\n",
-              kFormulas, median, millis.back(), largestNodes);
+  std::printf("glslang: %zu formulas (%d polynomials), median %.2f ms, max %.2f ms, largest "
+              "graph %zu nodes\n",
+              millis.size(), polynomials, median, millis.back(), largestNodes);
+  EXPECT_GT(polynomials, int(millis.size()) / 10) << "too few polynomials: Bernstein untested";
   RecordProperty("glslang_median_us", static_cast<int>(median * 1000));
   RecordProperty("largest_graph_nodes", static_cast<int>(largestNodes));
 }
+
+INSTANTIATE_TEST_SUITE_P(Shards, RandomFormulaShard, ::testing::Range(0, kShards));
 
 // One very large formula: the sum of many random terms (shared subexpressions are merged by
 // the graph, so the node count is what is measured, not the text length).

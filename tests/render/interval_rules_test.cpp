@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <initializer_list>
 #include <random>
 #include <variant>
@@ -251,6 +252,11 @@ TEST(AffineRules, EveryRuleEnclosesTheOperationAlongTheSegmentOnThisGpu) {
 // chains with heavy cancellation, where the settled rounding is all that keeps F's value
 // inside: (x + 1000)^2 - 2000 x - 10^6 is x^2 computed through terms of size 10^6.
 TEST(AffineBlock, EnclosesFAndItsDerivativeAlongSegmentsOnThisGpu) {
+  // Fourteen large programs, each drawn once: llvmpipe's LLVM optimization passes would cost
+  // minutes on a machine whose shader cache is empty and buy nothing for one 256 x 1 draw.
+  // Mesa reads this when the driver starts: in this test's own process (ctest runs each test
+  // alone), before the first context.
+  setenv("GALLIVM_PERF", "nopt", /*overwrite=*/0);
   std::string error;
   ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
   const char* kFormulas[] = {
