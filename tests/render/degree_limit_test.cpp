@@ -1,4 +1,4 @@
-// Where the Bernstein method stops being exact in float: Chebyshev surfaces
+// Where the Bernstein method stops being exact: Chebyshev surfaces
 // T_n(x) + T_n(y) + T_n(z) = 0 in [-1.05, 1.05]^3, written out in the power basis as a user
 // would type them (coefficients up to 2^(n-1), values near 3: the expansion along a ray
 // cancels ever larger terms as n grows). Each render is compared with a reference in double
@@ -92,7 +92,7 @@ Measured measure(int n) {
               "out: %d grazing, %d touching within the tolerance%s\n", n,
               n >= kDoubleDegree ? "double" : "float", m.hits, m.missed, m.extra, m.worstDepth,
               m.grazing, m.touching,
-              n > kMaxBernsteinDegree ? " (above the limit: sampled in the app)" : "");
+              n > kMaxBernsteinDegree ? " (above the limit: the app uses the interval method)" : "");
   return m;
 }
 
@@ -108,7 +108,7 @@ TEST(DegreeLimit, ChebyshevSurfacesAreExactUpToTheLimit) {
 }
 
 TEST(DegreeLimit, AboveTheLimitIsMeasured) {
-  // Printed for docs/renderer.md; the app samples these degrees (with a warning).
+  // Printed for docs/renderer.md; the app traces these degrees with the interval method.
   for (int n : {24, 28, 32}) {
     const Measured m = measure(n);
     EXPECT_GT(m.hits, 0);  // the reference sees the surface: the comparison means something
