@@ -11,20 +11,14 @@
 #include "expr/tape.hpp"
 #include "interval/tape_eval.hpp"
 #include "render/camera.hpp"
+#include "render_support.hpp"
 
 namespace zs::test {
 namespace {
 
 // The part [t0, t1] of the ray inside the domain (box, then ball), in double.
 std::pair<double, double> clip(const Ray& r, const Domain& domain) {
-  const Domain box = boundingBox(domain);
-  double t0 = 0, t1 = INFINITY;
-  for (int k = 0; k < 3; ++k) {
-    const double a = (box.min[k] - r.origin[k]) / r.direction[k];
-    const double b = (box.max[k] - r.origin[k]) / r.direction[k];
-    t0 = std::max(t0, std::min(a, b));
-    t1 = std::min(t1, std::max(a, b));
-  }
+  auto [t0, t1] = rayInBox(r, boundingBox(domain));
   if (domain.shape == DomainShape::Sphere) {
     double oc[3], b = 0, c = -domain.radius * domain.radius;
     for (int k = 0; k < 3; ++k) {
@@ -49,46 +43,6 @@ Box boxAround(const Ray& r, double t, double reach) {
     box.max[k] = std::nextafter(p + reach, INFINITY);
   }
   return box;
-}
-
-// The first root of f(t) = F(o + t d) in [t0, t1] in double, or NaN: f and f' = grad F . d
-// are sampled `samples` times; the first step where f changes sign, or where f' changes sign
-// and f at that extremum has the other sign, holds it, and bisection finds it. Two roots
-// closer than a step are found as long as a step holds at most one extremum of f.
-double firstHit(PointEvaluator& f, std::span<const double> params, const Ray& r, double t0,
-                double t1, int samples) {
-  if (!(t0 <= t1)) return NAN;
-  double out[4];
-  auto at = [&](double t) {
-    f.eval(r.origin[0] + t * r.direction[0], r.origin[1] + t * r.direction[1],
-           r.origin[2] + t * r.direction[2], params, out);
-    return std::pair{out[0], out[1] * r.direction[0] + out[2] * r.direction[1] +
-                                 out[3] * r.direction[2]};
-  };
-  auto bisect = [](auto&& g, double lo, double hi) {  // a sign change of g on [lo, hi]
-    const bool negLo = g(lo) < 0;
-    for (int i = 0; i < 64; ++i) {
-      const double m = 0.5 * (lo + hi);
-      (g(m) < 0) == negLo ? lo = m : hi = m;
-    }
-    return 0.5 * (lo + hi);
-  };
-  auto value = [&](double t) { return at(t).first; };
-  auto slope = [&](double t) { return at(t).second; };
-  double a = t0;
-  auto [fa, ga] = at(a);
-  for (int k = 1; k <= samples; ++k) {
-    const double b = t0 + (t1 - t0) * k / samples;
-    const auto [fb, gb] = at(b);
-    if (fa == 0) return a;
-    if ((fa < 0) != (fb < 0)) return bisect(value, a, b);
-    if ((ga < 0) != (gb < 0)) {
-      const double e = bisect(slope, a, b);
-      if ((value(e) < 0) != (fa < 0)) return bisect(value, a, e);
-    }
-    a = b, fa = fb, ga = gb;
-  }
-  return NAN;
 }
 
 }  // namespace
@@ -130,16 +84,13 @@ ReferenceCounts compareWithReference(const Scene& scene, const app::PreparedSurf
       auto reference = [&](double i, double j) {
         const Ray r = primaryRay(scene.render.camera, size, size, i, j);
         const auto [t0, t1] = clip(r, scene.domain);
-        return firstHit(point, surface.params, r, t0, t1, samples);
+        return t0 <= t1 ? sampledFirstHit(point, r, t0, t1, samples, surface.params) : NAN;
       };
       for (int j = int(w); j < size; j += int(threads)) {
         for (int i = 0; i < size; ++i) {
           const double want = reference(i, j);
           const bool hit = !std::isnan(want);
-          bool stable = true;
-          for (auto [di, dj] : {std::pair{-0.5, 0.0}, {0.5, 0.0}, {0.0, -0.5}, {0.0, 0.5}})
-            stable = stable && !std::isnan(reference(i + di, j + dj)) == hit;
-          if (!stable) {
+          if (!stableWithinHalfAPixel(reference, i, j, hit)) {
             ++c.leftOut;
             continue;
           }

@@ -87,11 +87,12 @@ std::pair<double, double> rayInBox(const Ray& r, const Domain& box) {
   return {t0, t1};
 }
 
-double sampledFirstHit(PointEvaluator& f, const Ray& r, double t0, double t1, int samples) {
+double sampledFirstHit(PointEvaluator& f, const Ray& r, double t0, double t1, int samples,
+                       std::span<const double> params) {
   double out[4];
   auto at = [&](double t) {  // (f, f')
     f.eval(r.origin[0] + t * r.direction[0], r.origin[1] + t * r.direction[1],
-           r.origin[2] + t * r.direction[2], {}, out);
+           r.origin[2] + t * r.direction[2], params, out);
     return std::pair{out[0], out[1] * r.direction[0] + out[2] * r.direction[1] +
                                  out[3] * r.direction[2]};
   };
@@ -121,6 +122,13 @@ double sampledFirstHit(PointEvaluator& f, const Ray& r, double t0, double t1, in
   return NAN;
 }
 
+bool stableWithinHalfAPixel(const std::function<double(double, double)>& firstHit, int i,
+                            int j, bool hit) {
+  for (auto [di, dj] : {std::pair{-0.5, 0.0}, {0.5, 0.0}, {0.0, -0.5}, {0.0, 0.5}})
+    if (std::isnan(firstHit(i + di, j + dj)) == hit) return false;
+  return true;
+}
+
 DepthComparison compareDepth(const DepthMap& depth, const Camera& camera, int size,
                              PointEvaluator& shown,
                              const std::function<double(const Ray&)>& firstHit,
@@ -148,10 +156,8 @@ DepthComparison compareDepth(const DepthMap& depth, const Camera& camera, int si
     for (int i = 0; i < size; ++i) {
       const double want = reference(i, j);
       const bool hit = !std::isnan(want);
-      bool stable = true;
-      for (auto [di, dj] : {std::pair{-0.5, 0.0}, {0.5, 0.0}, {0.0, -0.5}, {0.0, 0.5}})
-        stable = stable && !std::isnan(reference(i + di, j + dj)) == hit;
-      if (!stable) continue;
+      if (!stableWithinHalfAPixel([&](double x, double y) { return reference(x, y); }, i, j, hit))
+        continue;
       // The shader builds its rays in float: directions within ~1e-7 of these.
       bool grazing = false;
       for (auto [tx, ty] : {std::pair{1e-6, 0.0}, {-1e-6, 0.0}, {0.0, 1e-6}, {0.0, -1e-6}})

@@ -6,6 +6,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -59,7 +60,15 @@ std::pair<double, double> rayInBox(const Ray& r, const Domain& box);
 // extremum (found by bisecting f') has the other sign, holds the first root, which bisection
 // then finds. So two roots closer than a step are found too, as long as a step holds at most
 // one extremum of f.
-double sampledFirstHit(PointEvaluator& f, const Ray& r, double t0, double t1, int samples);
+// `params`: one value per graph parameter.
+double sampledFirstHit(PointEvaluator& f, const Ray& r, double t0, double t1, int samples,
+                       std::span<const double> params = {});
+
+// Whether the reference's answer at pixel (i, j), hit or miss, stays the same half a pixel
+// away in each direction: where it does not, either answer is right. `firstHit(i, j)` is the
+// reference's first hit along the ray through (i, j) (NaN: none).
+bool stableWithinHalfAPixel(const std::function<double(double, double)>& firstHit, int i,
+                            int j, bool hit);
 
 // A render's depth against a reference for every pixel of a size x size frame of `camera`.
 // `shown` is a tape of F and its gradient (the surface that must be drawn); `firstHit(r)` the
