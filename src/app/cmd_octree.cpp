@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
-#include "app/pipeline.hpp"
+#include "pipeline/pipeline.hpp"
 #include "app/scene_args.hpp"
 #include "interval/report.hpp"
 #include "interval/surface_bounds.hpp"

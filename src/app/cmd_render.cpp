@@ -10,8 +10,8 @@
 
 #include "app/animate/render_frames.hpp"
 #include "app/commands.hpp"
-#include "app/load_surface.hpp"
-#include "app/pipeline.hpp"
+#include "pipeline/load_surface.hpp"
+#include "pipeline/pipeline.hpp"
 #include "app/scene_args.hpp"
 #include "render/gl_context.hpp"
 #include "render/ray_tracer.hpp"

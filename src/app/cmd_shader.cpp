@@ -2,7 +2,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
-#include "app/pipeline.hpp"
+#include "pipeline/pipeline.hpp"
 #include "app/scene_args.hpp"
 
 namespace zs::app {

@@ -6,7 +6,7 @@
 
 #include "app/commands.hpp"
 #include "app/text_output.hpp"
-#include "app/pipeline.hpp"
+#include "pipeline/pipeline.hpp"
 #include "app/scene_args.hpp"
 #include "parser/parser.hpp"
 #include "scene/scene_io.hpp"

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <future>
 
-#include "app/pipeline.hpp"
+#include "pipeline/pipeline.hpp"
 #include "mesh/mesh_io.hpp"
 #include "parser/parser.hpp"
 #include "scene/scene_io.hpp"

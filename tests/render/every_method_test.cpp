@@ -11,8 +11,8 @@
 #include <variant>
 #include <vector>
 
-#include "app/load_surface.hpp"
-#include "app/pipeline.hpp"
+#include "pipeline/load_surface.hpp"
+#include "pipeline/pipeline.hpp"
 #include "render_support.hpp"
 #include "support/random_formula.hpp"
 
@@ -47,14 +47,14 @@ TEST_P(EveryMethod, EveryFormulaRendersWithoutAnInternalError) {
     scene.formula = text;
     scene.render.tracing.method = GetParam();
     scene.octree.level = 2;
-    auto prepared = app::prepareSurface(scene);
+    auto prepared = prepareSurface(scene);
     if (auto* message = std::get_if<std::string>(&prepared)) {
       EXPECT_EQ(message->find("internal error"), std::string::npos) << *message;
       continue;
     }
-    const app::PreparedSurface& surface = std::get<app::PreparedSurface>(prepared);
+    const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
     RayTracer tracer;
-    const std::string loaded = app::loadSurface(tracer, surface);
+    const std::string loaded = loadSurface(tracer, surface);
     ASSERT_EQ(loaded, "");
     const Frame frame = tracer.render(scene.render, scene.domain, 8, 8);
     EXPECT_EQ(frame.error, "");

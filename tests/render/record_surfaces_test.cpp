@@ -13,8 +13,8 @@
 #include <variant>
 #include <vector>
 
-#include "app/load_surface.hpp"
-#include "app/pipeline.hpp"
+#include "pipeline/load_surface.hpp"
+#include "pipeline/pipeline.hpp"
 #include "app/scene_args.hpp"
 #include "reference_comparison.hpp"
 #include "render_support.hpp"
@@ -43,13 +43,13 @@ TEST_P(RecordSurfaces, NoPixelWithoutSurfaceAndNoneMissing) {
   ASSERT_TRUE(scene);
   if (record.boxOfBall) scene->domain = test::boxOfBall(scene->domain);
   scene->render.samples = 1;
-  auto prepared = app::prepareSurface(*scene, false);
-  ASSERT_TRUE(std::holds_alternative<app::PreparedSurface>(prepared))
+  auto prepared = prepareSurface(*scene, {.validate = false});
+  ASSERT_TRUE(std::holds_alternative<PreparedSurface>(prepared))
       << std::get<std::string>(prepared);
-  const app::PreparedSurface& surface = std::get<app::PreparedSurface>(prepared);
+  const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
   ASSERT_EQ(surface.method, TracingMethod::Bernstein) << surface.methodWarning;
   auto tracer = std::make_unique<RayTracer>();
-  ASSERT_EQ(app::loadSurface(*tracer, surface), "");
+  ASSERT_EQ(loadSurface(*tracer, surface), "");
   const int size = record.size;
   const Frame frame = tracer->render(scene->render, scene->domain, size, size);
   ASSERT_EQ(frame.error, "");

@@ -14,8 +14,8 @@
 #include <variant>
 #include <vector>
 
-#include "app/load_surface.hpp"
-#include "app/pipeline.hpp"
+#include "pipeline/load_surface.hpp"
+#include "pipeline/pipeline.hpp"
 #include "app/scene_args.hpp"
 #include "reference_comparison.hpp"
 
@@ -46,13 +46,13 @@ int run(int argc, char** argv) {
     Scene scene = std::move(*loaded);
     if (box) scene.domain = test::boxOfBall(scene.domain);
     scene.render.samples = 1;  // the depth of the pixel's centre ray
-    auto prepared = app::prepareSurface(scene, false);
+    auto prepared = prepareSurface(scene, {.validate = false});
     if (auto* e = std::get_if<std::string>(&prepared)) {
       std::fprintf(stderr, "%s: %s", path.c_str(), e->c_str());
       return 1;
     }
-    const app::PreparedSurface& surface = std::get<app::PreparedSurface>(prepared);
-    app::HeadlessTracer gl = app::openHeadlessTracer(Backend::Egl, surface);
+    const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
+    HeadlessTracer gl = openHeadlessTracer(Backend::Egl, surface);
     if (!gl.tracer) return 1;
     const Frame frame = gl.tracer->render(scene.render, scene.domain, size, size);
     if (!frame.error.empty()) {

@@ -58,7 +58,7 @@ Domain boxOfBall(const Domain& ball) {
   return box;
 }
 
-ReferenceCounts compareWithReference(const Scene& scene, const app::PreparedSurface& surface,
+ReferenceCounts compareWithReference(const Scene& scene, const PreparedSurface& surface,
                                      const Frame& frame, int size) {
   const Formula& formula = surface.formula;
   const Tape tape = compileTape(formula.graph, {formula.root});

@@ -7,7 +7,7 @@
 // a root within the tangent tolerance (or tracing.epsilon) of the point drawn.
 #include <string>
 
-#include "app/pipeline.hpp"
+#include "pipeline/pipeline.hpp"
 #include "render/ray_tracer.hpp"
 #include "scene/scene.hpp"
 
@@ -22,7 +22,7 @@ struct ReferenceCounts {
 };
 
 // `frame` is `surface` traced at size x size with `scene`'s camera and domain.
-ReferenceCounts compareWithReference(const Scene& scene, const app::PreparedSurface& surface,
+ReferenceCounts compareWithReference(const Scene& scene, const PreparedSurface& surface,
                                      const Frame& frame, int size);
 
 // SURFER's framing of a scene whose domain is a ball: the box of the same half-width, which

@@ -5,13 +5,9 @@
 #include <map>
 #include <variant>
 
-#include "codegen/emit_glsl.hpp"
-#include "codegen/emit_hessian.hpp"
-#include "expr/derivative.hpp"
-#include "codegen/shader_assembly.hpp"
-#include "interval/octree.hpp"
-#include "interval/sphere_builder.hpp"
 #include "parser/parser.hpp"
+#include "pipeline/load_surface.hpp"
+#include "pipeline/pipeline.hpp"
 
 namespace zs::test {
 
@@ -29,50 +25,42 @@ GlContext* context(Backend backend, std::string& error) {
 }
 
 std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& error) {
+  // The scene the spec describes, traced by the app's own pipeline (pipeline/pipeline.hpp).
+  Scene scene;
+  scene.formula = spec.formula;
+  scene.domain = spec.domain;
+  scene.octree.level = spec.octreeLevel;
+  scene.octree.criteria = spec.criteria;
+  scene.render.tracing.method = spec.method;
+  // The parameters come by position: their names are the formula's, in the graph's order.
   ParseResult parsed = parseFormula(spec.formula);
   if (auto* e = std::get_if<ParseError>(&parsed)) {
     error = formatError(spec.formula, *e);
     return nullptr;
   }
-  Formula formula = std::get<Formula>(std::move(parsed));
-  Box box{spec.domain.min, spec.domain.max};
-  OctreeSettings octree;
-  octree.level = spec.octreeLevel;
-  octree.criteria = spec.criteria;
-  OctreeResult tree = buildOctree(formula, spec.params, box, octree);
-  if (auto* e = std::get_if<OctreeError>(&tree)) {
-    error = e->message;
+  const std::vector<std::string>& names = std::get<Formula>(parsed).graph.params();
+  for (std::size_t i = 0; i < names.size() && i < spec.params.size(); ++i)
+    scene.params.emplace_back(names[i], spec.params[i]);
+  // The Hessian is emitted for the colorings that show curvature; the coloring itself is
+  // the render settings' (a variant of the same program).
+  if (spec.hessian) scene.render.shading.color = ColorMode::Gauss;
+  PrepareOptions options;
+  options.validate = false;  // the driver compiles it anyway; glslang has tests of its own
+  options.bernsteinAboveLimit = spec.method == TracingMethod::Bernstein;
+  if (!spec.markers.empty()) {
+    scene.render.singular.enabled = true;
+    scene.render.singular.threshold = spec.markerRadius;
+    scene.render.singular.color = spec.markerColor;
+    options.markedPoints = spec.markers;
+  }
+  auto prepared = prepareSurface(scene, options);
+  if (auto* message = std::get_if<std::string>(&prepared)) {
+    error = *message;
     return nullptr;
   }
-  const std::vector<float> packed = buildSphereHierarchy(std::get<Octree>(tree)).packed();
-  const std::array<NodeId, 3> grad = gradient(formula.graph, formula.root);
-  GlslFormula glsl = emitFormulaGlsl(formula.graph, formula.root, grad);
-  if (spec.hessian) glsl.source += emitHessianGlsl(formula.graph, grad);
-  // Auto: the method the app would pick (app/pipeline.cpp resolveMethod), without its
-  // warnings: Bernstein for polynomials up to the degree limit, interval otherwise. Bernstein
-  // is taken for any polynomial, above the degree limit too, so tests can measure where that
-  // limit lies.
-  const std::optional<int> degree = rayPolynomialDegree(formula.graph, formula.root);
-  const bool bernstein = degree && (spec.method == TracingMethod::Bernstein ||
-                                    (spec.method == TracingMethod::Auto && *degree <= kMaxBernsteinDegree));
-  const std::string markers = markerBlock(spec.markers, spec.markerRadius, spec.markerColor);
-  const bool interval = !bernstein && spec.method != TracingMethod::Sampling;
-  std::string fragment;
-  if (bernstein) {
-    fragment = assembleFragmentShader(glsl, *emitRayPolynomialGlsl(formula.graph, formula.root),
-                                      markers);
-  } else if (interval) {
-    fragment = assembleFragmentShader(glsl, emitIntervalGlsl(formula.graph, formula.root),
-                                      markers);
-  } else {
-    fragment = assembleFragmentShader(glsl, markers);
-  }
   auto tracer = std::make_unique<RayTracer>();
-  if (!tracer->build(vertexShaderSource(), fragment, error)) return nullptr;
-  if (error = tracer->setHierarchy(packed); !error.empty()) return nullptr;
-
-  std::vector<float> params(spec.params.begin(), spec.params.end());
-  tracer->setParams(params);
+  if (error = loadSurface(*tracer, std::get<PreparedSurface>(prepared)); !error.empty())
+    return nullptr;
   return tracer;
 }
 

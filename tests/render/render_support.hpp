@@ -1,8 +1,8 @@
 #pragma once
-// Shared by the render tests: a GL context per backend (created once per process), the
-// real pipeline from formula text to a ready RayTracer (parser -> gradient -> GLSL ->
-// octree -> hierarchy), and reference-image comparison with ZS_UPDATE_REFERENCE=1 to
-// regenerate the PNGs under tests/render/reference.
+// Shared by the render tests: a GL context per backend (created once per process), a ready
+// RayTracer for a formula made by the app's own pipeline (pipeline/pipeline.hpp: what users
+// get), and reference-image comparison with ZS_UPDATE_REFERENCE=1 to regenerate the PNGs
+// under tests/render/reference.
 #include <array>
 #include <functional>
 #include <memory>

@@ -42,17 +42,17 @@ std::string timedDraw(RayTracer& tracer, const Scene& scene, double& ms) {
 // Everything a user waits for after typing a formula, on a context and ray tracer that
 // already exist (the viewer's situation). `prepared` keeps the CPU results for reuse.
 FirstFrame measureFirstFrame(int number, const Scene& scene, RayTracer& tracer,
-                             std::optional<app::PreparedSurface>& prepared) {
+                             std::optional<PreparedSurface>& prepared) {
   FirstFrame ff;
   ff.surface = number;
   ff.method = scene.render.tracing.method;
   const auto start = Clock::now();
-  auto result = app::prepareSurface(scene);
+  auto result = prepareSurface(scene);
   if (auto* err = std::get_if<std::string>(&result)) {
     ff.error = *err;
     return ff;
   }
-  prepared = std::get<app::PreparedSurface>(std::move(result));
+  prepared = std::get<PreparedSurface>(std::move(result));
   ff.method = prepared->method;
   ff.cpu = prepared->times;
   auto t = Clock::now();
@@ -73,17 +73,17 @@ FirstFrame measureFirstFrame(int number, const Scene& scene, RayTracer& tracer,
 }
 
 // Builds the octree and sphere hierarchy of one level and hands them to the tracer.
-std::string loadLevel(const app::PreparedSurface& surface, Scene& scene, int level,
+std::string loadLevel(const PreparedSurface& surface, Scene& scene, int level,
                       RayTracer& tracer, ConfigResult& info) {
   scene.octree.level = level;
   const auto start = Clock::now();
   OctreeResult tree =
-      buildOctree(surface.formula, surface.params, app::toBox(scene.domain), scene.octree,
-                  app::toBall(scene.domain));
+      buildOctree(surface.formula, surface.params, toBox(scene.domain), scene.octree,
+                  toBall(scene.domain));
   if (auto* err = std::get_if<OctreeError>(&tree)) return err->message;
   const Octree& octree = std::get<Octree>(tree);
   const SphereHierarchy hierarchy =
-      app::tracingHierarchy(surface.formula, surface.params, octree, surface.method);
+      tracingHierarchy(surface.formula, surface.params, octree, surface.method);
   info.octreeMs = msSince(start);
   info.leaves = octree.leaves.size();
   info.spheres = hierarchy.nodes.size();
@@ -108,7 +108,7 @@ FrameStats timeFrames(RayTracer& tracer, const Scene& scene, const BenchOptions&
 }
 
 // Times every configuration of one surface, building each octree level once.
-void benchSurface(const app::PreparedSurface& surface, Scene scene,
+void benchSurface(const PreparedSurface& surface, Scene scene,
                   const std::vector<BenchConfig>& configs, const BenchOptions& options,
                   RayTracer& tracer, BenchResults& out, std::size_t& done, std::size_t total) {
   ConfigResult levelInfo;
@@ -165,7 +165,7 @@ std::unique_ptr<GlContext> openBenchContext(const BenchOptions& options,
 // One-time driver start-up (LLVM initialisation, the vertex stage, the render target) is
 // paid once per process, not per formula: pay it on a sphere nobody measures.
 void payDriverStartUp(RayTracer& tracer, const BenchOptions& options) {
-  std::optional<app::PreparedSurface> unused;
+  std::optional<PreparedSurface> unused;
   measureFirstFrame(0, sceneFor("x^2 + y^2 + z^2 - 1", options), tracer, unused);
 }
 
@@ -203,7 +203,7 @@ BenchResults runBench(const BenchOptions& options, const std::vector<BenchConfig
       if (configs.empty()) continue;
       Scene scene = sceneFor(surface.formula, options);
       scene.render.tracing.method = method;
-      std::optional<app::PreparedSurface> prepared;
+      std::optional<PreparedSurface> prepared;
       FirstFrame ff = measureFirstFrame(surface.number, scene, tracer, prepared);
       if (ff.error.empty() && ff.method != method) ff.error = prepared->methodWarning;
       results.firstFrames.push_back(ff);
@@ -248,7 +248,7 @@ InputBenchResults runInputBench(const Scene& input, const BenchOptions& options)
     scene.height = options.height;
     scene.render.tracing.method = method;
     std::fprintf(stderr, "bench: %s, first frame...\n", tracingMethodName(method));
-    std::optional<app::PreparedSurface> prepared;
+    std::optional<PreparedSurface> prepared;
     r.first = measureFirstFrame(0, scene, tracer, prepared);
     if (!r.first.error.empty()) {
       r.error = r.first.error;

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "app/bench/bench_plan.hpp"
-#include "app/pipeline.hpp"
+#include "pipeline/pipeline.hpp"
 #include "scene/scene.hpp"
 
 namespace zs::bench {
@@ -21,7 +21,7 @@ namespace zs::bench {
 struct FirstFrame {
   int surface = 0;
   TracingMethod method = TracingMethod::Sampling;  // as resolved for the formula
-  app::StageTimes cpu;  // parse (+ gradient), octree (+ spheres), codegen, glslang
+  StageTimes cpu;  // parse (+ gradient), octree (+ spheres), codegen, glslang
   double glCompileMs = 0;
   double firstDrawMs = 0;
   double totalMs = 0;   // wall time of all of the above, end to end

@@ -2,7 +2,7 @@
 
 #include <variant>
 
-#include "app/load_surface.hpp"
+#include "pipeline/load_surface.hpp"
 #include "app/repl/scene_edit.hpp"
 #include "render/image.hpp"
 

@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-#include "app/pipeline.hpp"
+#include "pipeline/pipeline.hpp"
 #include "app/repl/command.hpp"
 #include "render/gl_context.hpp"
 #include "render/ray_tracer.hpp"

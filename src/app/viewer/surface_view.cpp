@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <chrono>
 
-#include "app/load_surface.hpp"
+#include "pipeline/load_surface.hpp"
 
 namespace zs::app {
 

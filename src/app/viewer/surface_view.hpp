@@ -9,7 +9,7 @@
 #include <span>
 #include <string>
 
-#include "app/pipeline.hpp"
+#include "pipeline/pipeline.hpp"
 #include "render/ray_tracer.hpp"
 
 namespace zs::app {

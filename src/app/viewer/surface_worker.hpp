@@ -14,7 +14,7 @@
 #include <thread>
 #include <variant>
 
-#include "app/pipeline.hpp"
+#include "pipeline/pipeline.hpp"
 #include "scene/scene.hpp"
 
 namespace zs::app {

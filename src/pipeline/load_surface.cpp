@@ -1,8 +1,8 @@
-#include "app/load_surface.hpp"
+#include "pipeline/load_surface.hpp"
 
 #include <iostream>
 
-namespace zs::app {
+namespace zs {
 
 std::string loadSurface(RayTracer& tracer, const PreparedSurface& surface) {
   std::string log;
@@ -29,4 +29,4 @@ HeadlessTracer openHeadlessTracer(Backend backend, const PreparedSurface& surfac
   return out;
 }
 
-}  // namespace zs::app
+}  // namespace zs

@@ -1,4 +1,4 @@
-#include "app/pipeline.hpp"
+#include "pipeline/pipeline.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -14,7 +14,7 @@
 #include "scene/scene_io.hpp"
 #include "singular/singular.hpp"
 
-namespace zs::app {
+namespace zs {
 
 namespace {
 
@@ -108,7 +108,8 @@ std::string constantFormulaNote(const Formula& formula, std::span<const double> 
 
 }  // namespace
 
-std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bool validate) {
+std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
+                                                          const PrepareOptions& options) {
   PreparedSurface s;
   auto t = std::chrono::steady_clock::now();
   ParseResult parsed = parseFormula(scene.formula);
@@ -125,6 +126,11 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bo
   if (auto* err = std::get_if<OctreeError>(&tree)) return "error: " + err->message + "\n";
   s.octree = std::get<Octree>(std::move(tree));
   s.method = resolveMethod(scene.render.tracing.method, s.formula, s.methodWarning);
+  if (options.bernsteinAboveLimit && scene.render.tracing.method == TracingMethod::Bernstein &&
+      rayPolynomialDegree(s.formula.graph, s.formula.root)) {
+    s.method = TracingMethod::Bernstein;
+    s.methodWarning.clear();
+  }
   s.hierarchy = tracingHierarchy(s.formula, s.params, s.octree, s.method);
   s.times.octreeMs = msSince(t);
 
@@ -135,7 +141,8 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bo
     s.glsl.source += emitHessianGlsl(s.formula.graph, s.gradient);
   std::string markers;
   if (scene.render.singular.enabled) {
-    findMarkedPoints(scene, s);
+    if (options.markedPoints) s.singularPoints = *options.markedPoints;
+    else findMarkedPoints(scene, s);
     markers = markerBlock(s.singularPoints, scene.render.singular.threshold,
                           scene.render.singular.color);
   }
@@ -151,7 +158,7 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bo
   s.vertexShader = std::string(vertexShaderSource());
   s.times.codegenMs = msSince(t);
 
-  if (validate) {
+  if (options.validate) {
     t = std::chrono::steady_clock::now();
     const ValidationResult vert = validateGlsl(s.vertexShader, Stage::Vertex);
     if (!vert.ok) return formatInternalShaderError("vertex shader", vert);
@@ -162,4 +169,4 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bo
   return s;
 }
 
-}  // namespace zs::app
+}  // namespace zs

@@ -1,7 +1,9 @@
 #pragma once
 // The CPU half of zeroset, end to end: takes a Scene, puts out everything the GPU half needs
 // (the packed sphere hierarchy, the parameter values, the shader text validated by glslang)
-// with the time each stage took. Used by every command that shows a surface; no GL here.
+// with the time each stage took. The one pipeline of every front end (the commands, the
+// viewer, the prompt), the tests and the benchmarks; load_surface.hpp hands its result to
+// a tracer. No GL here.
 #include <array>
 #include <optional>
 #include <span>
@@ -15,7 +17,7 @@
 #include "interval/octree.hpp"
 #include "scene/scene.hpp"
 
-namespace zs::app {
+namespace zs {
 
 struct StageTimes {
   double parseMs = 0, octreeMs = 0, codegenMs = 0, validateMs = 0;
@@ -60,8 +62,18 @@ TracingMethod resolveMethod(TracingMethod asked, const Formula& formula, std::st
 SphereHierarchy tracingHierarchy(const Formula& formula, std::span<const double> params,
                                  const Octree& octree, TracingMethod method);
 
-// Error text is ready to print (caret formatting, octree budget messages, or an internal
-// shader error that names itself a bug). `validate` runs glslang on the assembled shaders.
-std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene, bool validate = true);
+struct PrepareOptions {
+  bool validate = true;  // run glslang on the assembled shaders
+  // With highlights.singular on: mark these points instead of searching for singular points.
+  std::optional<std::vector<std::array<double, 3>>> markedPoints;
+  // Bernstein for a polynomial of any degree when "bernstein" is asked for, above
+  // kMaxBernsteinDegree too (which measures where that limit lies); the commands never set it.
+  bool bernsteinAboveLimit = false;
+};
 
-}  // namespace zs::app
+// Error text is ready to print (caret formatting, octree budget messages, or an internal
+// shader error that names itself a bug).
+std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
+                                                          const PrepareOptions& options = {});
+
+}  // namespace zs

@@ -5,11 +5,11 @@
 #include <memory>
 #include <string>
 
-#include "app/pipeline.hpp"
+#include "pipeline/pipeline.hpp"
 #include "render/gl_context.hpp"
 #include "render/ray_tracer.hpp"
 
-namespace zs::app {
+namespace zs {
 
 // "" on success; otherwise text ready to print (the driver's log, or "error: ...").
 std::string loadSurface(RayTracer& tracer, const PreparedSurface& surface);
@@ -25,4 +25,4 @@ struct HeadlessTracer {
 // Null members after printing why (and a hint) to stderr.
 HeadlessTracer openHeadlessTracer(Backend backend, const PreparedSurface& surface);
 
-}  // namespace zs::app
+}  // namespace zs
