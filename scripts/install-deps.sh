@@ -15,6 +15,8 @@ packages=(
   libpng-dev libimgui-dev libcli11-dev libtomlplusplus-dev libedit-dev
   libgtest-dev libgmock-dev libbenchmark-dev libmpfi-dev libmpfr-dev libgmp-dev
   xvfb xauth xdotool
+  # the viewer's font (src/app/viewer/fonts.cpp)
+  fonts-dejavu-core
   # the mesh tests (tests/mesh): an independent check of the STL files
   admesh
   # the install tests (tests/install): man -l on the installed page

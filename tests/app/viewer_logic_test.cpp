@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <GLFW/glfw3.h>
+#include <imgui.h>
 
 #include <cmath>
 #include <set>
@@ -12,6 +13,7 @@
 #include "app/repl/scene_edit.hpp"
 #include "app/viewer/arcball.hpp"
 #include "app/viewer/examples.hpp"
+#include "app/viewer/fonts.hpp"
 #include "app/viewer/key_bindings.hpp"
 #include "process.hpp"
 #include "render/camera.hpp"
@@ -149,6 +151,21 @@ TEST(Examples, WithoutFilesTheThesisSurfacesAreBuiltIn) {
   auto broken = loadExample(files[2]);
   ASSERT_TRUE(std::holds_alternative<std::string>(broken));
   EXPECT_NE(std::get<std::string>(broken).find("broken.surf:1:"), std::string::npos);
+}
+
+TEST(ViewerFont, EveryGallerySymbolHasAGlyphAtTheScreensScale) {
+  ASSERT_NE(findViewerFont(), "") << "fonts-dejavu-core is a dependency (install-deps.sh)";
+  ImGui::CreateContext();
+  ASSERT_EQ(loadViewerFont(2.0f), "");
+  ImGuiIO& io = ImGui::GetIO();
+  ASSERT_TRUE(io.Fonts->Build());
+  const ImFont* font = io.FontDefault;
+  ASSERT_NE(font, nullptr);
+  EXPECT_FLOAT_EQ(font->FontSize, 2.0f * kViewerFontSize);  // a 2x (high-DPI) screen
+  // "Cross channel (thesis surface 1) — degree 2", x², α, ≤, ∇: what the gallery writes.
+  for (ImWchar c : {0x2014, 0x00B2, 0x00B3, 0x03B1, 0x2264, 0x2207, 0x2080})
+    EXPECT_NE(font->FindGlyphNoFallback(c), nullptr) << "U+" << std::hex << int(c);
+  ImGui::DestroyContext();
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "app/viewer/fonts.hpp"
 
 namespace zs::app {
 namespace {
@@ -41,6 +42,10 @@ std::unique_ptr<Viewer> Viewer::open(const ViewerOptions& options, std::string& 
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // never drop an imgui.ini into the user's folder
   ImGui::StyleColorsDark();
+  float scaleX = 1, scaleY = 1;
+  glfwGetWindowContentScale(v->window_->window(), &scaleX, &scaleY);
+  if (std::string why = loadViewerFont(std::max(scaleX, scaleY)); !why.empty())
+    std::fprintf(stderr, "note: %s\n", why.c_str());
   v->installCallbacks();  // first, so ImGui's callbacks chain to ours
   ImGui_ImplGlfw_InitForOpenGL(v->window_->window(), true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
