@@ -6,10 +6,10 @@
 //   odd:  the next 8 bytes seed the random formula generator (tests/support) and the byte
 //         after them picks its depth and parameter count: always-valid formulas, where a
 //         parse error is a generator bug and aborts too.
-// The shader validated is the prelude, the formula block, the interval prelude and block,
-// and a minimal main() that calls zs_F, zs_FGrad and zs_FInterval: the real ray tracer adds
-// ~5 ms of glslang time per input without touching generated code (the ctest validates it
-// with the real templates).
+// The shaders validated are the real fragment shaders of every method that applies, as the
+// app assembles them: sampling, interval (the affine block zs_FAffine), and Bernstein (the
+// ray polynomial) for polynomials, constants included. glslang takes a few milliseconds per
+// shader, so this target runs some 50-100 inputs a second.
 #include <array>
 #include <cstdint>
 #include <cstdio>
@@ -20,6 +20,8 @@
 #include <variant>
 
 #include "codegen/emit_glsl.hpp"
+#include "codegen/emit_interval_glsl.hpp"
+#include "codegen/emit_ray_polynomial.hpp"
 #include "codegen/glsl_validation.hpp"
 #include "codegen/shader_assembly.hpp"
 #include "expr/derivative.hpp"
@@ -42,20 +44,13 @@ std::string fromGenerator(const std::uint8_t* data, std::size_t size) {
   return zs::test::randomFormula(rng, options);
 }
 
-std::string testShader(const zs::GlslFormula& formula, const zs::IntervalGlsl& interval) {
-  std::string s(zs::shaderTemplate(zs::kPreludeTemplate));
-  s += "#line 1 1\n" + formula.source;
-  s += "#line 1 2\n" + std::string(zs::shaderTemplate(zs::kIntervalPreludeTemplate));
-  s += "#line 1 3\n" + interval.source;
-  s += "#line 1 4\nout vec4 zs_color;\n"
-       "void main() {\n"
-       "  vec3 p = gl_FragCoord.xyz;\n"
-       "  vec2 F, D;\n"
-       "  bool partial;\n"
-       "  zs_FInterval(p.xx, p.yy, p.zz, vec3(1.0), F, D, partial);\n"
-       "  zs_color = zs_FGrad(p) + vec4(zs_F(p)) + vec4(F, partial ? D : -D);\n"
-       "}\n";
-  return s;
+// Aborts with the internal-error report when glslang rejects `shader`.
+void expectValid(const std::string& text, const std::string& what, const std::string& shader) {
+  const zs::ValidationResult result = zs::validateGlsl(shader, zs::Stage::Fragment);
+  if (result.ok) return;
+  std::fprintf(stderr, "formula: %s\n%s\n", text.c_str(),
+               zs::formatInternalShaderError(what, result).c_str());
+  std::abort();
 }
 
 }  // namespace
@@ -76,13 +71,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   zs::Formula& formula = std::get<zs::Formula>(parsed);
   const std::array<zs::NodeId, 3> grad = zs::gradient(formula.graph, formula.root);
   const zs::GlslFormula glsl = zs::emitFormulaGlsl(formula.graph, formula.root, grad);
-  const zs::IntervalGlsl interval = zs::emitIntervalGlsl(formula.graph, formula.root);
-  const zs::ValidationResult result =
-      zs::validateGlsl(testShader(glsl, interval), zs::Stage::Fragment);
-  if (!result.ok) {
-    std::fprintf(stderr, "formula: %s\n%s\n", text.c_str(),
-                 zs::formatInternalShaderError("fragment shader", result).c_str());
-    std::abort();
-  }
+  expectValid(text, "sampling fragment shader", zs::assembleFragmentShader(glsl));
+  expectValid(text, "interval fragment shader",
+              zs::assembleFragmentShader(glsl, zs::emitIntervalGlsl(formula.graph, formula.root)));
+  if (auto poly = zs::emitRayPolynomialGlsl(formula.graph, formula.root))
+    expectValid(text, "Bernstein fragment shader", zs::assembleFragmentShader(glsl, *poly));
   return 0;
 }

@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "codegen/body_writer.hpp"
-#include "codegen/glsl_literal.hpp"
 #include "expr/degree.hpp"
 
 namespace zs {
@@ -15,13 +14,8 @@ using Coeffs = std::vector<std::string>;  // GLSL names of c_0 .. c_k
 
 std::string idx(const std::string& array, int i) { return array + "[" + std::to_string(i) + "]"; }
 
-// A negative literal is parenthesized: "a * -2.0" is fine, "a - -2.0" lexes as a decrement.
-std::string literal(double v) {
-  const GlslLiteral lit = glslFloatLiteral(v);
-  return lit.text.starts_with('-') ? "(" + lit.text + ")" : lit.text;
-}
-
-// A double literal with every digit a double has (the matrix entries of the double path).
+// A double literal with every digit a double has (the conversion matrix's entries); a
+// negative one is parenthesized: "a * -2.0" is fine, "a - -2.0" lexes as a decrement.
 std::string doubleLiteral(double v) {
   char text[40];
   std::snprintf(text, sizeof text, "%.17glf", v);
