@@ -22,8 +22,8 @@
 // So a chain of k such operations is exact to within k (2 ZSI_REL) m (2 ZSI_REL = 8u covers
 // the at most 6 float operations deep of one affine product), and zsa_settle adds that to r
 // once: the emitter settles a form before any other rule reads it and at the end (F and
-// dF/dt), with k the longest chain since the last settling. Widening every operation cost
-// about 9 % of a gyroid frame (3.5 ms of 38 on llvmpipe). The other rules take settled
+// dF/dt), with k the longest chain since the last settling, which is far cheaper than
+// widening every operation (docs/codegen.md). The other rules take settled
 // operands and return settled results: r widened by ZSI_REL of the magnitudes that were
 // rounded (twice that for the Taylor forms), plus FLT_MIN; function values and slopes carry
 // the built-in functions' margins. An operation without a first-order rule, or whose
@@ -118,7 +118,7 @@ vec4 zsa_sqr(vec4 a) {
 // stretch the interval's range is narrower than the form's |s| + r by the curvature alone,
 // and taking it threw the slope away (sqrt(x^2 + y^2 + z^2) along a ray lost its slope on
 // every segment), and with it the tracer's clipping to the zero window and its growth
-// prediction: the bumpy sphere took 16 % longer, the metaballs 12 % (docs/PERFORMANCE.md).
+// prediction, which made the walk markedly slower.
 vec4 zsa_tighter(vec4 A, vec2 I) {
   return (A.z <= (I.y - I.x)) ? A : zsa_fromInterval(I);
 }

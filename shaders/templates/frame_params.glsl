@@ -5,7 +5,7 @@
 // reads a uniform in a fragment shader with
 // an 8-lane gather and a bounds check per lane (about 20 instructions) at every use, in
 // every pass of every loop, while a flat input is interpolated once per group of pixels.
-// That alone made frames 20-35 % faster (docs/renderer.md). shader_assembly.cpp puts this
+// That is a large part of a frame (docs/renderer.md). shader_assembly.cpp puts this
 // file into both stages, with RT_FRAME_STORAGE defined as `out` and as `in`; bools travel
 // as ints (GLSL has no bool varyings), so their uniforms are ints too. One member per line.
 RT_FRAME_STORAGE RtFrame {

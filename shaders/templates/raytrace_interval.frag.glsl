@@ -44,8 +44,9 @@
 
 const int RT_MAX_STEPS = 256;  // safety bound on isolation + refinement steps per segment
 // The next segment after one without root: the predicted growth (below) times this, at most
-// RT_GROWTH_MAX, at least rtGrowth. Half the prediction was best on the gyroid (-1 to -2 %;
-// the whole prediction +10 %, the maximum 4 or 16 no better); the others did not change.
+// RT_GROWTH_MAX, at least rtGrowth. Half the prediction, because a segment that grows too far
+// fails to clear and is split again, which costs more than the step it would save
+// (docs/renderer.md, "The interval method", 2.).
 const float RT_GROWTH_TRUST = 0.5, RT_GROWTH_MAX = 8.0;
 
 // The half-width h of t = tm + h tau, tau in [-1, 1], that covers [t0, t1] as rounded

@@ -162,8 +162,8 @@ void main() {
         passAlpha = 1.0; passScale = alpha * (1.0 - w); wanted = 1;
         rtFirstSegment = firstW;
         // A reflection ray mostly leaves the surface through empty space: segments twice as
-        // long each time took fewer steps (bumpy sphere -4 %, metaballs -5 %, gyroid -2 %,
-        // Schwarz P the same); for primary rays 1.5 is best (docs/PERFORMANCE.md).
+        // long each time take fewer steps there; primary rays, which mostly approach the
+        // surface, grow by 1.5.
         rtGrowth = 2.0;
       }
       float hitT[RT_MAX_HITS];

@@ -1,8 +1,9 @@
 #version 330 core
-// zeroset fragment shader, piece 1 of 3: the prelude (owned by src/codegen; the contract is
-// in docs/codegen.md). Piece 2, the formula block, is generated from the formula and defines
-// zs_F and zs_FGrad; piece 3, raytrace_main.frag.glsl, traces rays and calls them through
-// the prototypes below. Everything here is named zs_*, the formula block uses zs_* and t<N>.
+// zeroset fragment shader, its first piece: the prelude (owned by src/codegen; the contract
+// and the list of every piece are in docs/codegen.md). The next piece, the formula block, is
+// generated from the formula and defines zs_F and zs_FGrad; raytrace_main.frag.glsl, later,
+// traces rays and calls them through the prototypes below. Everything here is named zs_*,
+// the formula block uses zs_* and t<N>.
 
 // F at p, or zs_UNDEFINED where p lies outside F's domain (sqrt of a negative number, ...).
 // Defined values are clamped to [-zs_HUGE, zs_HUGE], so they never reach the sentinel.

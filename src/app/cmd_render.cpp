@@ -65,8 +65,8 @@ int runRender(const RenderArgs& args) {
 
   // One frame: on llvmpipe the JIT compile of the shader costs more than the frame unless
   // the image is large. Without LLVM's optimization passes the JIT takes about half as long
-  // (x^4+y^4+z^4-1 at 800x600: 139 -> 65 ms) and the frame about 22 % longer (12.5 ->
-  // 15.2 ms), so below ~12 megapixels of rays the picture is ready sooner (docs/renderer.md).
+  // and the frame a fifth longer, so below some 8 megapixels of rays the picture is ready
+  // sooner that way (docs/renderer.md has the measurement).
   // Mesa reads this once, when the driver starts; a value the user set is kept. Other
   // drivers ignore it.
   const double rays = double(scene->width) * scene->height * scene->render.samples *

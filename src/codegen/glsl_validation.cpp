@@ -79,7 +79,7 @@ ValidationResult validateGlsl(std::string_view source, Stage stage) {
   result.numberedSource = numberSourceLines(source);
 
   // No setEnv* calls: with an OpenGL client glslang applies SPIR-V-for-GL rules and rejects
-  // valid desktop GLSL (docs/toolchain.md). Cascading errors: report all of them.
+  // valid desktop GLSL. Cascading errors: report all of them.
   const EShLanguage language = toGlslang(stage);
   glslang::TShader shader(language);
   const char* text = source.data();

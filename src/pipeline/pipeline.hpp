@@ -71,6 +71,13 @@ struct PrepareOptions {
   bool bernsteinAboveLimit = false;
 };
 
+// For callers that validate elsewhere or not at all (the driver compiles the shader anyway).
+inline const PrepareOptions kWithoutGlslang = [] {
+  PrepareOptions o;
+  o.validate = false;
+  return o;
+}();
+
 // Error text is ready to print (caret formatting, octree budget messages, or an internal
 // shader error that names itself a bug).
 std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,

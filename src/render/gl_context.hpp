@@ -4,7 +4,7 @@
 // default, renders into FBOs only), OSMesa (core profile, software only) and a GLFW window
 // (glfw_context.hpp, for the viewer). Every makeCurrent() reloads the glad function
 // pointers from that context's own get-proc-address, because libOSMesa and libOpenGL both
-// export gl* symbols and whichever the linker picked may be the wrong one (toolchain.md).
+// export gl* symbols and whichever the linker picked may be the wrong one.
 // Creation never aborts: failures come back as an error string.
 #include <memory>
 #include <string>

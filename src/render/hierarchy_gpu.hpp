@@ -7,7 +7,7 @@
 //   x = qmin.x | qmin.y << 16,  y = qmin.z | qmax.x << 16,  z = qmax.y | qmax.z << 16,
 //   w = escape << 1 | isLeaf.
 // Why: on llvmpipe each dependent texelFetch costs about as much as a dozen evaluations of
-// a quartic (toolchain.md) and the traversal is fetch-bound; one texel instead of three
+// a quartic (docs/renderer.md) and the traversal is fetch-bound; one texel instead of three
 // per visited node. The sphere is not uploaded: the box is a tighter bound than its
 // circumscribed sphere and its slab test costs the same arithmetic.
 // Why 2^14 and not 2^15: Mesa 22.3 llvmpipe returned 0x7FFFFFFF for RGBA32UI buffer texels

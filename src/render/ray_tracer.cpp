@@ -212,9 +212,9 @@ void RayTracer::markClearTiles(int width, int height) {
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
   glReadPixels(0, 0, beamWidth_, beamHeight_, GL_RG, GL_FLOAT, beam.data());
   glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(bound));
-  // Marking and the stencil test cost about 0.8 ms at 800 x 600 on llvmpipe (the gyroid,
-  // whose beam clears 24 tiles of 7500, took that much longer): worth it only where the
-  // tiles skipped save more (the bumpy sphere clears about 40 %).
+  // Marking and the stencil test have a cost of their own (docs/renderer.md, "The interval
+  // method", 7.): worth it only where the tiles skipped save more, which takes a share of
+  // clear tiles.
   std::size_t clear = 0;
   for (std::size_t k = 0; k < beam.size(); k += 2) clear += beamTileIsClear(beam[k]);
   if (clear * kSkipShare < beam.size() / 2) return;  // no stencil test either

@@ -110,7 +110,7 @@ TEST(BenchReport, MarkdownPutsOursBesideTheThesisAndJudgesTheGoals) {
   EXPECT_NE(md.find("3 of 3 - **met**"), std::string::npos) << md;
   // The first frame a user waits for is the default method's (200 ms here).
   EXPECT_NE(md.find("First frame <= 300 ms (issue 7): 1 of 1 surfaces - **met**; <= 150 ms "
-                    "(docs/targets.md): 0 of 1"),
+                    "(goal): 0 of 1"),
             std::string::npos) << md;
   EXPECT_NE(md.find("| 1 | sampling | 0.00 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| 92 |"), std::string::npos);  // JIT estimate: 100 - 8 ms (sampling)

@@ -43,7 +43,7 @@ TEST_P(RecordSurfaces, NoPixelWithoutSurfaceAndNoneMissing) {
   ASSERT_TRUE(scene);
   if (record.boxOfBall) scene->domain = test::boxOfBall(scene->domain);
   scene->render.samples = 1;
-  auto prepared = prepareSurface(*scene, {.validate = false});
+  auto prepared = prepareSurface(*scene, kWithoutGlslang);
   ASSERT_TRUE(std::holds_alternative<PreparedSurface>(prepared))
       << std::get<std::string>(prepared);
   const PreparedSurface& surface = std::get<PreparedSurface>(prepared);

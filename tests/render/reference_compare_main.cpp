@@ -46,7 +46,7 @@ int run(int argc, char** argv) {
     Scene scene = std::move(*loaded);
     if (box) scene.domain = test::boxOfBall(scene.domain);
     scene.render.samples = 1;  // the depth of the pixel's centre ray
-    auto prepared = prepareSurface(scene, {.validate = false});
+    auto prepared = prepareSurface(scene, kWithoutGlslang);
     if (auto* e = std::get_if<std::string>(&prepared)) {
       std::fprintf(stderr, "%s: %s", path.c_str(), e->c_str());
       return 1;

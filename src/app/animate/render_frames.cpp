@@ -42,7 +42,7 @@ std::string rebuildForParams(PreparedSurface& s, const Scene& scene, RayTracer& 
 // The singular-point markers are constants of the shader: with them on, a new parameter
 // value needs the whole surface again (the tracer recompiles only if the text changed).
 std::string rebuildAll(PreparedSurface& s, const Scene& scene, RayTracer& tracer) {
-  auto prepared = prepareSurface(scene, {.validate = false});
+  auto prepared = prepareSurface(scene, kWithoutGlslang);
   if (auto* err = std::get_if<std::string>(&prepared)) return *err;
   s = std::get<PreparedSurface>(std::move(prepared));
   return loadSurface(tracer, s);

@@ -11,8 +11,8 @@ namespace zs::bench {
 
 namespace {
 
-constexpr double kGoalFps = 60;               // targets.md: every thesis configuration
-constexpr double kGoalFirstFrameMs = 150;     // targets.md: typed formula to first frame
+constexpr double kGoalFps = 60;               // goal: every thesis configuration
+constexpr double kGoalFirstFrameMs = 150;     // goal: typed formula to first frame
 constexpr double kIssueFirstFrameMs = 300;    // issue 7: every thesis surface
 
 std::string format(const char* fmt, ...) {
@@ -85,7 +85,7 @@ std::string goals(const BenchResults& results) {
   tallyThesisConfigs(results, t);
   std::string md = "## Goals\n\n";
   if (t.measured == 0) return md + "No thesis configuration was measured.\n\n";
-  md += format("- Thesis configurations at >= %.0f fps (docs/targets.md): %d of %d - %s. "
+  md += format("- Thesis configurations at >= %.0f fps (goal): %d of %d - %s. "
                "Slowest: %s at %.1f fps.\n",
                kGoalFps, t.atGoal, t.measured,
                verdict(t.atGoal == t.measured), t.worstName.c_str(), t.worstFps);
@@ -119,7 +119,7 @@ std::string goals(const BenchResults& results) {
     worst = std::max(worst, f.totalMs);
   }
   md += format("- First frame <= %.0f ms (issue 7): %d of %d surfaces - %s; <= %.0f ms "
-               "(docs/targets.md): %d of %d - %s. Slowest: %.0f ms.\n",
+               "(goal): %d of %d - %s. Slowest: %.0f ms.\n",
                kIssueFirstFrameMs, ok, total, verdict(ok == total && total > 0),
                kGoalFirstFrameMs, fast, total, verdict(fast == total && total > 0), worst);
   return md + "\n";

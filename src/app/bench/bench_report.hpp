@@ -2,8 +2,8 @@
 // Reports of `zeroset bench`: takes the BenchResults of bench_runner.hpp, puts out text.
 // The Markdown lays the thesis' Tables 5.2 and 5.3 out as the thesis does (surface, level,
 // one column per setting) with our fps beside the published fps, then deeper octree
-// levels, the time to first frame per surface and the goals of docs/targets.md marked met
-// or not met, the thesis' method (sampling) beside the exact one (bernstein). The CSVs hold
+// levels, the time to first frame per surface and the project's goals marked met or not
+// met, the thesis' method (sampling) beside the exact one (bernstein). The CSVs hold
 // one row per configuration / per surface, for other tools.
 #include <optional>
 #include <string>

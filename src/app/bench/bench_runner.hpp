@@ -75,7 +75,7 @@ struct InputBenchResults {
   std::string device, shaderCache;
   unsigned cpuThreads = 0;
   Scene scene;
-  std::vector<MethodResult> methods;  // sampling, then bernstein
+  std::vector<MethodResult> methods;  // sampling, bernstein, interval
   std::string error;                  // non-empty: no GL context, nothing was measured
 };
 
