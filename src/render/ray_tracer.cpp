@@ -1,5 +1,6 @@
-// RayTracer: GL objects (program, node texture, offscreen target) and the tiled render.
-// Uniform values come from ray_tracer_uniforms.cpp.
+// RayTracer: the passes of a frame (curvature probe, beam, tile mask, the frame itself) and
+// the tiled render with its read-back; the programs live in program_cache.hpp, the offscreen
+// framebuffer in offscreen_target.hpp, the uniform values in ray_tracer_uniforms.cpp.
 #include "render/ray_tracer.hpp"
 
 #include <glad/gl.h>
@@ -12,17 +13,15 @@
 #include <limits>
 
 #include "render/beam_tiles.hpp"
-#include "render/shader_program.hpp"
 #include "render/shading_defines.hpp"
 
 namespace zs {
 
-RayTracer::RayTracer() : preferred_(variantFor(RenderSettings{})) { glGenVertexArrays(1, &vao_); }
+RayTracer::RayTracer() : preferred_(ProgramVariant::of(RenderSettings{})) {
+  glGenVertexArrays(1, &vao_);
+}
 
 namespace {
-// Pixels per side of a beam pass tile: 8 x 8 rays share one walk through empty space. Smaller
-// tiles enclose tighter but cost more beam fragments; 8 measured best (docs/renderer.md).
-constexpr int kBeamTile = 8;
 // Tile skipping marks the beam's clear tiles only where at least 1 in kSkipShare is clear.
 constexpr std::size_t kSkipShare = 16;
 }  // namespace
@@ -30,8 +29,6 @@ constexpr std::size_t kSkipShare = 16;
 RayTracer::~RayTracer() {
   if (tileBuffer_) glDeleteBuffers(1, &tileBuffer_);
   releaseBeam();
-  releaseTarget();
-  deletePrograms();
   if (nodeTexture_) glDeleteTextures(1, &nodeTexture_);
   if (nodeBuffer_) glDeleteBuffers(1, &nodeBuffer_);
   glDeleteVertexArrays(1, &vao_);
@@ -41,81 +38,11 @@ bool RayTracer::build(std::string_view vertexSource, std::string_view fragmentSo
                       std::string& log) {
   // The same text again (a parameter or level change) keeps the programs: llvmpipe's JIT of
   // a new one costs a visible pause.
-  if (program_ && vertexSource == vertexSource_ && fragmentSource == fragmentSource_) return true;
-  // The default variant is compiled now, so a broken shader is reported here, not mid-frame.
-  std::map<Variant, unsigned> previous;
-  std::swap(previous, programs_);
-  const std::string oldVertex = std::exchange(vertexSource_, std::string(vertexSource));
-  const std::string oldFragment = std::exchange(fragmentSource_, std::string(fragmentSource));
-  const unsigned first = program(preferred_, log);
-  if (!first) {  // keep what worked before
-    deletePrograms();
-    programs_ = std::move(previous);
-    vertexSource_ = oldVertex;
-    fragmentSource_ = oldFragment;
-    return false;
-  }
-  for (auto& [variant, old] : previous) dropProgram(old);
+  if (program_ && programs_.holds(vertexSource, fragmentSource)) return true;
+  const unsigned first = programs_.rebuild(vertexSource, fragmentSource, preferred_, log);
+  if (!first) return false;  // the programs built before stay
   program_ = first;
-  // shader_assembly.cpp's kHasBeamDefine: the interval method's shaders have a beam pass.
-  hasBeam_ = fragmentSource_.find("\n#define RT_HAS_BEAM\n") != std::string::npos;
   return true;
-}
-
-RayTracer::Variant RayTracer::variantFor(const RenderSettings& s) {
-  Variant v;
-  v.samples = std::clamp(s.samples, 1, 16);
-  v.maxHits = s.opacity < 1.0 ? std::clamp(s.tracing.hits, 1, 8) : 1;
-  v.reflection = s.reflection.enabled;
-  v.shading = shadingDefines(s);
-  return v;
-}
-
-unsigned RayTracer::program(const Variant& v, std::string& log) {
-  if (auto it = programs_.find(v); it != programs_.end()) return it->second;
-  // The defines go right after #version, which must stay the first line.
-  std::string source = fragmentSource_;
-  const std::size_t eol = source.find('\n');
-  const std::string defines = "#define RT_SAMPLES " + std::to_string(v.samples) +
-                              "\n#define RT_MAX_HITS " + std::to_string(v.maxHits) +
-                              "\n#define RT_REFLECTION " + (v.reflection ? "1" : "0") +
-                              "\n#define RT_BEAM_TILE " + std::to_string(kBeamTile) + "\n" +
-                              (v.beam ? "#define RT_BEAM\n" : "") +
-                              (v.tileMask ? "#define RT_TILE_MASK\n" : "") + v.shading +
-                              "#line 2 0\n";
-  source.insert(eol == std::string::npos ? source.size() : eol + 1, defines);
-  const unsigned p = compileProgram(vertexSource_, source, log);
-  if (!p) return 0;  // the variants that work stay, so going back to them still works
-  // Editing a light makes a new variant each time: keep only the current lighting's.
-  for (auto it = programs_.begin(); it != programs_.end();) {
-    if (it->first.shading == v.shading) {
-      ++it;
-      continue;
-    }
-    if (it->second == program_) program_ = 0;
-    dropProgram(it->second);
-    it = programs_.erase(it);
-  }
-  programs_.emplace(v, p);
-  return p;
-}
-
-void RayTracer::deletePrograms() {
-  for (auto& [variant, p] : programs_) dropProgram(p);
-  programs_.clear();
-  program_ = 0;
-}
-
-void RayTracer::dropProgram(unsigned p) {
-  glDeleteProgram(p);
-  locations_.erase(p);  // GL may hand the id out again
-}
-
-int RayTracer::uniform(const char* name) {
-  auto& cache = locations_[program_];
-  auto it = cache.find(name);
-  if (it == cache.end()) it = cache.emplace(name, glGetUniformLocation(program_, name)).first;
-  return it->second;
 }
 
 std::string RayTracer::setHierarchy(std::span<const float> packed) {
@@ -154,11 +81,11 @@ void RayTracer::releaseBeam() {
 
 bool RayTracer::drawBeam(const RenderSettings& settings, const Domain& domain, int width,
                          int height) {
-  if (!hasBeam_ || !beamPass_) return false;
-  Variant v = preferred_;
+  if (!programs_.hasBeam() || !beamPass_) return false;
+  ProgramVariant v = preferred_;
   v.beam = true;
   std::string log;
-  const unsigned beam = program(v, log);
+  const unsigned beam = programs_.get(v, log);
   if (!beam) return false;  // the pixels then walk on their own (the picture is the same)
   const int w = (width + kBeamTile - 1) / kBeamTile, h = (height + kBeamTile - 1) / kBeamTile;
   if (!beamFbo_ || w != beamWidth_ || h != beamHeight_) {
@@ -181,22 +108,19 @@ bool RayTracer::drawBeam(const RenderSettings& settings, const Domain& domain, i
   }
   GLint bound = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
-  const unsigned main = program_;
-  program_ = beam;
   glUseProgram(beam);
   glBindFramebuffer(GL_FRAMEBUFFER, beamFbo_);
   const GLenum buffer = GL_COLOR_ATTACHMENT0;
   glDrawBuffers(1, &buffer);
   // The full picture's uniforms: the beam shader finds each tile's rays from rt.resolution.
-  const int vertices = setUniforms(settings, domain, width, height);
+  const int vertices = setUniforms(beam, settings, domain, width, height);
   setDrawState(w, h);
   // Tiles no fragment covers say nothing: start at 0 with no first segment hint.
   glDisable(GL_SCISSOR_TEST);
   const float none[4] = {0.0f, std::numeric_limits<float>::max(), 0.0f, 0.0f};
   glClearBufferfv(GL_COLOR, 0, none);
   if (vertices > 0) glDrawArrays(GL_TRIANGLES, 0, vertices);
-  program_ = main;
-  glUseProgram(main);
+  glUseProgram(program_);
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(bound));
   return true;
 }
@@ -221,10 +145,10 @@ void RayTracer::markClearTiles(int width, int height) {
   const std::vector<float> runs =
       clearTileRuns(beam, beamWidth_, beamHeight_, kBeamTile, width, height);
   if (runs.empty()) return;
-  Variant v = preferred_;
+  ProgramVariant v = preferred_;
   v.tileMask = true;
   std::string log;
-  const unsigned mask = program(v, log);
+  const unsigned mask = programs_.get(v, log);
   if (!mask) return;  // every tile is shaded (the picture is the same)
   if (!tileBuffer_) glGenBuffers(1, &tileBuffer_);
   glBindBuffer(GL_ARRAY_BUFFER, tileBuffer_);
@@ -234,10 +158,8 @@ void RayTracer::markClearTiles(int width, int height) {
   glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
   glEnableVertexAttribArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
-  const unsigned main = program_;
-  program_ = mask;
   glUseProgram(mask);
-  glUniform1i(uniform("rtProxy"), 2);  // the rectangles (fullscreen.vert.glsl)
+  glUniform1i(programs_.uniform(mask, "rtProxy"), 2);  // the rectangles (fullscreen.vert.glsl)
   const GLboolean culling = glIsEnabled(GL_CULL_FACE);
   glDisable(GL_CULL_FACE);
   glDisable(GL_SCISSOR_TEST);
@@ -256,8 +178,7 @@ void RayTracer::markClearTiles(int width, int height) {
   // shader runs (it neither discards nor writes depth) is never shaded.
   glStencilFunc(GL_EQUAL, 0, 0xFF);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-  program_ = main;
-  glUseProgram(main);
+  glUseProgram(program_);
 }
 
 void RayTracer::drawFrame() {
@@ -265,72 +186,18 @@ void RayTracer::drawFrame() {
   glDisable(GL_STENCIL_TEST);
 }
 
-void RayTracer::releaseTarget() {
-  if (fbo_) glDeleteFramebuffers(1, &fbo_);
-  if (colorTex_) glDeleteTextures(1, &colorTex_);
-  if (depthTex_) glDeleteTextures(1, &depthTex_);
-  if (valueTex_) glDeleteTextures(1, &valueTex_);
-  if (stencil_) glDeleteRenderbuffers(1, &stencil_);
-  fbo_ = colorTex_ = depthTex_ = valueTex_ = stencil_ = 0;
-  targetWidth_ = targetHeight_ = 0;
-}
-
-std::string RayTracer::ensureTarget(int width, int height) {
-  if (fbo_ && width == targetWidth_ && height == targetHeight_) return {};
-  GLint maxSize = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-  if (width <= 0 || height <= 0 || width > maxSize || height > maxSize)
-    return "image size " + std::to_string(width) + "x" + std::to_string(height) +
-           " is outside 1.." + std::to_string(maxSize);
-  releaseTarget();
-  auto makeTexture = [&](GLenum internal, GLenum format, GLenum type) {
-    GLuint tex = 0;
-    glGenTextures(1, &tex);
-    glBindTexture(GL_TEXTURE_2D, tex);
-    glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal), width, height, 0, format, type, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    return tex;
-  };
-  colorTex_ = makeTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE);
-  depthTex_ = makeTexture(GL_R32F, GL_RED, GL_FLOAT);  // distance to the first hit
-  valueTex_ = makeTexture(GL_R32F, GL_RED, GL_FLOAT);  // curvature colorings: the curvature
-  glGenFramebuffers(1, &fbo_);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colorTex_, 0);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, depthTex_, 0);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, valueTex_, 0);
-  // For tile skipping (markClearTiles); depth and stencil come in one format everywhere.
-  glGenRenderbuffers(1, &stencil_);
-  glBindRenderbuffer(GL_RENDERBUFFER, stencil_);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
-  glBindRenderbuffer(GL_RENDERBUFFER, 0);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, stencil_);
-  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  if (status != GL_FRAMEBUFFER_COMPLETE) {
-    releaseTarget();
-    return "offscreen framebuffer incomplete (status " + std::to_string(status) + ")";
-  }
-  targetWidth_ = width;
-  targetHeight_ = height;
-  return {};
-}
-
 std::string RayTracer::prepare(const RenderSettings& settings, const Domain& domain, int width,
                                int height, bool offscreen) {
   if (!program_) return "the ray tracer has no shader program (build() first)";
   if (width <= 0 || height <= 0) return "image size must be positive";
   std::string log;
-  preferred_ = variantFor(settings);
-  const unsigned variant = program(preferred_, log);
+  preferred_ = ProgramVariant::of(settings);
+  const unsigned variant = programs_.get(preferred_, log);
   if (!variant) return "the shader variant for these settings does not compile:\n" + log;
   program_ = variant;
   if (offscreen) {
-    if (std::string error = ensureTarget(width, height); !error.empty()) return error;
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-    glDrawBuffers(3, buffers);
+    if (std::string error = target_.ensure(width, height); !error.empty()) return error;
+    target_.bind();
   }
   glUseProgram(program_);
   glDisable(GL_STENCIL_TEST);  // the curvature probe and the beam shade every pixel
@@ -338,8 +205,8 @@ std::string RayTracer::prepare(const RenderSettings& settings, const Domain& dom
                         ? resolveCurvatureRange(settings, domain, width, height)
                         : 0;
   const bool beam = drawBeam(settings, domain, width, height);
-  if (offscreen) glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-  vertices_ = setUniforms(settings, domain, width, height);
+  if (offscreen) target_.bind();
+  vertices_ = setUniforms(program_, settings, domain, width, height);
   setDrawState(width, height);
   clearBackground(settings, offscreen);
   if (beam && tileSkipping_ && vertices_ > 0) markClearTiles(width, height);
@@ -347,7 +214,7 @@ std::string RayTracer::prepare(const RenderSettings& settings, const Domain& dom
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, beamTex_);
     glActiveTexture(GL_TEXTURE0);
-    glUniform1i(uniform("rtBeamOn"), 1);  // its unit, 1, is set with the other uniforms
+    glUniform1i(programs_.uniform(program_, "rtBeamOn"), 1);  // its unit, 1: setUniforms
   }
   return {};
 }
@@ -395,14 +262,12 @@ double RayTracer::resolveCurvatureRange(const RenderSettings& settings, const Do
   // picture of the same view), then its value attachment read back.
   GLint bound = 0;  // the viewer traces into its own framebuffer: put it back afterwards
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
-  if (!ensureTarget(std::max(width, 1), std::max(height, 1)).empty()) return 1;
+  if (!target_.ensure(std::max(width, 1), std::max(height, 1)).empty()) return 1;
   const int w = std::max(width / 4, 1), h = std::max(height / 4, 1);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-  const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-  glDrawBuffers(3, buffers);
+  target_.bind();
   RenderSettings probe = settings;
   probe.shading.curvatureRange = 1;
-  const int vertices = setUniforms(probe, domain, w, h);
+  const int vertices = setUniforms(program_, probe, domain, w, h);
   setDrawState(w, h);
   clearBackground(settings, true);
   if (vertices > 0) glDrawArrays(GL_TRIANGLES, 0, vertices);

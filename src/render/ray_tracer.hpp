@@ -7,16 +7,15 @@
 // Needs a current GL 3.3+ core context (gl_context.hpp) for its whole life; all GL objects
 // belong to that context. Never aborts on bad input: errors come back as strings.
 #include <functional>
-#include <map>
-#include <tuple>
 #include <span>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
 
 #include "render/hierarchy_gpu.hpp"
 #include "render/image.hpp"
+#include "render/offscreen_target.hpp"
+#include "render/program_cache.hpp"
 #include "render/settings.hpp"
 
 namespace zs {
@@ -88,19 +87,19 @@ class RayTracer {
  private:
   std::string prepare(const RenderSettings& settings, const Domain& domain, int width,
                       int height, bool offscreen);
-  // Sets every uniform; returns the number of vertices to draw (0: nothing can be hit).
-  int setUniforms(const RenderSettings& settings, const Domain& domain, int width, int height);
-  int setProxyUniforms(const Camera& camera, const Domain& domain, int width, int height);
+  // Sets every uniform of `program` (in use); returns the number of vertices to draw (0:
+  // nothing can be hit).
+  int setUniforms(unsigned program, const RenderSettings& settings, const Domain& domain,
+                  int width, int height);
+  int setProxyUniforms(unsigned program, const Camera& camera, const Domain& domain, int width,
+                       int height);
   // Everything a draw needs besides the program, its uniforms and the cleared target: the
   // hierarchy texture, the proxy's vertex array and culling, the viewport.
   void setDrawState(int width, int height);
   void clearBackground(const RenderSettings& settings, bool offscreen);
-  int uniform(const char* name);
-  std::string ensureTarget(int width, int height);
-  void releaseTarget();
   // The interval method's beam pass (raytrace_beam.frag.glsl) into beamTex_, one texel per
   // tile of the picture; false where the shader has none or it could not run. Leaves the
-  // program in use and the framebuffer binding as they were.
+  // frame's program in use and the framebuffer binding as they were.
   bool drawBeam(const RenderSettings& settings, const Domain& domain, int width, int height);
   void releaseBeam();
   // Reads the beam pass's result back, marks its clear tiles in the stencil buffer
@@ -111,41 +110,19 @@ class RayTracer {
   // The frame's draw call, with the stencil test turned off after it.
   void drawFrame();
 
-  // One program per feature variant (supersampling, kept hits, reflection: compile-time in
-  // the shader, see raytrace_main.frag.glsl), compiled when a frame first needs it.
-  struct Variant {
-    int samples = 1, maxHits = 1;
-    bool reflection = true;
-    std::string shading;  // lights and coloring (render/shading_defines.hpp)
-    bool beam = false;    // the beam pass's program (raytrace_beam.frag.glsl)
-    bool tileMask = false;  // its tile mask's (the same file)
-    bool operator<(const Variant& o) const {
-      return std::tie(samples, maxHits, reflection, shading, beam, tileMask) <
-             std::tie(o.samples, o.maxHits, o.reflection, o.shading, o.beam, o.tileMask);
-    }
-  };
-  static Variant variantFor(const RenderSettings& settings);
-  // The program of `v`, compiling it if needed; 0 with `log` set when it does not compile.
-  unsigned program(const Variant& v, std::string& log);
-  void deletePrograms();
-  void dropProgram(unsigned program);  // deletes it and forgets its uniform locations
   // shading.curvature_range, or for 0 the range measured on a picture a quarter the size
   // (render/shading_defines.hpp curvatureRangeOf); needs the current program in use.
   double resolveCurvatureRange(const RenderSettings& settings, const Domain& domain, int width,
                                int height);
 
-  std::map<Variant, unsigned> programs_;
-  unsigned program_ = 0, vao_ = 0;  // program_: the one in use
-  std::string vertexSource_, fragmentSource_;  // what the programs are built from
+  ProgramCache programs_;
+  unsigned program_ = 0, vao_ = 0;  // program_: the frame's, in use while a frame is drawn
   unsigned nodeBuffer_ = 0, nodeTexture_ = 0;
-  Variant preferred_;  // what build() compiles first: the variant of the last frame
+  ProgramVariant preferred_;  // what build() compiles first: the variant of the last frame
   double curvatureRange_ = 0;
-  unsigned fbo_ = 0, colorTex_ = 0, depthTex_ = 0, valueTex_ = 0;
-  unsigned stencil_ = 0;  // the offscreen target's stencil (and unused depth) renderbuffer
-  int targetWidth_ = 0, targetHeight_ = 0;
+  OffscreenTarget target_;
   unsigned beamFbo_ = 0, beamTex_ = 0;
   int beamWidth_ = 0, beamHeight_ = 0;
-  bool hasBeam_ = false;  // the fragment shader has a beam pass
   bool beamPass_ = true;
   bool tileSkipping_ = true;
   unsigned tileBuffer_ = 0;  // the clear tiles' rectangles (vertex attribute 0)
@@ -154,9 +131,6 @@ class RayTracer {
   bool tangentRoots_ = true;
   Proxy proxy_ = Proxy::Box;
   int vertices_ = 6;  // of the current frame
-  // Uniform locations per program: switching between the beam's and the frame's program
-  // every frame keeps both.
-  std::unordered_map<unsigned, std::unordered_map<std::string, int>> locations_;
 };
 
 }  // namespace zs

@@ -17,7 +17,9 @@ void vec3Uniform(int location, const Vec3& v, double scale = 1) {
 
 }  // namespace
 
-int RayTracer::setUniforms(const RenderSettings& s, const Domain& clip, int width, int height) {
+int RayTracer::setUniforms(unsigned program, const RenderSettings& s, const Domain& clip,
+                           int width, int height) {
+  auto uniform = [&](const char* name) { return programs_.uniform(program, name); };
   // Rays are clipped to the domain's bounding box, then to its ball when it is a sphere.
   const Domain domain = boundingBox(clip);
   const bool ball = clip.shape == DomainShape::Sphere;
@@ -85,10 +87,12 @@ int RayTracer::setUniforms(const RenderSettings& s, const Domain& clip, int widt
     const int location = uniform("zs_params");
     if (location >= 0) glUniform1fv(location, GLsizei(params_.size()), params_.data());
   }
-  return setProxyUniforms(s.camera, domain, width, height);
+  return setProxyUniforms(program, s.camera, domain, width, height);
 }
 
-int RayTracer::setProxyUniforms(const Camera& camera, const Domain& domain, int width, int height) {
+int RayTracer::setProxyUniforms(unsigned program, const Camera& camera, const Domain& domain,
+                                int width, int height) {
+  auto uniform = [&](const char* name) { return programs_.uniform(program, name); };
   glUniform1i(uniform("rtProxy"), proxy_ == Proxy::Box ? 1 : 0);  // fullscreen.vert.glsl
   if (proxy_ == Proxy::FullScreen) return 6;
   if (hierarchy_.count == 0) return 0;

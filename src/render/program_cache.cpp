@@ -1,0 +1,88 @@
+#include "render/program_cache.hpp"
+
+#include <glad/gl.h>
+
+#include <algorithm>
+#include <utility>
+
+#include "render/shader_program.hpp"
+#include "render/shading_defines.hpp"
+
+namespace zs {
+
+ProgramVariant ProgramVariant::of(const RenderSettings& s) {
+  ProgramVariant v;
+  v.samples = std::clamp(s.samples, 1, 16);
+  v.maxHits = s.opacity < 1.0 ? std::clamp(s.tracing.hits, 1, 8) : 1;
+  v.reflection = s.reflection.enabled;
+  v.shading = shadingDefines(s);
+  return v;
+}
+
+ProgramCache::~ProgramCache() { dropAll(); }
+
+unsigned ProgramCache::rebuild(std::string_view vertex, std::string_view fragment,
+                               const ProgramVariant& first, std::string& log) {
+  std::map<ProgramVariant, unsigned> previous;
+  std::swap(previous, programs_);
+  std::string oldVertex = std::exchange(vertex_, std::string(vertex));
+  std::string oldFragment = std::exchange(fragment_, std::string(fragment));
+  const unsigned program = get(first, log);
+  if (!program) {  // keep what worked before
+    dropAll();
+    programs_ = std::move(previous);
+    vertex_ = std::move(oldVertex);
+    fragment_ = std::move(oldFragment);
+    return 0;
+  }
+  for (auto& [variant, old] : previous) drop(old);
+  hasBeam_ = fragment_.find("\n#define RT_HAS_BEAM\n") != std::string::npos;
+  return program;
+}
+
+unsigned ProgramCache::get(const ProgramVariant& v, std::string& log) {
+  if (auto it = programs_.find(v); it != programs_.end()) return it->second;
+  // The defines go right after #version, which must stay the first line.
+  std::string source = fragment_;
+  const std::size_t eol = source.find('\n');
+  const std::string defines = "#define RT_SAMPLES " + std::to_string(v.samples) +
+                              "\n#define RT_MAX_HITS " + std::to_string(v.maxHits) +
+                              "\n#define RT_REFLECTION " + (v.reflection ? "1" : "0") +
+                              "\n#define RT_BEAM_TILE " + std::to_string(kBeamTile) + "\n" +
+                              (v.beam ? "#define RT_BEAM\n" : "") +
+                              (v.tileMask ? "#define RT_TILE_MASK\n" : "") + v.shading +
+                              "#line 2 0\n";
+  source.insert(eol == std::string::npos ? source.size() : eol + 1, defines);
+  const unsigned p = compileProgram(vertex_, source, log);
+  if (!p) return 0;
+  // Editing a light makes a new variant each time: keep only the current lighting's.
+  for (auto it = programs_.begin(); it != programs_.end();) {
+    if (it->first.shading == v.shading) {
+      ++it;
+      continue;
+    }
+    drop(it->second);
+    it = programs_.erase(it);
+  }
+  programs_.emplace(v, p);
+  return p;
+}
+
+int ProgramCache::uniform(unsigned program, const char* name) {
+  auto& cache = locations_[program];
+  auto it = cache.find(name);
+  if (it == cache.end()) it = cache.emplace(name, glGetUniformLocation(program, name)).first;
+  return it->second;
+}
+
+void ProgramCache::drop(unsigned program) {
+  glDeleteProgram(program);
+  locations_.erase(program);  // GL may hand the id out again
+}
+
+void ProgramCache::dropAll() {
+  for (auto& [variant, p] : programs_) drop(p);
+  programs_.clear();
+}
+
+}  // namespace zs
