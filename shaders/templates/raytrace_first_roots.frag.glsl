@@ -10,9 +10,8 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
             out vec4 hitG[RT_MAX_HITS]) {
   for (int m = 0; m < RT_MAX_HITS; ++m) { hitT[m] = 0.0; hitG[m] = vec4(0.0); }
   vec3 inv = safeInverse(d);
-  vec2 dom = domainInterval(o, d, inv);
-  vec2 box = slab(rt.rootMin - rt.pad, rt.rootMax + rt.pad, o, inv);
-  float t = max(max(dom.x, box.x), tStart), tEnd = min(dom.y, box.y);
+  vec2 clip = rtHitInterval(o, d, inv);
+  float t = max(clip.x, tStart), tEnd = clip.y;
   int found = 0;
 #if RT_MAX_HITS == 1
   float tHit, tAfter;

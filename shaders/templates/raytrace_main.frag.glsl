@@ -68,6 +68,15 @@ vec2 domainInterval(vec3 o, vec3 d, vec3 inv) {
   return rt.ball.w > 0.0 ? vec2(max(t.x, s.x), min(t.y, s.y)) : t;
 }
 
+// The part of the ray where hits can lie: inside the domain (box and ball) and inside the
+// padded box of the hierarchy's leaves. Every march clips its rays with it (the beam pass
+// encloses a tile's rays in that box too). Empty when x > y.
+vec2 rtHitInterval(vec3 o, vec3 d, vec3 inv) {
+  vec2 dom = domainInterval(o, d, inv);
+  vec2 box = slab(rt.rootMin - rt.pad, rt.rootMax + rt.pad, o, inv);
+  return vec2(max(dom.x, box.x), min(dom.y, box.y));
+}
+
 // How far p lies inside the domain's boundary (negative outside): the border highlight.
 float domainDepth(vec3 p) {
   vec3 m = min(p - rt.domainMin, rt.domainMax - p);

@@ -20,11 +20,10 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
   int found = 0;
   for (int m = 0; m < RT_MAX_HITS; ++m) { hitT[m] = 0.0; hitG[m] = vec4(0.0); }
   vec3 inv = safeInverse(d);
-  vec2 dom = domainInterval(o, d, inv);
   // The root box holds every leaf: clipping to it here makes fetching the root (node 0)
   // unnecessary when it is an inner node (rt.firstNode = 1).
-  vec2 root = slab(rt.rootMin - rt.pad, rt.rootMax + rt.pad, o, inv);
-  dom = vec2(max(max(dom.x, root.x), tStart), min(dom.y, root.y));
+  vec2 dom = rtHitInterval(o, d, inv);
+  dom.x = max(dom.x, tStart);
 
   // Gather: stackless walk (pre-order + escape); each leaf's [t0, t1], clipped to the
   // domain, is insertion-sorted into RT_SEGS slots by compare-and-swap with constant
