@@ -1,5 +1,5 @@
-// The Bernstein method (the default for polynomials) against an independent CPU reference,
-// with default settings and no per-surface tuning. The reference isolates each pixel ray's
+// The exact methods (Bernstein, the default for polynomials, and the interval method) against
+// an independent CPU reference, with default settings and no per-surface tuning. The reference isolates each pixel ray's
 // first root in double precision with outward-rounded interval arithmetic (src/interval) on
 // the boxes around ever shorter pieces of the ray: a piece whose interval excludes 0 has no
 // root, so the reference never misses; it calls a piece shorter than 1e-8 of the ray whose
@@ -52,11 +52,13 @@ struct Comparison {
 // Every pixel of a kSize^2 render of `formula` against the reference. Pixels whose ray
 // comes within `grazing` of changing the answer (the reference's hit/miss differs between
 // the ray and its neighbours half a pixel away) are left out: there either answer is right.
-Comparison compare(const std::string& formula, const Domain& domain, Vec3 eye) {
+Comparison compare(const std::string& formula, const Domain& domain, Vec3 eye,
+                   TracingMethod method = TracingMethod::Auto) {
   Comparison c;
   std::string error;
   EXPECT_NE(test::context(Backend::Egl, error), nullptr) << error;
   test::SurfaceSpec spec{formula, domain, 1};
+  spec.method = method;
   auto tracer = test::makeTracer(spec, error);
   EXPECT_NE(tracer, nullptr) << error;
   if (!tracer) return c;
@@ -104,35 +106,64 @@ void expectExact(const Comparison& c, double depthTolerance) {
               c.referenceHits, c.worstDepth, c.deepErrors);
 }
 
-TEST(Exactness, ThinShellIsDrawnWhereverItIsHit) {
+// The same cases for each exact method, as Fidget runs one suite over every backend: the
+// Bernstein method (the default for these polynomials) and the interval method. Both may
+// miss no pixel and draw none extra. Depth: Bernstein refines every root far below
+// tracing.epsilon (1e-3 here); the interval method refines a simple root to within epsilon,
+// and places a hit it cannot separate from touching (a sheet thinner than epsilon, a double
+// root) in the first segment its float forms cannot decide, which can lie some 1e-2 short
+// of the surface (docs/renderer.md, "The interval method", 3.): its depth is asserted for
+// simple roots only.
+class Exactness : public ::testing::TestWithParam<TracingMethod> {
+ protected:
+  static bool interval() { return GetParam() == TracingMethod::Interval; }
+  // `bernstein`, or the interval method's bound for a simple root.
+  static double simpleRoot(double bernstein) { return interval() ? 2e-3 : bernstein; }
+  // `bernstein`, or no bound where the interval method cannot tell touching from a root.
+  static double touching(double bernstein) { return interval() ? INFINITY : bernstein; }
+};
+
+TEST_P(Exactness, ThinShellIsDrawnWhereverItIsHit) {
   // Between radii sqrt(1 -+ 0.002): 0.002 thick.
-  expectExact(compare("(x^2+y^2+z^2-1)^2-4e-6", Domain{}, {0, 0, 3}), 2.5e-4);
+  expectExact(compare("(x^2+y^2+z^2-1)^2-4e-6", Domain{}, {0, 0, 3}, GetParam()),
+              touching(2.5e-4));
 }
 
-TEST(Exactness, ConcentricSpheresShowTheOuterOne) {
-  const Comparison c = compare("(x^2+y^2+z^2-1)*(x^2+y^2+z^2-1.0201)", Domain{}, {0, 0, 3});
-  expectExact(c, 1e-4);  // a hit on the inner sphere would be 0.01 too deep
+TEST_P(Exactness, ConcentricSpheresShowTheOuterOne) {
+  const Comparison c =
+      compare("(x^2+y^2+z^2-1)*(x^2+y^2+z^2-1.0201)", Domain{}, {0, 0, 3}, GetParam());
+  expectExact(c, simpleRoot(1e-4));  // a hit on the inner sphere would be 0.01 too deep
 }
 
-TEST(Exactness, ThinTorus) {
+TEST_P(Exactness, ThinTorus) {
   // Tube radius 0.02 around the circle of radius 0.8 in the xz plane, seen from above-front,
   // at 160 x 160 so the tube is several pixels wide.
   kSize = 160;
-  expectExact(compare("(x^2+y^2+z^2+0.64-0.0004)^2-2.56*(x^2+z^2)", Domain{}, {0, 1.6, 1.4}), 2.5e-4);
+  expectExact(compare("(x^2+y^2+z^2+0.64-0.0004)^2-2.56*(x^2+z^2)", Domain{}, {0, 1.6, 1.4},
+                      GetParam()),
+              simpleRoot(2.5e-4));
   kSize = 64;
 }
 
-TEST(Exactness, SquaredSphereTouchesZeroWithoutChangingSign) {
+TEST_P(Exactness, SquaredSphereTouchesZeroWithoutChangingSign) {
   // A double root everywhere on the surface: F ~ distance^2. Every pixel is drawn; the depth
   // is placed at the least |f| of the first undecidable interval, which on a few rays that
-  // run long inside the float noise band of F lies short of the root (docs/renderer.md,
-  // known limits): at most 1% of the pixels may be off by more than 2e-3.
-  const Comparison c = compare("(x^2+y^2+z^2-1)^2", Domain{}, {0, 0, 3});
-  expectExact(c, 1.0);
-  EXPECT_LE(c.deepErrors, c.referenceHits / 100);
+  // run long inside the noise band of F lies short of the root (docs/renderer.md, known
+  // limits): at most 1% of the pixels may be off by more than 2e-3.
+  const Comparison c = compare("(x^2+y^2+z^2-1)^2", Domain{}, {0, 0, 3}, GetParam());
+  expectExact(c, touching(1.0));
+  if (!interval()) EXPECT_LE(c.deepErrors, c.referenceHits / 100);
 }
 
-TEST(Exactness, ChebyshevDegree12) {
+INSTANTIATE_TEST_SUITE_P(Methods, Exactness,
+                         ::testing::Values(TracingMethod::Bernstein, TracingMethod::Interval),
+                         [](const auto& info) {
+                           return std::string(info.param == TracingMethod::Bernstein
+                                                  ? "Bernstein"
+                                                  : "Interval");
+                         });
+
+TEST(ExactnessOfTheDefault, ChebyshevDegree12) {
   const std::string t12 = "(2048*x^12-6144*x^10+6912*x^8-3584*x^6+840*x^4-72*x^2+1)";
   std::string f;
   for (char v : {'x', 'y', 'z'}) {
