@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <variant>
 #include <vector>
@@ -61,6 +62,10 @@ std::string chebyshevSurface(int n) {
 using Measured = test::DepthComparison;
 
 Measured measure(int n) {
+  // Large programs (the kernels grow as the degree squared), each drawn once at 48 x 48:
+  // llvmpipe's optimization passes would cost more than everything else. Mesa reads this
+  // when the driver starts: in this test's own process (ctest runs each test alone).
+  setenv("GALLIVM_PERF", "nopt", /*overwrite=*/0);
   Measured m;
   const std::string formula = chebyshevSurface(n);
   std::string error;
@@ -109,7 +114,7 @@ TEST(DegreeLimit, ChebyshevSurfacesAreExactUpToTheLimit) {
 
 TEST(DegreeLimit, AboveTheLimitIsMeasured) {
   // Printed for docs/renderer.md; the app traces these degrees with the interval method.
-  for (int n : {24, 28, 32}) {
+  for (int n : {24, 32}) {
     const Measured m = measure(n);
     EXPECT_GT(m.hits, 0);  // the reference sees the surface: the comparison means something
   }

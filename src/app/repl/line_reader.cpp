@@ -31,7 +31,7 @@ class EditReader final : public LineReader {
     stifle_history(1000);
     if (const char* home = std::getenv("HOME"); home && *home) {
       historyFile_ = std::string(home) + "/.zeroset_history";
-      read_history(historyFile_.c_str());  // a missing file is fine: first session
+      read_history(historyFile_.c_str());  // a missing file is fine: the first run
     }
   }
 
