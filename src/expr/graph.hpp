@@ -35,6 +35,10 @@ struct Node {
 // Largest |n| accepted in x^n; larger exponents are written with pow().
 inline constexpr int kMaxIntegerExponent = 1024;
 
+// Deepest nesting the parser accepts: parentheses, calls, unary signs and powers, each a
+// level. The printer gives up on a graph whose text would nest deeper.
+inline constexpr int kMaxNesting = 256;
+
 class Graph {
  public:
   NodeId constant(double v);

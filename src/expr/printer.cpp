@@ -1,5 +1,6 @@
 #include "expr/printer.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <vector>
@@ -15,6 +16,7 @@ enum Prec { kSum = 1, kProduct = 2, kUnary = 3, kPower = 4, kAtom = 5 };
 struct Printed {
   std::string text;
   int prec = kAtom;
+  int depth = 0;  // nesting levels the parser counts (parentheses, calls, signs, powers)
 };
 
 std::string number(double v) {
@@ -40,6 +42,11 @@ std::optional<std::string> print(const Graph& g, NodeId root, std::size_t maxCha
     const Printed& p = out[static_cast<std::size_t>(child)];
     return p.prec >= need ? p.text : "(" + p.text + ")";
   };
+  // The nesting of `child` printed into a slot that needs `need`.
+  auto depthIn = [&](NodeId child, int need) {
+    const Printed& p = out[static_cast<std::size_t>(child)];
+    return p.depth + (p.prec >= need ? 0 : 1);
+  };
   for (NodeId id : order) {
     const Node& n = g[id];
     const OpInfo& info = opInfo(n.op);
@@ -48,7 +55,7 @@ std::optional<std::string> print(const Graph& g, NodeId root, std::size_t maxCha
       case OpKind::Leaf:
         if (n.op == Op::Const) {
           p.text = number(n.value);
-          if (n.value < 0 || (n.value == 0 && std::signbit(n.value))) p.prec = kUnary;
+          if (n.value < 0 || (n.value == 0 && std::signbit(n.value))) p.prec = kUnary, p.depth = 1;
         } else if (n.op == Op::Param) {
           p.text = g.params()[static_cast<std::size_t>(n.ival)];
         } else {
@@ -58,32 +65,39 @@ std::optional<std::string> print(const Graph& g, NodeId root, std::size_t maxCha
       case OpKind::Prefix:
         p.text = "-" + slot(n.a, kUnary);
         p.prec = kUnary;
+        p.depth = 1 + depthIn(n.a, kUnary);
         break;
       case OpKind::Infix:
         if (n.op == Op::PowI) {
           p.text = slot(n.a, kAtom) + "^" + std::to_string(n.ival);
           p.prec = kPower;
+          p.depth = std::max(depthIn(n.a, kAtom), n.ival < 0 ? 1 : 0) + 1;
         } else {
           const int prec = (n.op == Op::Add || n.op == Op::Sub) ? kSum : kProduct;
           // Left-associative: the right operand needs strictly more binding strength.
           p.text = slot(n.a, prec) + (prec == kSum ? " " : "") + std::string(info.spelling) +
                    (prec == kSum ? " " : "") + slot(n.b, prec + 1);
           p.prec = prec;
+          p.depth = std::max(depthIn(n.a, prec), depthIn(n.b, prec + 1));
         }
         break;
       case OpKind::Call:
         if (n.op == Op::Pow && !hugeIntegerExponent(g, n.b)) {
           p.text = slot(n.a, kAtom) + "^" + slot(n.b, kUnary);
           p.prec = kPower;
+          p.depth = std::max(depthIn(n.a, kAtom), depthIn(n.b, kUnary)) + 1;
         } else if (info.arity == 1) {
           p.text = std::string(info.spelling) + "(" + out[static_cast<std::size_t>(n.a)].text + ")";
+          p.depth = out[static_cast<std::size_t>(n.a)].depth + 1;
         } else {
           p.text = std::string(info.spelling) + "(" + out[static_cast<std::size_t>(n.a)].text +
                    ", " + out[static_cast<std::size_t>(n.b)].text + ")";
+          p.depth = std::max(out[static_cast<std::size_t>(n.a)].depth,
+                             out[static_cast<std::size_t>(n.b)].depth) + 1;
         }
         break;
     }
-    if (p.text.size() > maxChars) return std::nullopt;
+    if (p.text.size() > maxChars || p.depth > kMaxNesting) return std::nullopt;
     out[static_cast<std::size_t>(id)] = std::move(p);
   }
   return out[static_cast<std::size_t>(root)].text;

@@ -10,7 +10,8 @@
 namespace zs {
 
 // Printing a DAG expands shared subexpressions; nothing is returned when the text would
-// exceed maxChars.
+// exceed maxChars, or nest deeper than the parser accepts (kMaxNesting: the simplifier can
+// build product and sum chains that need more parentheses than any text it was parsed from).
 std::optional<std::string> print(const Graph& g, NodeId root, std::size_t maxChars = 1 << 24);
 
 }  // namespace zs

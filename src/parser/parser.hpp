@@ -12,7 +12,6 @@
 namespace zs {
 
 inline constexpr std::size_t kMaxFormulaBytes = 1 << 20;  // 1 MiB
-inline constexpr int kMaxNesting = 256;                     // parentheses, calls, unary ops
 
 // Value given to a named parameter that the scene or --set does not mention.
 inline constexpr double kDefaultParamValue = 0.5;

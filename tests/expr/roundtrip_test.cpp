@@ -96,5 +96,25 @@ TEST(RoundTrip, RandomFormulas) {
   EXPECT_GE(accepted, 1000);  // the generator writes valid formulas; most must parse
 }
 
+// Found by zs_parser_fuzz: the simplifier can turn a flat chain of products into a graph
+// whose faithful text needs more nested parentheses than the parser accepts. The printer
+// then returns nothing rather than text that does not parse.
+TEST(RoundTrip, TooDeepToPrintIsNothingNotUnparsableText) {
+  Graph g;
+  NodeId acc = g.var(0);
+  for (int i = 0; i < 2 * kMaxNesting; ++i)
+    acc = g.binary(Op::Mul, i % 2 ? g.var(1) : g.param("k"), acc);  // k*(y*(k*(...)))
+  const std::optional<std::string> deep = print(g, acc);
+  if (deep) {
+    EXPECT_TRUE(std::holds_alternative<Formula>(parseFormula(*deep))) << deep->substr(0, 200);
+  }
+  NodeId shallow = g.var(0);
+  for (int i = 0; i < kMaxNesting / 2; ++i)
+    shallow = g.binary(Op::Mul, i % 2 ? g.var(1) : g.param("k"), shallow);
+  const std::optional<std::string> text = print(g, shallow);
+  ASSERT_TRUE(text);
+  EXPECT_TRUE(std::holds_alternative<Formula>(parseFormula(*text)));
+}
+
 }  // namespace
 }  // namespace zs

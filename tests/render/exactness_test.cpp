@@ -152,7 +152,9 @@ TEST_P(Exactness, SquaredSphereTouchesZeroWithoutChangingSign) {
   // limits): at most 1% of the pixels may be off by more than 2e-3.
   const Comparison c = compare("(x^2+y^2+z^2-1)^2", Domain{}, {0, 0, 3}, GetParam());
   expectExact(c, touching(1.0));
-  if (!interval()) EXPECT_LE(c.deepErrors, c.referenceHits / 100);
+  if (!interval()) {
+    EXPECT_LE(c.deepErrors, c.referenceHits / 100);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, Exactness,
