@@ -30,18 +30,17 @@ double binomial(int n, int k) {
   return r;
 }
 
-// Writes the truncated Taylor arithmetic of one body; every polynomial node gets its own
-// temporaries "cN_k". Beside them it writes, per node, the scalar "aN": the same expression
+// Writes the truncated Taylor arithmetic of one body, in double; every polynomial node gets
+// its own temporaries "cN_k". Beside them it writes, per node, the scalar "aN": the same expression
 // evaluated with every operation on absolute values at |p| + |v| (so aN >= sum_k |cN_k| in
 // exact arithmetic), and it counts the roundings n on the longest path to each coefficient.
-// Together they bound the float error of every computed coefficient a priori: |c_k - exact|
+// Together they bound the rounding error of every computed coefficient a priori: |c_k - exact|
 // <= gamma_n sum_k |exact terms| <= n u aN (the standard bound for sums of products, Higham
 // ch. 3), the rigorous noise band of the isolation (raytrace_bernstein.frag.glsl).
 class TaylorWriter {
  public:
-  TaylorWriter(const Graph& g, const std::vector<std::string>& names, int degree,
-               const std::string& real)
-      : g_(g), scalars_(g, names), names_(names), degree_(degree), real_(real) {}
+  TaylorWriter(const Graph& g, const std::vector<std::string>& names, int degree)
+      : g_(g), scalars_(g, names), names_(names), degree_(degree) {}
 
   Coeffs node(NodeId id) {
     const Node& n = g_[id];
@@ -78,7 +77,7 @@ class TaylorWriter {
         const std::string& b = names_[static_cast<std::size_t>(n.b)];
         const std::string inv = "c" + std::to_string(next_++) + "_inv";
         out += "  zs_u = zs_u || " + b + " == 0.0;\n";
-        out += "  " + real_ + " " + inv + " = 1.0 / " + real_ + "(" + b + ");\n";
+        out += "  double " + inv + " = 1.0 / double(" + b + ");\n";
         Coeffs r;
         for (const std::string& a : at(n.a)) r.push_back(a + " * " + inv);
         bound(id, boundOf(n.a) + " * abs(" + inv + ")", roundingsOf(n.a) + roundingsOf(n.b) + 2);
@@ -96,7 +95,7 @@ class TaylorWriter {
       scalars_.out.clear();
       const std::string& name = names_[static_cast<std::size_t>(id)];
       coeffs_.emplace(id, Coeffs{name});
-      bound(id, "abs(" + real_ + "(" + name + "))", constantRoundings(id));
+      bound(id, "abs(double(" + name + "))", constantRoundings(id));
       return;
     }
     coeffs_.emplace(id, node(id));
@@ -114,7 +113,7 @@ class TaylorWriter {
     Coeffs names;
     for (std::size_t k = 0; k < exprs.size(); ++k) {
       names.push_back(base + std::to_string(k));
-      out += "  " + real_ + " " + names.back() + " = " + exprs[k] + ";\n";
+      out += "  double " + names.back() + " = " + exprs[k] + ";\n";
     }
     return names;
   }
@@ -191,7 +190,7 @@ class TaylorWriter {
 
   std::string declareBound(const std::string& expr) {
     const std::string name = "a" + std::to_string(next_++);
-    out += "  " + real_ + " " + name + " = " + expr + ";\n";
+    out += "  double " + name + " = " + expr + ";\n";
     return name;
   }
 
@@ -204,7 +203,6 @@ class TaylorWriter {
   BodyWriter scalars_;
   const std::vector<std::string>& names_;
   int degree_;
-  std::string real_;  // "float", or "double" where float would lose too much (header)
   int next_ = 0;
   std::unordered_map<NodeId, Coeffs> coeffs_;
   std::unordered_map<NodeId, std::string> bounds_;
@@ -348,7 +346,7 @@ std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f)
   s += emitBernsteinKernelsGlsl(d, d >= kDoubleDegree);
 
   result.doublePrecision = d >= kDoubleDegree;
-  TaylorWriter taylor(g, names, d, "double");
+  TaylorWriter taylor(g, names, d);
   for (NodeId id : order) taylor.define(id);
   // The rounding count of the coefficients, plus that of the conversion to Bernstein form
   // (d + 1 products summed, the matrix entries rounded once).

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <limits>
 
 #include "codegen/emit_hessian.hpp"
 #include "codegen/glsl_validation.hpp"
@@ -23,6 +24,26 @@ double msSince(std::chrono::steady_clock::time_point start) {
       .count();
 }
 
+// A formula free of x, y and z has no surface (or, where it is 0, is a surface everywhere):
+// every method draws that faithfully, and the user is told why the picture looks as it does.
+std::string constantFormulaNote(const Formula& formula, std::span<const double> params) {
+  if (!formula.graph.isSpatiallyConstant(formula.root)) return {};
+  PointEvaluator eval(compileTape(formula.graph, {formula.root}));
+  const double value = eval.eval1(0, 0, 0, params);
+  char text[200];
+  if (value == 0) {
+    std::snprintf(text, sizeof text,
+                  "note: F does not depend on x, y or z and is 0: every point of the domain is "
+                  "on the surface\n");
+  } else {
+    std::snprintf(text, sizeof text,
+                  "note: F does not depend on x, y or z (F = %.6g everywhere): there is no "
+                  "surface to draw\n",
+                  value);
+  }
+  return text;
+}
+
 }  // namespace
 
 Box toBox(const Domain& domain) {
@@ -35,14 +56,15 @@ std::optional<Ball> toBall(const Domain& domain) {
   return Ball{domain.center, domain.radius};
 }
 
-TracingMethod resolveMethod(TracingMethod asked, const Formula& formula, std::string& warning) {
+TracingMethod resolveMethod(TracingMethod asked, const Formula& formula, std::string& warning,
+                            int maxBernsteinDegree) {
   warning.clear();
   if (asked == TracingMethod::Sampling || asked == TracingMethod::Interval) return asked;
   const std::optional<int> degree = rayPolynomialDegree(formula.graph, formula.root);
-  if (degree && *degree <= kMaxBernsteinDegree) return TracingMethod::Bernstein;
+  if (degree && *degree <= maxBernsteinDegree) return TracingMethod::Bernstein;
   if (degree && asked == TracingMethod::Bernstein) {
     warning = "warning: degree " + std::to_string(*degree) + " is above " +
-              std::to_string(kMaxBernsteinDegree) +
+              std::to_string(maxBernsteinDegree) +
               ", the highest the exact Bernstein method compiles for (its shader grows as the "
               "degree squared); using interval arithmetic (tracing.method = \"interval\")\n";
   } else if (asked == TracingMethod::Bernstein) {
@@ -84,30 +106,6 @@ SphereHierarchy tracingHierarchy(const Formula& formula, std::span<const double>
   return buildSphereHierarchy(octree, &bounds);
 }
 
-namespace {
-
-// A formula free of x, y and z has no surface (or, where it is 0, is a surface everywhere):
-// every method draws that faithfully, and the user is told why the picture looks as it does.
-std::string constantFormulaNote(const Formula& formula, std::span<const double> params) {
-  if (!formula.graph.isSpatiallyConstant(formula.root)) return {};
-  PointEvaluator eval(compileTape(formula.graph, {formula.root}));
-  const double value = eval.eval1(0, 0, 0, params);
-  char text[200];
-  if (value == 0) {
-    std::snprintf(text, sizeof text,
-                  "note: F does not depend on x, y or z and is 0: every point of the domain is "
-                  "on the surface\n");
-  } else {
-    std::snprintf(text, sizeof text,
-                  "note: F does not depend on x, y or z (F = %.6g everywhere): there is no "
-                  "surface to draw\n",
-                  value);
-  }
-  return text;
-}
-
-}  // namespace
-
 std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
                                                           const PrepareOptions& options) {
   PreparedSurface s;
@@ -125,12 +123,11 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
       buildOctree(s.formula, s.params, toBox(scene.domain), scene.octree, toBall(scene.domain));
   if (auto* err = std::get_if<OctreeError>(&tree)) return "error: " + err->message + "\n";
   s.octree = std::get<Octree>(std::move(tree));
-  s.method = resolveMethod(scene.render.tracing.method, s.formula, s.methodWarning);
-  if (options.bernsteinAboveLimit && scene.render.tracing.method == TracingMethod::Bernstein &&
-      rayPolynomialDegree(s.formula.graph, s.formula.root)) {
-    s.method = TracingMethod::Bernstein;
-    s.methodWarning.clear();
-  }
+  // Above the limit only where "bernstein" is asked for: Auto keeps the limit either way.
+  const bool anyDegree =
+      options.bernsteinAboveLimit && scene.render.tracing.method == TracingMethod::Bernstein;
+  s.method = resolveMethod(scene.render.tracing.method, s.formula, s.methodWarning,
+                           anyDegree ? std::numeric_limits<int>::max() : kMaxBernsteinDegree);
   s.hierarchy = tracingHierarchy(s.formula, s.params, s.octree, s.method);
   s.times.octreeMs = msSince(t);
 

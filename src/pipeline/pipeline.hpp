@@ -51,9 +51,10 @@ Box toBox(const Domain& domain);
 std::optional<Ball> toBall(const Domain& domain);
 
 // The method `asked` resolves to for this formula: Bernstein for a polynomial of degree up
-// to kMaxBernsteinDegree (Auto or Bernstein asked), interval arithmetic otherwise; sampling
+// to `maxBernsteinDegree` (Auto or Bernstein asked), interval arithmetic otherwise; sampling
 // and interval when asked for. `warning` explains a fallback from an explicit "bernstein".
-TracingMethod resolveMethod(TracingMethod asked, const Formula& formula, std::string& warning);
+TracingMethod resolveMethod(TracingMethod asked, const Formula& formula, std::string& warning,
+                            int maxBernsteinDegree = kMaxBernsteinDegree);
 
 // The sphere hierarchy the tracer walks: the octree's leaves, cut for the exact methods
 // (Bernstein, interval) to the surface's bounds (interval/surface_bounds.hpp), which they clip
