@@ -4,6 +4,8 @@
 #   scripts/install-deps.sh          build + run + test dependencies
 #   scripts/install-deps.sh --fuzz   also clang and its libFuzzer runtime
 #   scripts/install-deps.sh --deb    also lintian, for scripts/build-deb.sh
+#   scripts/install-deps.sh --web    also emscripten and chromium, for scripts/build-web.sh
+#                                    and the browser tests
 set -euo pipefail
 
 packages=(
@@ -26,6 +28,7 @@ for option in "$@"; do
   case $option in
     --fuzz) packages+=(clang libclang-rt-14-dev) ;;
     --deb) packages+=(lintian) ;;
+    --web) packages+=(emscripten chromium) ;;
     *) echo "install-deps.sh: unknown option $option" >&2; exit 2 ;;
   esac
 done

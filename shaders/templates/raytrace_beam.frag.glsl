@@ -22,6 +22,7 @@
 const int RT_BEAM_STEPS = 48;  // the beam's step budget; it stops where it is (still exact)
 
 void main() {
+  RT_FRAME_BEGIN
   // The tile's rectangle in image points (pixels from the top-left of the full image); one
   // fragment per tile, counted bottom-up like gl_FragCoord.
   const float T = float(RT_BEAM_TILE);

@@ -50,12 +50,12 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   int step = 0, windows = 0;
   do {
     len = wb - wa;
-    double wide[zs_N], bound;
-    bool defined = zs_FPoly(dvec3(o) + (0.5 * (double(wa) + double(wb))) * dvec3(d),
-                            (0.5 * double(len)) * dvec3(d), wide, bound);
+    zs_Wide wide[zs_N], bound;  // double, or float in GLSL ES (emit_ray_polynomial.hpp)
+    bool defined = zs_FPoly(zs_Wide3(o) + (0.5 * (zs_Wide(wa) + zs_Wide(wb))) * zs_Wide3(d),
+                            (0.5 * zs_Wide(len)) * zs_Wide3(d), wide, bound);
     zs_toBernstein(wide, b0, c);
     // What rounding can have done to any coefficient of any restriction (4.): the Taylor
-    // arithmetic and the conversion in double (a priori, from the absolute-value bound), the
+    // arithmetic and the conversion in zs_Wide (a priori, from the absolute-value bound), the
     // one rounding to zs_Real, and the de Casteljau steps (convex combinations: a few
     // roundings of the largest coefficient each).
     zs_Real noise = zs_Real(zs_ROUNDINGS * zs_WIDE_EPS * bound) +

@@ -17,11 +17,6 @@
 
 layout(location = 0) out vec4 rtOutColor;
 layout(location = 1) out float rtOutDepth;
-#if RT_COLOR == 1 || RT_COLOR == 2
-// The curvature at the first hit of the pixel-center ray (NaN where nothing is hit): read
-// back for the automatic color range and by the render tests (docs/curvature.md).
-layout(location = 2) out float rtOutValue;
-#endif
 
 // The program variant (render/ray_tracer.cpp defines these after #version): features that
 // are off are absent, not masked. llvmpipe runs every branch and every loop at least once
@@ -43,6 +38,12 @@ layout(location = 2) out float rtOutValue;
 #endif
 #ifndef RT_KEY_LIGHT
 #define RT_KEY_LIGHT (-rt.forward)  // towards the first directional light, else the eye
+#endif
+
+#if RT_COLOR == 1 || RT_COLOR == 2
+// The curvature at the first hit of the pixel-center ray (NaN where nothing is hit): read
+// back for the automatic color range and by the render tests (docs/curvature.md).
+layout(location = 2) out float rtOutValue;
 #endif
 
 // The hits of the ray o + t d with t >= tStart inside the domain, nearest first, at most
@@ -116,6 +117,7 @@ uniform int rtBeamOn;
 // The beam pass and its tile mask have their own main (raytrace_beam.frag.glsl).
 #if !defined(RT_BEAM) && !defined(RT_TILE_MASK)
 void main() {
+  RT_FRAME_BEGIN  // GLSL ES: the frame's uniforms into `rt` (shader_assembly.cpp)
   // Pixel (i, j) from the top-left of the full image (docs/camera.md).
   vec2 pixel = vec2(gl_FragCoord.x - 0.5, rt.resolution.y - gl_FragCoord.y - 0.5);
   const int n = RT_SAMPLES, grid = n * n;

@@ -9,7 +9,15 @@
 // Hierarchy: one uvec4 per node (render/hierarchy_gpu.hpp repacks the 12-float layout):
 // the box as 16-bit corners on a 2^14 grid over the root box, w = escape << 1 | isLeaf.
 // One fetch per visited node: on llvmpipe fetches, not arithmetic, bound the traversal.
+#ifdef GL_ES
+// WebGL2 has no buffer textures: the same texels in rows of RT_NODE_ROW (render/frame_uniforms.hpp).
+uniform highp usampler2D rtHierarchy;
+const int RT_NODE_ROW = 1024;
+uvec4 rtNode(int i) { return texelFetch(rtHierarchy, ivec2(i % RT_NODE_ROW, i / RT_NODE_ROW), 0); }
+#else
 uniform usamplerBuffer rtHierarchy;
+uvec4 rtNode(int i) { return texelFetch(rtHierarchy, i); }
+#endif
 
 const int RT_SEGS = 8;         // leaf segments per ray; overflow widens the farthest
 const int RT_MAX_EVALS = 4096; // safety bound on F evaluations per ray
@@ -39,7 +47,7 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
     float a = 0.0, b = 0.0;
     bool leafHit = false;
     while (i < count && !leafHit) {
-      uvec4 node = texelFetch(rtHierarchy, i);
+      uvec4 node = rtNode(i);
       vec3 qlo = vec3(node.x & 0xFFFFu, node.x >> 16u, node.y & 0xFFFFu);
       vec3 qhi = vec3(node.y >> 16u, node.z & 0xFFFFu, node.z >> 16u);
       vec2 tt = slab(rt.rootMin + qlo * rt.cell - rt.pad, rt.rootMin + qhi * rt.cell + rt.pad, o, inv);

@@ -14,13 +14,15 @@ using Coeffs = std::vector<std::string>;  // GLSL names of c_0 .. c_k
 
 std::string idx(const std::string& array, int i) { return array + "[" + std::to_string(i) + "]"; }
 
-// A double literal with every digit a double has (the conversion matrix's entries); a
-// negative one is parenthesized: "a * -2.0" is fine, "a - -2.0" lexes as a decrement.
-std::string doubleLiteral(double v) {
+// A literal of the wide type with every digit a double has (the conversion matrix's
+// entries; "lf" marks double, GLSL ES has no suffix and no double); a negative one is
+// parenthesized: "a * -2.0" is fine, "a - -2.0" lexes as a decrement.
+std::string wideLiteral(double v, bool fp64) {
   char text[40];
-  std::snprintf(text, sizeof text, "%.17glf", v);
+  std::snprintf(text, sizeof text, "%.17g", v);
   std::string t = text;
-  if (t.find_first_of(".e") == std::string::npos) t.insert(t.size() - 2, ".0");
+  if (t.find_first_of(".e") == std::string::npos) t += ".0";
+  if (fp64) t += "lf";
   return v < 0 ? "(" + t + ")" : t;
 }
 
@@ -30,7 +32,7 @@ double binomial(int n, int k) {
   return r;
 }
 
-// Writes the truncated Taylor arithmetic of one body, in double; every polynomial node gets
+// Writes the truncated Taylor arithmetic of one body, in zs_Wide; every polynomial node gets
 // its own temporaries "cN_k". Beside them it writes, per node, the scalar "aN": the same expression
 // evaluated with every operation on absolute values at |p| + |v| (so aN >= sum_k |cN_k| in
 // exact arithmetic), and it counts the roundings n on the longest path to each coefficient.
@@ -77,7 +79,7 @@ class TaylorWriter {
         const std::string& b = names_[static_cast<std::size_t>(n.b)];
         const std::string inv = "c" + std::to_string(next_++) + "_inv";
         out += "  zs_u = zs_u || " + b + " == 0.0;\n";
-        out += "  double " + inv + " = 1.0 / double(" + b + ");\n";
+        out += "  zs_Wide " + inv + " = 1.0 / zs_Wide(" + b + ");\n";
         Coeffs r;
         for (const std::string& a : at(n.a)) r.push_back(a + " * " + inv);
         bound(id, boundOf(n.a) + " * abs(" + inv + ")", roundingsOf(n.a) + roundingsOf(n.b) + 2);
@@ -95,7 +97,7 @@ class TaylorWriter {
       scalars_.out.clear();
       const std::string& name = names_[static_cast<std::size_t>(id)];
       coeffs_.emplace(id, Coeffs{name});
-      bound(id, "abs(double(" + name + "))", constantRoundings(id));
+      bound(id, "abs(zs_Wide(" + name + "))", constantRoundings(id));
       return;
     }
     coeffs_.emplace(id, node(id));
@@ -113,7 +115,7 @@ class TaylorWriter {
     Coeffs names;
     for (std::size_t k = 0; k < exprs.size(); ++k) {
       names.push_back(base + std::to_string(k));
-      out += "  double " + names.back() + " = " + exprs[k] + ";\n";
+      out += "  zs_Wide " + names.back() + " = " + exprs[k] + ";\n";
     }
     return names;
   }
@@ -190,7 +192,7 @@ class TaylorWriter {
 
   std::string declareBound(const std::string& expr) {
     const std::string name = "a" + std::to_string(next_++);
-    out += "  double " + name + " = " + expr + ";\n";
+    out += "  zs_Wide " + name + " = " + expr + ";\n";
     return name;
   }
 
@@ -241,15 +243,19 @@ std::optional<int> rayPolynomialDegree(const Graph& g, NodeId f) {
   return d >= 0 ? std::optional<int>(d) : std::nullopt;
 }
 
-std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision) {
+std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision, bool fp64) {
+  doublePrecision = doublePrecision && fp64;
   std::string s;
   const std::string real = doublePrecision ? "double" : "float";
   s += "#define zs_Real " + real + "\n";
   s += std::string("#define zs_Real4 ") + (doublePrecision ? "dvec4" : "vec4") + "\n";
+  // The expansion's type: double where the GPU has it, float in GLSL ES (WebGL2).
+  s += std::string("#define zs_Wide ") + (fp64 ? "double" : "float") + "\n";
+  s += std::string("#define zs_Wide3 ") + (fp64 ? "dvec3" : "vec3") + "\n";
   // Twice the unit roundoff (2^-23 of float, 2^-52 of double): the noise band of the
   // isolation is a first-order bound; the factor 2 covers the rest and its own rounding.
   s += std::string("const zs_Real zs_EPS = ") + (doublePrecision ? "2.23e-16lf" : "1.2e-7") + ";\n";
-  s += "const double zs_WIDE_EPS = 2.23e-16lf;\n";
+  s += std::string("const zs_Wide zs_WIDE_EPS = ") + (fp64 ? "2.23e-16lf" : "1.2e-7") + ";\n";
   s += "const int zs_DEGREE = " + std::to_string(d) + ";\n";
   s += "const int zs_N = " + std::to_string(d + 1) + ";\n";
 
@@ -257,9 +263,9 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision) {
   // segment's midpoint, whose coefficients stay far smaller than about an end). The
   // Bernstein coefficients of s'^j on [0, 1] are averages of +-1, so |b| <= sum |c|:
   //   b_i = sum_j c_j sum_k (-1)^(j-k) C(j, k) C(d-j, i-k) / C(d, i).
-  // Computed in double from the double expansion, then rounded once to zs_Real; `narrow`
-  // gets the power coefficients rounded once too, for the refinement's Horner steps.
-  s += "\nvoid zs_toBernstein(double c[zs_N], out zs_Real b[zs_N], out zs_Real narrow[zs_N]) {\n";
+  // Computed in zs_Wide from the expansion, then rounded once to zs_Real; `narrow` gets the
+  // power coefficients rounded once too, for the refinement's Horner steps.
+  s += "\nvoid zs_toBernstein(zs_Wide c[zs_N], out zs_Real b[zs_N], out zs_Real narrow[zs_N]) {\n";
   for (int i = 0; i <= d; ++i) {
     std::string sum;
     for (int j = 0; j <= d; ++j) {
@@ -269,7 +275,7 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision) {
       }
       m /= binomial(d, i);
       if (m == 0) continue;
-      const std::string term = m == 1.0 ? idx("c", j) : doubleLiteral(m) + " * " + idx("c", j);
+      const std::string term = m == 1.0 ? idx("c", j) : wideLiteral(m, fp64) + " * " + idx("c", j);
       sum += (sum.empty() ? "" : " + ") + term;
     }
     s += "  " + idx("b", i) + " = zs_Real(" + (sum.empty() ? "0.0" : sum) + ");\n";
@@ -329,7 +335,7 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision) {
   return s;
 }
 
-std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f) {
+std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f, bool fp64) {
   const std::optional<int> degree = rayPolynomialDegree(g, f);
   if (!degree) return std::nullopt;
   // A constant F is traced as a polynomial of degree 1 whose slope is 0: the kernels need
@@ -343,21 +349,22 @@ std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f)
   std::string& s = result.source;
   s += "// zeroset ray polynomial (generated by src/codegen/emit_ray_polynomial.cpp): f(s) =\n";
   s += "// F(p + s v) of degree " + std::to_string(d) + " and its Bernstein kernels.\n";
-  s += emitBernsteinKernelsGlsl(d, d >= kDoubleDegree);
+  result.fp64 = fp64;
+  result.doublePrecision = fp64 && d >= kDoubleDegree;
+  s += emitBernsteinKernelsGlsl(d, result.doublePrecision, fp64);
 
-  result.doublePrecision = d >= kDoubleDegree;
   TaylorWriter taylor(g, names, d);
   for (NodeId id : order) taylor.define(id);
   // The rounding count of the coefficients, plus that of the conversion to Bernstein form
   // (d + 1 products summed, the matrix entries rounded once).
-  s += "\n// Roundings on the longest path to a Bernstein coefficient in double (zs_FPoly's error\n";
+  s += "\n// Roundings on the longest path to a Bernstein coefficient in zs_Wide (zs_FPoly's error\n";
   s += "// bound, with the conversion's d + 1 products summed).\n";
-  s += "const double zs_ROUNDINGS = " + std::to_string(taylor.roundingsOf(f) + d + 3) + ".0;\n";
-  s += "\n// Coefficients of f(s) in the power basis, in double, and `bound` >= sum_k |c_k| computed\n";
+  s += "const zs_Wide zs_ROUNDINGS = " + std::to_string(taylor.roundingsOf(f) + d + 3) + ".0;\n";
+  s += "\n// Coefficients of f(s) in the power basis, in zs_Wide, and `bound` >= sum_k |c_k| computed\n";
   s += "// with every operation on absolute values: the error of any Bernstein coefficient made\n";
-  s += "// from them in double is at most zs_ROUNDINGS zs_WIDE_EPS bound. False where F is\n";
+  s += "// from them in zs_Wide is at most zs_ROUNDINGS zs_WIDE_EPS bound. False where F is\n";
   s += "// undefined on the whole ray.\n";
-  s += "bool zs_FPoly(dvec3 p, dvec3 v, out double c[zs_N], out double bound) {\n";
+  s += "bool zs_FPoly(zs_Wide3 p, zs_Wide3 v, out zs_Wide c[zs_N], out zs_Wide bound) {\n";
   s += "  bool zs_u = false;\n";
   s += taylor.out;
   const Coeffs& root = taylor.at(f);

@@ -7,11 +7,12 @@
 //
 //   const int zs_DEGREE = D;  const int zs_N = D + 1;
 //   #define zs_Real float (double from kDoubleDegree on), zs_Real4 vec4 (dvec4)
-//   const double zs_ROUNDINGS;  // roundings on the longest path to a Bernstein coefficient
-//   bool zs_FPoly(dvec3 p, dvec3 v, out double c[zs_N], out double bound);  // c[k] of s^k,
-//        in double; bound: the expansion with every operation on absolute values
-//   void zs_toBernstein(double c[zs_N], out zs_Real b[zs_N], out zs_Real narrow[zs_N]);
-//        // Bernstein on [0, 1] (s' = (s+1)/2) in double, rounded once; narrow: c rounded once
+//   #define zs_Wide double, zs_Wide3 dvec3 (float, vec3 in GLSL ES)
+//   const zs_Wide zs_ROUNDINGS;  // roundings on the longest path to a Bernstein coefficient
+//   bool zs_FPoly(zs_Wide3 p, zs_Wide3 v, out zs_Wide c[zs_N], out zs_Wide bound);  // c[k]
+//        of s^k; bound: the expansion with every operation on absolute values
+//   void zs_toBernstein(zs_Wide c[zs_N], out zs_Real b[zs_N], out zs_Real narrow[zs_N]);
+//        // Bernstein on [0, 1] (s' = (s+1)/2) in zs_Wide, rounded once; narrow: c rounded once
 //   void zs_restrict(zs_Real b[zs_N], float u, float w, out zs_Real r[zs_N]);  // to [u, w]
 //   vec3 zs_powerAt(zs_Real c[zs_N], zs_Real x);  // (f, f', f''/2) at s = x in [-1, 1], Horner
 //   float zs_firstCrossing(zs_Real b[zs_N]);  // first zero of the control polygon, in [0, 1]
@@ -43,8 +44,14 @@ inline constexpr int kDoubleDegree = 7;
 struct RayPolynomialGlsl {
   std::string source;  // the block, ending with a newline
   int degree = 0;      // D
-  bool doublePrecision = false;  // D >= kDoubleDegree: the isolation runs in double too
+  bool fp64 = true;    // the expansion runs in double (needs GL_ARB_gpu_shader_fp64)
+  bool doublePrecision = false;  // fp64 and D >= kDoubleDegree: the isolation runs in double too
 };
+
+// GLSL ES 3.00 (WebGL2) has no double: there the expansion and the isolation run in float,
+// with the same a priori bound taken with float's roundoff, up to this degree; above it the
+// web build traces polynomials with interval arithmetic (docs/web.md).
+inline constexpr int kFloatBernsteinMaxDegree = kDoubleDegree - 1;
 
 // Degree of f(s) the block would have: the structural degree of F, or nothing when F is not
 // a polynomial in x, y, z (parameters are coefficients).
@@ -52,9 +59,10 @@ std::optional<int> rayPolynomialDegree(const Graph& g, NodeId f);
 
 // Nothing when F is not a polynomial. The formula block (emit_glsl.hpp) must precede it: it
 // declares zs_params.
-std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f);
+// fp64 false: everything in float (GLSL ES), whatever the degree.
+std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f, bool fp64 = true);
 
 // The Bernstein kernels alone for degree d (part of the block above); exposed for tests.
-std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision = false);
+std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision = false, bool fp64 = true);
 
 }  // namespace zs

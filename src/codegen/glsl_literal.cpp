@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <system_error>
+#include "expr/number_text.hpp"
 
 namespace zs {
 namespace {
@@ -12,10 +13,7 @@ namespace {
 // glslang and the drivers do) to exactly f; made into a GLSL float literal, which needs a
 // '.' or an exponent ("2" would be an int).
 std::string shortestFloatText(float f) {
-  char buf[64];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, f);
-  if (ec != std::errc()) return std::to_string(f);  // cannot happen with 64 bytes
-  std::string text(buf, end);
+  std::string text = shortestText(f);
   if (text.find_first_of(".e") == std::string::npos) text += ".0";
   return text;
 }

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cstdio>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "codegen/embedded_templates.hpp"
 
@@ -38,6 +40,61 @@ bool mentionsIdentifier(std::string_view text, std::string_view name) {
   return false;
 }
 
+// The members of frame_params.glsl, (type, name) per line that starts with "flat ".
+std::vector<std::pair<std::string, std::string>> frameMembers(std::string_view block) {
+  std::vector<std::pair<std::string, std::string>> members;
+  std::size_t pos = 0;
+  while (pos < block.size()) {
+    const std::size_t end = std::min(block.find('\n', pos), block.size());
+    std::string_view line = block.substr(pos, end - pos);
+    pos = end + 1;
+    const std::size_t first = line.find_first_not_of(' ');
+    if (first == std::string_view::npos || line.substr(first, 5) != "flat ") continue;
+    line = line.substr(first + 5);
+    const std::size_t space = line.find(' '), semicolon = line.find(';');
+    members.emplace_back(std::string(line.substr(0, space)),
+                         std::string(line.substr(space + 1, semicolon - space - 1)));
+  }
+  return members;
+}
+
+// The uniform that carries member `name` of the frame block: rtName.
+std::string frameUniformName(const std::string& member) {
+  std::string uniform = "rt" + member;
+  uniform[2] = char(std::toupper(static_cast<unsigned char>(uniform[2])));
+  return uniform;
+}
+
+// The uniforms rtName of the frame block's members, and rtCopyFrame(), which copies each into
+// the block `rt`: the one list of the frame's parameters, generated from the block.
+std::string frameUniformsAndCopy(std::string_view block) {
+  std::string uniforms, copies;
+  for (const auto& [type, member] : frameMembers(block)) {
+    uniforms += "uniform " + type + " " + frameUniformName(member) + ";\n";
+    copies += "  rt." + member + " = " + frameUniformName(member) + ";\n";
+  }
+  return uniforms + "\nvoid rtCopyFrame() {\n" + copies + "}\n";
+}
+
+// GLSL ES 3.00 has no interface blocks between stages: there the fragment shader reads the
+// uniforms itself into a global struct of the same members, at the start of main()
+// (RT_FRAME_BEGIN), and the vertex stage copies nothing.
+std::string esFrameStruct(std::string_view block) {
+  std::string s = "struct RtFrame {\n";
+  for (const auto& [type, member] : frameMembers(block)) s += "  " + type + " " + member + ";\n";
+  s += "};\nRtFrame rt;\n";
+  return s + frameUniformsAndCopy(block) + "#define RT_FRAME_BEGIN rtCopyFrame();\n";
+}
+
+// The first line of a template (its #version) for `dialect`, with the precision GLSL ES
+// requires; the template's own numbering resumes after it.
+std::string versionHeader(std::string_view source, ShaderDialect dialect) {
+  const std::size_t firstLine = source.find('\n') + 1;
+  if (dialect == ShaderDialect::Gl330) return std::string(source.substr(0, firstLine));
+  return "#version 300 es\nprecision highp float;\nprecision highp int;\n"
+         "precision highp sampler2D;\nprecision highp usampler2D;\n#line 2 0\n";
+}
+
 }  // namespace
 
 std::string_view shaderTemplate(std::string_view fileName) {
@@ -54,7 +111,8 @@ std::string_view shaderTemplate(std::string_view fileName) {
 namespace {
 
 std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
-                     const IntervalGlsl* interval, std::string_view markers) {
+                     const IntervalGlsl* interval, std::string_view markers,
+                     ShaderDialect dialect) {
   const std::string_view prelude = shaderTemplate(kPreludeTemplate);
   const std::string_view raytrace = shaderTemplate(kRaytraceTemplate);
   const std::string_view marchName =
@@ -67,8 +125,13 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
     throw std::logic_error("internal error in zeroset: shaders/templates/" + std::string(marchName) +
                            " calls neither zs_F nor zs_FGrad, so the generated formula would be unused");
   }
-  std::string out(prelude);  // starts with #version, which must come first
-  if (poly) {  // the ray polynomial is expanded in double
+  if (poly && poly->fp64 && dialect == ShaderDialect::Es300) {
+    throw std::logic_error("internal error in zeroset: a double-precision ray polynomial "
+                           "cannot be assembled for GLSL ES");
+  }
+  // #version must come first.
+  std::string out = versionHeader(prelude, dialect) + std::string(prelude.substr(prelude.find('\n') + 1));
+  if (poly && poly->fp64) {  // the ray polynomial is expanded in double
     // An #extension must precede every non-preprocessor token: right after #version.
     const std::size_t firstLine = out.find('\n') + 1;
     out.insert(firstLine, "#extension GL_ARB_gpu_shader_fp64 : require\n#line 2 0\n");
@@ -87,8 +150,11 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
     appendPiece(out, "generated interval block (src/codegen/emit_interval_glsl.cpp)", string++,
                 interval->source);
   }
+  const std::string_view frame = shaderTemplate(kFrameTemplate);
   appendPiece(out, "shaders/templates/" + std::string(kFrameTemplate), string++,
-              "#define RT_FRAME_STORAGE in\n" + std::string(shaderTemplate(kFrameTemplate)) +
+              (dialect == ShaderDialect::Gl330
+                   ? "#define RT_FRAME_STORAGE in\n" + std::string(frame) + "#define RT_FRAME_BEGIN\n"
+                   : esFrameStruct(frame)) +
                   (interval ? std::string(kHasBeamDefine) : std::string()));
   if (!markers.empty()) appendPiece(out, "highlights.singular markers", string++, markers);
   appendPiece(out, "shaders/templates/" + std::string(kRaytraceTemplate), string++, raytrace);
@@ -104,18 +170,19 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
 
 }  // namespace
 
-std::string assembleFragmentShader(const GlslFormula& formula, std::string_view markers) {
-  return assemble(formula, nullptr, nullptr, markers);
+std::string assembleFragmentShader(const GlslFormula& formula, std::string_view markers,
+                                   ShaderDialect dialect) {
+  return assemble(formula, nullptr, nullptr, markers, dialect);
 }
 
 std::string assembleFragmentShader(const GlslFormula& formula, const RayPolynomialGlsl& poly,
-                                   std::string_view markers) {
-  return assemble(formula, &poly, nullptr, markers);
+                                   std::string_view markers, ShaderDialect dialect) {
+  return assemble(formula, &poly, nullptr, markers, dialect);
 }
 
 std::string assembleFragmentShader(const GlslFormula& formula, const IntervalGlsl& interval,
-                                   std::string_view markers) {
-  return assemble(formula, nullptr, &interval, markers);
+                                   std::string_view markers, ShaderDialect dialect) {
+  return assemble(formula, nullptr, &interval, markers, dialect);
 }
 
 std::string markerBlock(const std::vector<std::array<double, 3>>& points, double radius,
@@ -140,45 +207,22 @@ std::string markerBlock(const std::vector<std::array<double, 3>>& points, double
   return s;
 }
 
-namespace {
-
-// The vertex stage's side of frame_params.glsl, generated from the block so that it is the one
-// list of the frame's parameters: a uniform rtName of the member's type for every member
-// `name` (the names the renderer sets), and rtCopyFrame(), which copies each into the block.
-std::string frameUniforms(std::string_view block) {
-  std::string uniforms, copies;
-  std::size_t pos = 0;
-  while (pos < block.size()) {
-    const std::size_t end = std::min(block.find('\n', pos), block.size());
-    std::string_view line = block.substr(pos, end - pos);
-    pos = end + 1;
-    const std::size_t first = line.find_first_not_of(' ');
-    if (first == std::string_view::npos || line.substr(first, 5) != "flat ") continue;
-    line = line.substr(first + 5);
-    const std::size_t space = line.find(' '), semicolon = line.find(';');
-    const std::string type(line.substr(0, space));
-    const std::string member(line.substr(space + 1, semicolon - space - 1));
-    std::string uniform = "rt" + member;
-    uniform[2] = char(std::toupper(static_cast<unsigned char>(uniform[2])));
-    uniforms += "uniform " + type + " " + uniform + ";\n";
-    copies += "  rt." + member + " = " + uniform + ";\n";
-  }
-  return uniforms + "\nvoid rtCopyFrame() {\n" + copies + "}\n";
-}
-
-}  // namespace
-
-std::string vertexShaderSource() {
+std::string vertexShaderSource(ShaderDialect dialect) {
   // The frame block and its uniforms go right after #version; the template's numbering
   // resumes after them.
   const std::string_view vertex = shaderTemplate(kVertexTemplate);
   const std::string_view frame = shaderTemplate(kFrameTemplate);
   const std::size_t firstLine = vertex.find('\n') + 1;
-  std::string out(vertex.substr(0, firstLine));
-  appendPiece(out, "shaders/templates/" + std::string(kFrameTemplate), 1,
-              "#define RT_FRAME_STORAGE out\n" + std::string(frame));
-  appendPiece(out, "generated from frame_params.glsl (shader_assembly.cpp)", 2,
-              frameUniforms(frame));
+  std::string out = versionHeader(vertex, dialect);
+  if (dialect == ShaderDialect::Gl330) {
+    appendPiece(out, "shaders/templates/" + std::string(kFrameTemplate), 1,
+                "#define RT_FRAME_STORAGE out\n" + std::string(frame));
+    appendPiece(out, "generated from frame_params.glsl (shader_assembly.cpp)", 2,
+                frameUniformsAndCopy(frame));
+  } else {
+    appendPiece(out, "GLSL ES: the fragment stage reads the frame's uniforms (shader_assembly.cpp)",
+                1, "void rtCopyFrame() {}\n");
+  }
   out += "#line 2 0\n";
   out.append(vertex.substr(firstLine));
   return out;

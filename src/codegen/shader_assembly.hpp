@@ -45,6 +45,12 @@ inline constexpr std::string_view kAffinePreludeTemplate = "affine_prelude.frag.
 inline constexpr std::string_view kVertexTemplate = "fullscreen.vert.glsl";
 inline constexpr std::string_view kFrameTemplate = "frame_params.glsl";  // both stages
 
+// Which GLSL the pieces are assembled for: the templates' own desktop GLSL 3.30, or GLSL ES
+// 3.00 for WebGL2. For ES the assembly replaces #version with ES's and the precisions it
+// requires, and carries the frame's parameters as uniforms the fragment stage copies into a
+// struct (ES has no interface blocks between stages); the templates are the same files.
+enum class ShaderDialect { Gl330, Es300 };
+
 // The embedded text of shaders/templates/<fileName>. An unknown name is a bug in zeroset:
 // throws std::logic_error naming the templates that exist.
 std::string_view shaderTemplate(std::string_view fileName);
@@ -57,18 +63,22 @@ std::string markerBlock(const std::vector<std::array<double, 3>>& points, double
 // Prelude + formula block + ray tracer with the thesis' sampling march. Throws
 // std::logic_error if the ray tracer never calls zs_F or zs_FGrad (the formula block would
 // be an unused piece).
-std::string assembleFragmentShader(const GlslFormula& formula, std::string_view markers = {});
+std::string assembleFragmentShader(const GlslFormula& formula, std::string_view markers = {},
+                                   ShaderDialect dialect = ShaderDialect::Gl330);
 
 // The same with the exact Bernstein march: the ray polynomial block (emit_ray_polynomial.hpp)
 // follows the formula block.
+// Throws std::logic_error for a double-precision block (poly.fp64) and GLSL ES.
 std::string assembleFragmentShader(const GlslFormula& formula, const RayPolynomialGlsl& poly,
-                                   std::string_view markers = {});
+                                   std::string_view markers = {},
+                                   ShaderDialect dialect = ShaderDialect::Gl330);
 
 // The same with the interval march: the interval prelude and block follow the formula block.
 std::string assembleFragmentShader(const GlslFormula& formula, const IntervalGlsl& interval,
-                                   std::string_view markers = {});
+                                   std::string_view markers = {},
+                                   ShaderDialect dialect = ShaderDialect::Gl330);
 
 // fullscreen.vert.glsl with frame_params.glsl (as outputs) after its #version line.
-std::string vertexShaderSource();
+std::string vertexShaderSource(ShaderDialect dialect = ShaderDialect::Gl330);
 
 }  // namespace zs

@@ -1,17 +1,17 @@
 #include "expr/graph.hpp"
 
-#include <bit>
 #include <cassert>
 #include <cmath>
 #include <functional>
 
+#include "expr/bit_cast.hpp"
 #include "expr/tape.hpp"
 
 namespace zs {
 
 bool Node::operator==(const Node& o) const {
   return op == o.op && a == o.a && b == o.b && ival == o.ival &&
-         std::bit_cast<std::uint64_t>(value) == std::bit_cast<std::uint64_t>(o.value);
+         bitCast<std::uint64_t>(value) == bitCast<std::uint64_t>(o.value);
 }
 
 std::size_t Graph::NodeHash::operator()(const Node& n) const {
@@ -20,7 +20,7 @@ std::size_t Graph::NodeHash::operator()(const Node& n) const {
   mix(static_cast<std::uint32_t>(n.a));
   mix(static_cast<std::uint32_t>(n.b));
   mix(static_cast<std::uint32_t>(n.ival));
-  mix(std::bit_cast<std::uint64_t>(n.value));
+  mix(bitCast<std::uint64_t>(n.value));
   return static_cast<std::size_t>(h);
 }
 

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <vector>
+#include "expr/number_text.hpp"
 
 namespace zs {
 
@@ -20,9 +21,7 @@ struct Printed {
 };
 
 std::string number(double v) {
-  char buf[64];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);  // shortest exact round trip
-  return ec == std::errc() ? std::string(buf, end) : std::string("nan");
+  return shortestText(v);  // shortest exact round trip
 }
 
 // `a^n` with an integer |n| beyond kMaxIntegerExponent is rejected by the parser, so such a

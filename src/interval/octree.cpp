@@ -183,22 +183,31 @@ OctreeResult buildOctree(const Formula& formula, std::span<const double> params,
   Walker topWalker(shared);
   topWalker.walk(Cell{}, top, split, split < settings.level ? &tasks : nullptr);
 
+#ifdef __EMSCRIPTEN__
+  unsigned threads = 1;  // the web build has no threads (no SharedArrayBuffer without COOP/COEP)
+#else
   unsigned threads = settings.threads ? settings.threads : std::thread::hardware_concurrency();
+#endif
   threads = std::clamp(threads, 1u, unsigned(std::max<std::size_t>(tasks.size(), 1)));
   std::vector<std::vector<OctreeLeaf>> results(tasks.size());
   std::vector<std::vector<LevelStats>> stats(threads);
   std::atomic<std::size_t> next{0};
-  {
+  auto work = [&](unsigned t) {
+    Walker w(shared);
+    for (std::size_t i; (i = next.fetch_add(1)) < tasks.size();) w.walk(tasks[i], results[i], 0, nullptr);
+    w.flushBudget();
+    stats[t] = w.stats();
+  };
+#ifdef __EMSCRIPTEN__
+  work(0);
+#else
+  if (threads == 1) {
+    work(0);
+  } else {
     std::vector<std::jthread> pool;
-    for (unsigned t = 0; t < threads; ++t) {
-      pool.emplace_back([&, t] {
-        Walker w(shared);
-        for (std::size_t i; (i = next.fetch_add(1)) < tasks.size();) w.walk(tasks[i], results[i], 0, nullptr);
-        w.flushBudget();
-        stats[t] = w.stats();
-      });
-    }
+    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work, t);
   }
+#endif
   topWalker.flushBudget();
   if (shared.overBudget)
     return OctreeError{"octree build stopped: more than " + std::to_string(settings.nodeBudget) +

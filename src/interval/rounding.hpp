@@ -6,7 +6,7 @@
 // every double-precision result at points of the operands. glibc's elementary functions
 // are not correctly rounded (its documented errors for double are at most a few ulps), so
 // their endpoints move kLibmUlps outward.
-#include <bit>
+#include "expr/bit_cast.hpp"
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -21,8 +21,8 @@ inline constexpr double kInf = std::numeric_limits<double>::infinity();
 inline double up(double v) {
   if (!(v < kInf)) return v;  // +inf and NaN stay
   if (v == 0.0) return std::numeric_limits<double>::denorm_min();
-  const auto bits = std::bit_cast<std::uint64_t>(v);
-  return std::bit_cast<double>(v > 0 ? bits + 1 : bits - 1);
+  const auto bits = bitCast<std::uint64_t>(v);
+  return bitCast<double>(v > 0 ? bits + 1 : bits - 1);
 }
 inline double down(double v) { return -up(-v); }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include "expr/number_text.hpp"
 
 namespace zs::jsurf {
 namespace {
@@ -73,11 +74,11 @@ std::optional<std::vector<double>> ValueReader::numbers(const Property& p, std::
       error = at(p, i, p.key + " takes " + std::to_string(count) + " numbers; this one is extra");
       return std::nullopt;
     }
-    double x = 0;
     // from_chars does not take a leading '+', which Java does.
     const std::string_view digits = word.starts_with('+') ? word.substr(1) : word;
-    const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), x);
-    if (ec != std::errc{} || ptr != digits.data() + digits.size() || !std::isfinite(x)) {
+    const std::optional<double> parsed = parseDecimal(digits);
+    const double x = parsed.value_or(0);
+    if (!parsed || !std::isfinite(x)) {
       error = at(p, i, "'" + std::string(word) + "' is not a finite number",
                  "write numbers like 0.5 or -1.25e-3, separated by spaces",
                  static_cast<int>(word.size()));

@@ -3,15 +3,14 @@
 #include <charconv>
 
 #include "jsurf/properties.hpp"
+#include "expr/number_text.hpp"
 
 namespace zs::jsurf {
 namespace {
 
 std::string num(double v) {
   if (v == 0) return "0.0";  // no "-0": Java prints it, but it reads oddly
-  char buf[32];
-  const auto res = std::to_chars(buf, buf + sizeof buf, v);
-  std::string s(buf, res.ptr);
+  std::string s = shortestText(v);
   // Java's Scanner and parseDouble read "1e-05" and "2" alike; ".0" only keeps the look
   // of SURFER's own files.
   if (s.find_first_of(".e") == std::string::npos) s += ".0";

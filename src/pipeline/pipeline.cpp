@@ -5,7 +5,9 @@
 #include <limits>
 
 #include "codegen/emit_hessian.hpp"
+#if ZS_HAVE_GLSLANG
 #include "codegen/glsl_validation.hpp"
+#endif
 #include "codegen/shader_assembly.hpp"
 #include "expr/derivative.hpp"
 #include "expr/tape.hpp"
@@ -106,6 +108,10 @@ SphereHierarchy tracingHierarchy(const Formula& formula, std::span<const double>
   return buildSphereHierarchy(octree, &bounds);
 }
 
+int maxBernsteinDegree(const PrepareOptions& options) {
+  return options.dialect == ShaderDialect::Es300 ? kFloatBernsteinMaxDegree : kMaxBernsteinDegree;
+}
+
 std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
                                                           const PrepareOptions& options) {
   PreparedSurface s;
@@ -127,7 +133,7 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
   const bool anyDegree =
       options.bernsteinAboveLimit && scene.render.tracing.method == TracingMethod::Bernstein;
   s.method = resolveMethod(scene.render.tracing.method, s.formula, s.methodWarning,
-                           anyDegree ? std::numeric_limits<int>::max() : kMaxBernsteinDegree);
+                           anyDegree ? std::numeric_limits<int>::max() : maxBernsteinDegree(options));
   s.hierarchy = tracingHierarchy(s.formula, s.params, s.octree, s.method);
   s.times.octreeMs = msSince(t);
 
@@ -143,18 +149,21 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
     markers = markerBlock(s.singularPoints, scene.render.singular.threshold,
                           scene.render.singular.color);
   }
+  const ShaderDialect dialect = options.dialect;
   if (s.method == TracingMethod::Bernstein) {
-    s.rayPolynomial = emitRayPolynomialGlsl(s.formula.graph, s.formula.root);
-    s.fragmentShader = assembleFragmentShader(s.glsl, *s.rayPolynomial, markers);
+    s.rayPolynomial = emitRayPolynomialGlsl(s.formula.graph, s.formula.root,
+                                            dialect == ShaderDialect::Gl330);
+    s.fragmentShader = assembleFragmentShader(s.glsl, *s.rayPolynomial, markers, dialect);
   } else if (s.method == TracingMethod::Interval) {
     s.fragmentShader = assembleFragmentShader(
-        s.glsl, emitIntervalGlsl(s.formula.graph, s.formula.root), markers);
+        s.glsl, emitIntervalGlsl(s.formula.graph, s.formula.root), markers, dialect);
   } else {
-    s.fragmentShader = assembleFragmentShader(s.glsl, markers);
+    s.fragmentShader = assembleFragmentShader(s.glsl, markers, dialect);
   }
-  s.vertexShader = std::string(vertexShaderSource());
+  s.vertexShader = vertexShaderSource(dialect);
   s.times.codegenMs = msSince(t);
 
+#if ZS_HAVE_GLSLANG
   if (options.validate) {
     t = std::chrono::steady_clock::now();
     const ValidationResult vert = validateGlsl(s.vertexShader, Stage::Vertex);
@@ -163,6 +172,7 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
     if (!frag.ok) return formatInternalShaderError("fragment shader for " + scene.formula, frag);
     s.times.validateMs = msSince(t);
   }
+#endif  // the web build has no glslang: WebGL2 compiles the shaders and reports their errors
   return s;
 }
 

@@ -13,6 +13,7 @@
 
 #include "codegen/emit_glsl.hpp"
 #include "codegen/emit_ray_polynomial.hpp"
+#include "codegen/shader_assembly.hpp"
 #include "interval/hierarchy.hpp"
 #include "interval/octree.hpp"
 #include "scene/scene.hpp"
@@ -64,7 +65,10 @@ SphereHierarchy tracingHierarchy(const Formula& formula, std::span<const double>
                                  const Octree& octree, TracingMethod method);
 
 struct PrepareOptions {
-  bool validate = true;  // run glslang on the assembled shaders
+  bool validate = true;  // run glslang on the assembled shaders (not in the web build)
+  // GLSL ES 3.00 for WebGL2: no double there, so Bernstein runs in float up to
+  // kFloatBernsteinMaxDegree and polynomials of higher degree take the interval method.
+  ShaderDialect dialect = ShaderDialect::Gl330;
   // With highlights.singular on: mark these points instead of searching for singular points.
   std::optional<std::vector<std::array<double, 3>>> markedPoints;
   // Bernstein for a polynomial of any degree when "bernstein" is asked for, above
@@ -78,6 +82,9 @@ inline const PrepareOptions kWithoutGlslang = [] {
   o.validate = false;
   return o;
 }();
+
+// The highest degree the exact Bernstein method is used for with these options.
+int maxBernsteinDegree(const PrepareOptions& options);
 
 // Error text is ready to print (caret formatting, octree budget messages, or an internal
 // shader error that names itself a bug).

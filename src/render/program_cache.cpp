@@ -6,18 +6,8 @@
 #include <utility>
 
 #include "render/shader_program.hpp"
-#include "render/shading_defines.hpp"
 
 namespace zs {
-
-ProgramVariant ProgramVariant::of(const RenderSettings& s) {
-  ProgramVariant v;
-  v.samples = std::clamp(s.samples, 1, 16);
-  v.maxHits = s.opacity < 1.0 ? std::clamp(s.tracing.hits, 1, 8) : 1;
-  v.reflection = s.reflection.enabled;
-  v.shading = shadingDefines(s);
-  return v;
-}
 
 ProgramCache::~ProgramCache() { dropAll(); }
 
@@ -42,18 +32,7 @@ unsigned ProgramCache::rebuild(std::string_view vertex, std::string_view fragmen
 
 unsigned ProgramCache::get(const ProgramVariant& v, std::string& log) {
   if (auto it = programs_.find(v); it != programs_.end()) return it->second;
-  // The defines go right after #version, which must stay the first line.
-  std::string source = fragment_;
-  const std::size_t eol = source.find('\n');
-  const std::string defines = "#define RT_SAMPLES " + std::to_string(v.samples) +
-                              "\n#define RT_MAX_HITS " + std::to_string(v.maxHits) +
-                              "\n#define RT_REFLECTION " + (v.reflection ? "1" : "0") +
-                              "\n#define RT_BEAM_TILE " + std::to_string(kBeamTile) + "\n" +
-                              (v.beam ? "#define RT_BEAM\n" : "") +
-                              (v.tileMask ? "#define RT_TILE_MASK\n" : "") + v.shading +
-                              "#line 2 0\n";
-  source.insert(eol == std::string::npos ? source.size() : eol + 1, defines);
-  const unsigned p = compileProgram(vertex_, source, log);
+  const unsigned p = compileProgram(vertex_, withVariantDefines(fragment_, v), log);
   if (!p) return 0;
   // Editing a light makes a new variant each time: keep only the current lighting's.
   for (auto it = programs_.begin(); it != programs_.end();) {

@@ -10,28 +10,10 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "render/program_variant.hpp"
 #include "render/settings.hpp"
 
 namespace zs {
-
-// Pixels per side of a beam pass tile (raytrace_beam.frag.glsl): the tile's rays share one
-// walk through empty space. Smaller tiles enclose tighter but cost more beam fragments; 8
-// measured best (docs/renderer.md).
-inline constexpr int kBeamTile = 8;
-
-struct ProgramVariant {
-  int samples = 1, maxHits = 1;
-  bool reflection = true;
-  std::string shading;    // lights and coloring (render/shading_defines.hpp)
-  bool beam = false;      // the beam pass's program (raytrace_beam.frag.glsl)
-  bool tileMask = false;  // its tile mask's (the same file)
-  bool operator<(const ProgramVariant& o) const {
-    return std::tie(samples, maxHits, reflection, shading, beam, tileMask) <
-           std::tie(o.samples, o.maxHits, o.reflection, o.shading, o.beam, o.tileMask);
-  }
-  // The frame's program for these settings.
-  static ProgramVariant of(const RenderSettings& settings);
-};
 
 class ProgramCache {
  public:

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "render/frame_uniforms.hpp"
 #include "render/hierarchy_gpu.hpp"
 #include "render/image.hpp"
 #include "render/offscreen_target.hpp"
@@ -32,10 +33,6 @@ struct Frame {
 
 // Called after each tile; return false to stop (the frame then reports "cancelled").
 using ProgressFn = std::function<bool(int tilesDone, int tilesTotal)>;
-
-// Which geometry starts the rays: the thesis' two full-screen triangles, or the box where
-// hits can lie, so background pixels cost nothing (same picture; docs/renderer.md).
-enum class Proxy { FullScreen, Box };
 
 class RayTracer {
  public:
@@ -87,12 +84,10 @@ class RayTracer {
  private:
   std::string prepare(const RenderSettings& settings, const Domain& domain, int width,
                       int height, bool offscreen);
-  // Sets every uniform of `program` (in use); returns the number of vertices to draw (0:
-  // nothing can be hit).
+  // Sets every uniform of `program` (in use) from frame_uniforms.hpp; returns the number of
+  // vertices to draw (0: nothing can be hit).
   int setUniforms(unsigned program, const RenderSettings& settings, const Domain& domain,
                   int width, int height);
-  int setProxyUniforms(unsigned program, const Camera& camera, const Domain& domain, int width,
-                       int height);
   // Everything a draw needs besides the program, its uniforms and the cleared target: the
   // hierarchy texture, the proxy's vertex array and culling, the viewport.
   void setDrawState(int width, int height);

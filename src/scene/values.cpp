@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "scene/hints.hpp"
+#include "expr/number_text.hpp"
 
 namespace zs::scene_detail {
 
@@ -109,9 +110,7 @@ std::string typeName(const toml::node& node) {
 std::string formatDouble(double v) {
   if (std::isnan(v)) return "nan";
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  char buf[64];
-  const auto res = std::to_chars(buf, buf + sizeof buf, v);
-  std::string s(buf, res.ptr);
+  std::string s = shortestText(v);
   if (s.find_first_of(".e") == std::string::npos) s += ".0";
   return s;
 }

@@ -11,14 +11,16 @@
 
 #include "app/repl/command.hpp"
 #include "app/repl/scene_edit.hpp"
-#include "app/viewer/arcball.hpp"
+#include "interact/arcball.hpp"
 #include "app/viewer/examples.hpp"
 #include "app/viewer/fonts.hpp"
-#include "app/viewer/key_bindings.hpp"
+#include "interact/key_bindings.hpp"
 #include "process.hpp"
 #include "render/camera.hpp"
 
 namespace zs::app {
+// The camera motions and key actions are the interact stage's, shared with the web page.
+using namespace zs::interact;
 namespace {
 
 double length(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }

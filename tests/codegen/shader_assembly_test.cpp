@@ -6,7 +6,10 @@
 
 #include <stdexcept>
 
+#include "codegen/emit_interval_glsl.hpp"
+#include "codegen/emit_ray_polynomial.hpp"
 #include "codegen/glsl_validation.hpp"
+#include "parser/parser.hpp"
 #include "codegen_test_util.hpp"
 
 namespace zs::test {
@@ -58,6 +61,45 @@ TEST(ShaderAssembly, FragmentAndVertexShadersPassGlslang) {
   EXPECT_TRUE(fragment.ok) << formatInternalShaderError("fragment shader", fragment);
   const ValidationResult vertex = validateGlsl(vertexShaderSource(), Stage::Vertex);
   EXPECT_TRUE(vertex.ok) << formatInternalShaderError("vertex shader", vertex);
+}
+
+// WebGL2's GLSL ES 3.00 from the same templates: every method, the vertex stage too.
+TEST(ShaderAssembly, GlslEsShadersPassGlslangForEveryMethod) {
+  for (const char* text : {"a x^2 + y^2 + z^2 - 1", "x^4 + y^4 + z^4 - 1", "sin(x y) + z",
+                           "x^2 y + y^2 z + z^2 x - 0.4 (x y + y z + z x)", "0.5"}) {
+    SCOPED_TRACE(text);
+    ParseResult parsed = parseFormula(text);
+    ASSERT_TRUE(std::holds_alternative<Formula>(parsed));
+    const Formula& f = std::get<Formula>(parsed);
+    const std::optional<GlslFormula> glsl = generate(text);
+    ASSERT_TRUE(glsl);
+    std::vector<std::string> shaders{
+        assembleFragmentShader(*glsl, {}, ShaderDialect::Es300),
+        assembleFragmentShader(*glsl, emitIntervalGlsl(f.graph, f.root), {}, ShaderDialect::Es300)};
+    if (auto poly = emitRayPolynomialGlsl(f.graph, f.root, false)) {
+      EXPECT_FALSE(poly->fp64);
+      EXPECT_EQ(poly->source.find("double"), std::string::npos);
+      shaders.push_back(assembleFragmentShader(*glsl, *poly, {}, ShaderDialect::Es300));
+    }
+    for (const std::string& shader : shaders) {
+      EXPECT_EQ(shader.rfind("#version 300 es\n", 0), 0u);
+      const ValidationResult result = validateGlsl(shader, Stage::Fragment);
+      EXPECT_TRUE(result.ok) << formatInternalShaderError("GLSL ES fragment shader", result);
+    }
+  }
+  const ValidationResult vertex = validateGlsl(vertexShaderSource(ShaderDialect::Es300), Stage::Vertex);
+  EXPECT_TRUE(vertex.ok) << formatInternalShaderError("GLSL ES vertex shader", vertex);
+}
+
+TEST(ShaderAssembly, DoublePrecisionRayPolynomialIsNotAssembledForGlslEs) {
+  ParseResult parsed = parseFormula("x^2 + y^2 + z^2 - 1");
+  const Formula& f = std::get<Formula>(parsed);
+  const std::optional<GlslFormula> glsl = generate("x^2 + y^2 + z^2 - 1");
+  ASSERT_TRUE(glsl);
+  const auto poly = emitRayPolynomialGlsl(f.graph, f.root);  // double: desktop only
+  ASSERT_TRUE(poly);
+  EXPECT_THROW((void)assembleFragmentShader(*glsl, *poly, {}, ShaderDialect::Es300),
+               std::logic_error);
 }
 
 TEST(ShaderAssembly, ErrorsInTheFormulaBlockPointIntoIt) {

@@ -12,11 +12,13 @@
 #include <cstdio>
 #include <variant>
 
-#include "app/viewer/key_bindings.hpp"
+#include "interact/key_bindings.hpp"
 #include "parser/parser.hpp"
 #include "scene/scene_io.hpp"
 
 namespace zs::app {
+// The camera motions and key actions are the interact stage's, shared with the web page.
+using namespace zs::interact;
 namespace {
 
 double& paramSlot(Scene& scene, const std::string& name) {

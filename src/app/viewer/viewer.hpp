@@ -18,7 +18,7 @@
 #include "app/repl/command.hpp"
 #include "app/viewer/examples.hpp"
 #include "app/viewer/gallery_panel.hpp"
-#include "app/viewer/key_bindings.hpp"
+#include "interact/key_bindings.hpp"
 #include "app/viewer/panel.hpp"
 #include "app/viewer/surface_view.hpp"
 #include "app/viewer/surface_worker.hpp"
@@ -88,7 +88,7 @@ class Viewer {
   void onMouseButton(int button, int action);
   void onCursor(double x, double y);
   void onScroll(double dy);
-  void runAction(Action action);
+  void runAction(interact::Action action);
   void showExample(int delta);
   void showExampleAt(int index);
   void toggleGallery();

@@ -5,10 +5,12 @@
 
 #include <cstdio>
 
-#include "app/viewer/arcball.hpp"
+#include "interact/arcball.hpp"
 #include "app/viewer/viewer.hpp"
 
 namespace zs::app {
+// The camera motions and key actions are the interact stage's, shared with the web page.
+using namespace zs::interact;
 namespace {
 
 Viewer* self(GLFWwindow* window) { return static_cast<Viewer*>(glfwGetWindowUserPointer(window)); }

@@ -1,5 +1,5 @@
 #pragma once
-// Mouse motion to camera motion, for the viewer: takes the camera at the start of a drag and
+// Mouse and touch motion to camera motion, for the viewer and the web page: takes the camera at the start of a drag and
 // two cursor positions in window pixels (origin top-left), puts out the camera orbited about
 // its target (Shoemake's arcball: the cursor lies on a virtual sphere filling the window,
 // and the surface turns as if that sphere were dragged), a point (the point light) turned
@@ -7,7 +7,7 @@
 // Pure math on doubles; degenerate input (zero-size window, eye on the target) is a no-op.
 #include "render/settings.hpp"
 
-namespace zs::app {
+namespace zs::interact {
 
 struct DragPoints {
   double x0, y0, x1, y1;  // cursor at the press and now, window pixels
@@ -25,4 +25,4 @@ Vec3 orbitPoint(const Camera& view, const Vec3& point, const DragPoints& drag);
 // shrinks the view height); the distance stays within [1e-3, 1e4].
 Camera zoomCamera(const Camera& camera, double wheelSteps);
 
-}  // namespace zs::app
+}  // namespace zs::interact

@@ -8,7 +8,7 @@
 
 #include "scene/scene.hpp"
 
-namespace zs::app {
+namespace zs::interact {
 
 enum class Action {
   NextExample, PrevExample,
@@ -43,4 +43,4 @@ Effect applyAction(Action action, Scene& scene, std::string& message);
 // Octree level reachable with the keys; deeper levels are set in the panel, on purpose.
 inline constexpr int kMaxKeyLevel = 8;
 
-}  // namespace zs::app
+}  // namespace zs::interact

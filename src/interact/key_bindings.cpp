@@ -1,6 +1,6 @@
 // Key table and the scene edits behind the keys. Lowercase increases or toggles, Shift
 // decreases: two keys per ± option, as in the thesis prototype's list (chapter 5.1).
-#include "app/viewer/key_bindings.hpp"
+#include "interact/key_bindings.hpp"
 
 #include <GLFW/glfw3.h>
 
@@ -9,7 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace zs::app {
+namespace zs::interact {
 namespace {
 
 constexpr int S = GLFW_MOD_SHIFT;
@@ -130,4 +130,4 @@ Effect applyAction(Action action, Scene& scene, std::string& message) {
   return Effect::None;
 }
 
-}  // namespace zs::app
+}  // namespace zs::interact

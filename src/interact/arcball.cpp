@@ -1,6 +1,6 @@
 // Arcball with glm quaternions. The drag's rotation is found in camera coordinates (x right,
 // y up, z towards the viewer) and carried to world space through the camera basis.
-#include "app/viewer/arcball.hpp"
+#include "interact/arcball.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 
 #include "render/camera.hpp"
 
-namespace zs::app {
+namespace zs::interact {
 namespace {
 
 glm::dvec3 toGlm(const Vec3& v) { return {v[0], v[1], v[2]}; }
@@ -80,4 +80,4 @@ Camera zoomCamera(const Camera& camera, double wheelSteps) {
   return out;
 }
 
-}  // namespace zs::app
+}  // namespace zs::interact

@@ -1,0 +1,147 @@
+#include "render/frame_uniforms.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/camera.hpp"
+
+namespace zs {
+namespace {
+
+class UniformList {
+ public:
+  explicit UniformList(std::vector<UniformValue>& out) : out_(out) {}
+  void integer(const char* name, int v) {
+    out_.push_back({name, UniformValue::Kind::Int, {}, v});
+  }
+  void real(const char* name, double v) {
+    out_.push_back({name, UniformValue::Kind::Float, {float(v)}, 0});
+  }
+  void vec2(const char* name, double a, double b) {
+    out_.push_back({name, UniformValue::Kind::Vec2, {float(a), float(b)}, 0});
+  }
+  void vec3(const char* name, const Vec3& v) {
+    out_.push_back({name, UniformValue::Kind::Vec3, {float(v[0]), float(v[1]), float(v[2])}, 0});
+  }
+  void vec3(const char* name, const std::array<float, 3>& v) {
+    out_.push_back({name, UniformValue::Kind::Vec3, {v[0], v[1], v[2]}, 0});
+  }
+  void vec4(const char* name, double a, double b, double c, double d) {
+    out_.push_back({name, UniformValue::Kind::Vec4, {float(a), float(b), float(c), float(d)}, 0});
+  }
+  void array(const char* name, std::span<const float> v) {
+    out_.push_back({name, UniformValue::Kind::FloatArray, {v.begin(), v.end()}, 0});
+  }
+  void mat4(const char* name, const std::array<float, 16>& m) {
+    out_.push_back({name, UniformValue::Kind::Mat4, {m.begin(), m.end()}, 0});
+  }
+
+ private:
+  std::vector<UniformValue>& out_;
+};
+
+// The proxy's uniforms (fullscreen.vert.glsl); returns its vertex count.
+int proxyUniforms(UniformList& u, const Camera& camera, const Domain& domain,
+                  const GpuHierarchy& hierarchy, const FrameInputs& in) {
+  u.integer("rtProxy", in.proxy == Proxy::Box ? 1 : 0);
+  if (in.proxy == Proxy::FullScreen) return 6;
+  if (hierarchy.count == 0) return 0;
+  // Hits lie in the domain and in the root box of the hierarchy.
+  Vec3 lo{}, hi{};
+  double diagonal = 0, farthest = 0;
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = std::max(domain.min[a], double(hierarchy.rootMin[a]));
+    hi[a] = std::min(domain.max[a], double(hierarchy.rootMax[a]));
+    if (!(lo[a] <= hi[a])) return 0;
+    diagonal += (hi[a] - lo[a]) * (hi[a] - lo[a]);
+    const double e = std::max(std::abs(lo[a] - camera.eye[a]), std::abs(hi[a] - camera.eye[a]));
+    farthest += e * e;
+  }
+  farthest = std::sqrt(farthest);
+  // Widen by two pixels' footprint at the far side (the box outline is rasterized at pixel
+  // centers; supersampling rays reach half a pixel further) plus the shader's pad.
+  const double plane = imagePlaneHalfHeight(camera) * 2 / in.height;
+  const double margin = 2 * plane * (camera.projection == Projection::Orthographic ? 1 : farthest) +
+                        1e-5 * std::sqrt(diagonal) + hierarchy.pad;
+  for (int a = 0; a < 3; ++a) {
+    lo[a] -= margin;
+    hi[a] += margin;
+  }
+  u.vec3("rtBoxMin", lo);
+  u.vec3("rtBoxMax", hi);
+  const double farDist = 2 * farthest + 1;
+  u.mat4("rtViewProj", viewProjection(camera, in.width, in.height, farDist * 1e-7, farDist));
+  return 36;
+}
+
+}  // namespace
+
+FrameUniforms frameUniforms(const RenderSettings& s, const Domain& clip, const FrameInputs& in) {
+  FrameUniforms result;
+  UniformList u(result.values);
+  const GpuHierarchy& hierarchy = *in.hierarchy;
+  // Rays are clipped to the domain's bounding box, then to its ball when it is a sphere.
+  const Domain domain = boundingBox(clip);
+  const bool ball = clip.shape == DomainShape::Sphere;
+  u.vec4("rtBall", clip.center[0], clip.center[1], clip.center[2], ball ? clip.radius : 0.0);
+  u.integer("rtHierarchy", 0);
+  u.integer("rtBeam", 1);    // its own unit: never aliases the hierarchy's
+  u.integer("rtBeamOn", 0);  // the tracer turns it on after a beam pass
+  u.integer("rtNodeCount", hierarchy.count);
+  u.integer("rtFirstNode", hierarchy.rootIsLeaf ? 0 : 1);
+  u.vec3("rtRootMin", hierarchy.rootMin);
+  u.vec3("rtRootMax", hierarchy.rootMax);
+  u.vec3("rtCell", hierarchy.cell);
+  u.real("rtPad", hierarchy.pad);
+  u.vec3("rtDomainMin", domain.min);
+  u.vec3("rtDomainMax", domain.max);
+  u.vec2("rtResolution", in.width, in.height);
+
+  const CameraBasis basis = cameraBasis(s.camera);
+  u.vec3("rtEye", basis.eye);
+  u.vec3("rtForward", basis.forward);
+  u.vec3("rtRight", basis.right);
+  u.vec3("rtUp", basis.up);
+  u.real("rtPlaneHalf", imagePlaneHalfHeight(s.camera));
+  u.integer("rtOrtho", s.camera.projection == Projection::Orthographic);
+
+  const Tracing& t = s.tracing;
+  u.integer("rtIntervals", std::clamp(t.intervals, 1, 4096));
+  u.integer("rtMaxBisections", std::clamp(t.maxBisections, 1, 200));
+  u.real("rtEpsilon", std::isfinite(t.epsilon) && t.epsilon > 0 ? t.epsilon : 1e-6);
+  u.integer("rtTangentRoots", in.tangentRoots);
+  // Tangent roots are accepted within a distance far below epsilon: epsilon bounds how
+  // precisely a crossing is located, not how near a ray may pass and still count as a hit.
+  double diagonal = 0;
+  for (int a = 0; a < 3; ++a) diagonal += (domain.max[a] - domain.min[a]) * (domain.max[a] - domain.min[a]);
+  u.real("rtTangentTolerance", 1e-5 * std::max(std::sqrt(diagonal), 1e-6));
+
+  // The lights themselves are shader constants (render/shading_defines.hpp).
+  const Materials& m = s.materials;
+  const double ambient = std::max(s.lights.ambient, 0.0);
+  auto phong = [&](const char* name, const Material& material) {
+    u.vec4(name, material.ambient * ambient, material.diffuse, material.specular,
+           std::max(material.shininess, 0.0));
+  };
+  u.vec3("rtFrontColor", m.front.color);
+  u.vec3("rtBackColor", m.back.color);
+  phong("rtFrontPhong", m.front);
+  phong("rtBackPhong", m.back);
+  u.real("rtCurvatureRange", in.curvatureRange > 0 ? in.curvatureRange : 1.0);
+
+  u.integer("rtSilhouetteOn", s.silhouette.enabled);
+  u.real("rtSilhouetteThreshold", s.silhouette.threshold);
+  u.vec3("rtSilhouetteColor", s.silhouette.color);
+  u.integer("rtBorderOn", s.border.enabled);
+  u.real("rtBorderThreshold", s.border.threshold);
+  u.vec3("rtBorderColor", s.border.color);
+  u.real("rtPrimaryWeight", std::clamp(s.reflection.primaryWeight, 0.0, 1.0));
+  u.real("rtOpacity", std::clamp(s.opacity, 0.0, 1.0));
+  u.vec3("rtBackground", s.background);
+
+  if (!in.params.empty()) u.array("zs_params", in.params);
+  result.vertices = proxyUniforms(u, s.camera, domain, hierarchy, in);
+  return result;
+}
+
+}  // namespace zs

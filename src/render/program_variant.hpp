@@ -1,0 +1,37 @@
+#pragma once
+// The compile-time features of a frame's fragment shader (supersampling, kept hits,
+// reflection, lights and coloring, the beam pass and its tile mask): takes the
+// RenderSettings, puts out the variant and the #define lines that select it, inserted
+// right after #version. GL-free: the desktop's program cache (program_cache.hpp) and the web
+// page (src/web) compile the same variants from the same text.
+#include <string>
+#include <string_view>
+#include <tuple>
+
+#include "render/settings.hpp"
+
+namespace zs {
+
+// Pixels per side of a beam pass tile (raytrace_beam.frag.glsl): the tile's rays share one
+// walk through empty space. Smaller tiles enclose tighter but cost more beam fragments; 8
+// measured best (docs/renderer.md).
+inline constexpr int kBeamTile = 8;
+
+struct ProgramVariant {
+  int samples = 1, maxHits = 1;
+  bool reflection = true;
+  std::string shading;    // lights and coloring (render/shading_defines.hpp)
+  bool beam = false;      // the beam pass's program (raytrace_beam.frag.glsl)
+  bool tileMask = false;  // its tile mask's (the same file)
+  bool operator<(const ProgramVariant& o) const {
+    return std::tie(samples, maxHits, reflection, shading, beam, tileMask) <
+           std::tie(o.samples, o.maxHits, o.reflection, o.shading, o.beam, o.tileMask);
+  }
+  // The frame's program for these settings.
+  static ProgramVariant of(const RenderSettings& settings);
+};
+
+// `fragment` (whose first line is #version) with the variant's #define lines after that line.
+std::string withVariantDefines(std::string_view fragment, const ProgramVariant& variant);
+
+}  // namespace zs

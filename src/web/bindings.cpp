@@ -1,0 +1,201 @@
+// The web page's window into the core (embind): WebSession's methods, with the hierarchy's
+// texels as a Uint32Array and a frame's uniforms as plain objects, so that web/*.js only
+// wires controls and hands numbers to WebGL2.
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include "web/web_session.hpp"
+
+using emscripten::val;
+
+namespace zs::web {
+namespace {
+
+std::string applyOverridesJs(WebSession& s, val assignments) {
+  std::vector<std::string> list;
+  const int n = assignments["length"].as<int>();
+  for (int i = 0; i < n; ++i) list.push_back(assignments[i].as<std::string>());
+  return s.applyOverrides(list);
+}
+
+val hierarchyJs(const WebSession& s) {
+  const GpuHierarchy& h = s.hierarchy();
+  val out = val::object();
+  // A copy: the view into wasm memory would be invalidated when the heap grows.
+  val texels = val::global("Uint32Array").new_(h.texels.size());
+  texels.call<void>("set", val(emscripten::typed_memory_view(h.texels.size(), h.texels.data())));
+  out.set("texels", texels);
+  out.set("count", h.count);
+  return out;
+}
+
+const char* kindName(UniformValue::Kind kind) {
+  switch (kind) {
+    case UniformValue::Kind::Int: return "int";
+    case UniformValue::Kind::Float: return "float";
+    case UniformValue::Kind::Vec2: return "vec2";
+    case UniformValue::Kind::Vec3: return "vec3";
+    case UniformValue::Kind::Vec4: return "vec4";
+    case UniformValue::Kind::Mat4: return "mat4";
+    case UniformValue::Kind::FloatArray: return "floats";
+  }
+  return "float";
+}
+
+val frameJs(const WebSession& s, int width, int height) {
+  const FrameUniforms frame = s.frame(width, height);
+  val uniforms = val::array();
+  for (const UniformValue& u : frame.values) {
+    val entry = val::object();
+    entry.set("name", u.name);
+    entry.set("kind", std::string(kindName(u.kind)));
+    if (u.kind == UniformValue::Kind::Int) {
+      entry.set("value", u.integer);
+    } else {
+      val values = val::global("Float32Array").new_(u.values.size());
+      values.call<void>("set", val(emscripten::typed_memory_view(u.values.size(), u.values.data())));
+      entry.set("value", values);
+    }
+    uniforms.call<void>("push", entry);
+  }
+  val out = val::object();
+  out.set("uniforms", uniforms);
+  out.set("vertices", frame.vertices);
+  const RenderSettings& r = s.scene().render;
+  val background = val::array();
+  for (double c : r.background) background.call<void>("push", c);
+  out.set("background", background);
+  return out;
+}
+
+val paramsJs(const WebSession& s) {
+  val out = val::array();
+  for (const auto& [name, value] : s.params()) {
+    val p = val::object();
+    p.set("name", name);
+    p.set("value", value);
+    out.call<void>("push", p);
+  }
+  return out;
+}
+
+// The viewer's actions that are the page's own (not scene edits), by the name app.js
+// handles; "" for those the page has no use for (mesh export, quit).
+const char* pageAction(interact::Action action) {
+  using interact::Action;
+  switch (action) {
+    case Action::NextExample: return "next";
+    case Action::PrevExample: return "previous";
+    case Action::Screenshot: case Action::WindowShot: return "png";
+    case Action::SaveScene: return "save";
+    case Action::FocusFormula: return "formula";
+    case Action::TogglePanel: return "panel";
+    case Action::ToggleGallery: return "gallery";
+    case Action::ResetView: return "reset";
+    default: return "";
+  }
+}
+
+val keyJs(WebSession& s, int keyCode, int mods) {
+  std::string message;
+  const int effect = s.key(keyCode, mods, message);
+  val out = val::object();
+  out.set("effect", effect);
+  out.set("message", message);
+  const interact::KeyBinding* binding = interact::findBinding(keyCode, mods);
+  out.set("action", std::string(binding ? pageAction(binding->action) : ""));
+  return out;
+}
+
+// The key table for the page's list of keys: the bindings the page acts on.
+val keysJs() {
+  val out = val::array();
+  for (const interact::KeyBinding& b : interact::keyBindings()) {
+    const bool edit = interact::Action(b.action) != interact::Action::ExportMesh &&
+                      b.action != interact::Action::Quit;
+    if (!edit) continue;
+    val k = val::object();
+    k.set("key", std::string(b.keyName));
+    k.set("description", std::string(b.description));
+    out.call<void>("push", k);
+  }
+  return out;
+}
+
+val settingsJs(const WebSession& s) {
+  val out = val::array();
+  for (const Setting& setting : s.settings()) {
+    val e = val::object();
+    e.set("key", setting.key);
+    e.set("type", setting.type);
+    e.set("lo", setting.lo);
+    e.set("hi", setting.hi);
+    e.set("loOpen", setting.loOpen);
+    e.set("hiOpen", setting.hiOpen);
+    val choices = val::array();
+    for (const std::string& c : setting.choices) choices.call<void>("push", c);
+    e.set("choices", choices);
+    val value = val::array();
+    for (double v : setting.value) value.call<void>("push", v);
+    e.set("value", value);
+    e.set("choice", setting.choice);
+    out.call<void>("push", e);
+  }
+  return out;
+}
+
+std::string formulaJs(const WebSession& s) { return s.scene().formula; }
+
+val sizeJs(const WebSession& s) {
+  val out = val::object();
+  out.set("width", s.scene().width);
+  out.set("height", s.scene().height);
+  return out;
+}
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(zeroset) {
+  emscripten::function("keys", &keysJs);
+  emscripten::class_<WebSession>("Session")
+      .constructor<>()
+      // embind passes std::string, not std::string_view
+      .function("loadFormula", emscripten::optional_override(
+                                   [](WebSession& s, const std::string& f) { return s.loadFormula(f); }))
+      .function("setFormula", emscripten::optional_override(
+                                  [](WebSession& s, const std::string& f) { return s.setFormula(f); }))
+      .function("loadSurf", emscripten::optional_override(
+                                [](WebSession& s, const std::string& text, const std::string& name) {
+                                  return s.loadSurf(text, name);
+                                }))
+      .function("loadJsurf", emscripten::optional_override(
+                                 [](WebSession& s, const std::string& text, const std::string& name) {
+                                   return s.loadJsurf(text, name);
+                                 }))
+      .function("applyOverrides", &applyOverridesJs)
+      .function("setParam", emscripten::optional_override(
+                                [](WebSession& s, const std::string& name, double value) {
+                                  return s.setParam(name, value);
+                                }))
+      .function("prepare", &WebSession::prepare)
+      .function("prepared", &WebSession::prepared)
+      .function("generation", &WebSession::generation)
+      .function("vertexShader", &WebSession::vertexShader)
+      .function("fragmentShader", &WebSession::fragmentShader)
+      .function("hierarchy", &hierarchyJs)
+      .function("frame", &frameJs)
+      .function("beginDrag", &WebSession::beginDrag)
+      .function("drag", &WebSession::drag)
+      .function("zoom", &WebSession::zoom)
+      .function("key", &keyJs)
+      .function("resetView", &WebSession::resetView)
+      .function("sceneText", &WebSession::sceneText)
+      .function("formula", &formulaJs)
+      .function("params", &paramsJs)
+      .function("settings", &settingsJs)
+      .function("notes", &WebSession::notes)
+      .function("method", &WebSession::method)
+      .function("sceneSize", &sizeJs);
+}
+
+}  // namespace zs::web

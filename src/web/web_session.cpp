@@ -1,0 +1,219 @@
+#include "web/web_session.hpp"
+
+#include <cstdio>
+#include <type_traits>
+#include <utility>
+
+#include "interact/arcball.hpp"
+#include "jsurf/jsurf.hpp"
+#include "parser/parser.hpp"
+#include "render/program_variant.hpp"
+#include "scene/scene_io.hpp"
+#include "scene/schema.hpp"
+
+namespace zs::web {
+namespace {
+
+// A formula's error at the caret, as `zeroset check` prints it.
+std::string formulaError(std::string_view formula) {
+  ParseResult parsed = parseFormula(formula);
+  if (auto* err = std::get_if<ParseError>(&parsed)) return formatError(formula, *err);
+  return {};
+}
+
+}  // namespace
+
+WebSession::WebSession() : loadedCamera_(scene_.render.camera), dragStart_(loadedCamera_) {}
+
+std::string WebSession::replaceScene(Scene scene, std::string importNotes) {
+  if (std::string error = formulaError(scene.formula); !error.empty()) return error;
+  scene_ = std::move(scene);
+  loadedCamera_ = dragStart_ = scene_.render.camera;
+  importNotes_ = std::move(importNotes);
+  return {};
+}
+
+std::string WebSession::loadFormula(std::string_view formula) {
+  Scene scene;
+  scene.formula = std::string(formula);
+  return replaceScene(std::move(scene), {});
+}
+
+std::string WebSession::setFormula(std::string_view formula) {
+  if (std::string error = formulaError(formula); !error.empty()) return error;
+  scene_.formula = std::string(formula);
+  return {};
+}
+
+std::string WebSession::loadSurf(std::string_view text, std::string_view fileName) {
+  SceneResult result = parseScene(text, fileName);
+  if (auto* err = std::get_if<SceneError>(&result)) return formatSceneError(*err);
+  return replaceScene(std::get<Scene>(std::move(result)), {});
+}
+
+std::string WebSession::loadJsurf(std::string_view text, std::string_view fileName) {
+  jsurf::ImportResult result = jsurf::importJsurf(text, fileName);
+  if (auto* err = std::get_if<SceneError>(&result)) return formatSceneError(*err);
+  jsurf::Imported imported = std::get<jsurf::Imported>(std::move(result));
+  std::string notes;
+  for (const SceneError& w : imported.warnings) notes += jsurf::formatWarning(w);
+  return replaceScene(std::move(imported.scene), std::move(notes));
+}
+
+std::string WebSession::applyOverrides(std::span<const std::string> assignments) {
+  Scene edited = scene_;
+  if (auto err = zs::applyOverrides(edited, assignments)) return formatSceneError(*err);
+  if (std::string error = formulaError(edited.formula); !error.empty()) return error;
+  const bool cameraChanged = !(edited.render.camera == scene_.render.camera);
+  scene_ = std::move(edited);
+  if (cameraChanged) loadedCamera_ = dragStart_ = scene_.render.camera;
+  return {};
+}
+
+std::string WebSession::setParam(std::string_view name, double value) {
+  char number[32];
+  std::snprintf(number, sizeof number, "%.17g", value);
+  const std::string assignment = "params." + std::string(name) + "=" + number;
+  Scene edited = scene_;
+  if (auto err = zs::applyOverride(edited, assignment)) return formatSceneError(*err);
+  scene_ = std::move(edited);
+  return {};
+}
+
+std::string WebSession::prepare() {
+  PrepareOptions options;
+  options.validate = false;  // WebGL2 compiles, and reports what it rejects
+  options.dialect = ShaderDialect::Es300;
+  auto result = prepareSurface(scene_, options);
+  if (auto* err = std::get_if<std::string>(&result)) return *err;
+  PreparedSurface surface = std::get<PreparedSurface>(std::move(result));
+  GpuHierarchy gpu;
+  if (std::string error = toGpuHierarchy(surface.hierarchy.packed(), gpu); !error.empty())
+    return "error: " + error + "\n";
+  gpu_ = std::move(gpu);
+  params_ = surface.paramsAsFloats();
+  surface_ = std::move(surface);
+  ++generation_;
+  return {};
+}
+
+const std::string& WebSession::vertexShader() const {
+  static const std::string none;
+  return surface_ ? surface_->vertexShader : none;
+}
+
+std::string WebSession::fragmentShader() const {
+  if (!surface_) return {};
+  return withVariantDefines(surface_->fragmentShader, ProgramVariant::of(scene_.render));
+}
+
+FrameUniforms WebSession::frame(int width, int height) const {
+  FrameInputs in;
+  in.hierarchy = &gpu_;
+  in.params = params_;
+  in.width = width;
+  in.height = height;
+  in.proxy = Proxy::Box;
+  // The automatic range needs a read-back of curvature values that WebGL2 cannot render
+  // into without an extension; the page uses the scene's range, or 1.
+  in.curvatureRange = scene_.render.shading.curvatureRange;
+  FrameUniforms frame = frameUniforms(scene_.render, scene_.domain, in);
+  if (!surface_) frame.vertices = 0;
+  return frame;
+}
+
+void WebSession::beginDrag() { dragStart_ = scene_.render.camera; }
+
+void WebSession::drag(double x0, double y0, double x1, double y1, int width, int height) {
+  scene_.render.camera = interact::orbitCamera(dragStart_, {x0, y0, x1, y1, width, height});
+}
+
+void WebSession::zoom(double wheelSteps) {
+  scene_.render.camera = interact::zoomCamera(scene_.render.camera, wheelSteps);
+}
+
+int WebSession::key(int keyCode, int mods, std::string& message) {
+  message.clear();
+  const interact::KeyBinding* binding = interact::findBinding(keyCode, mods);
+  if (!binding) return 0;
+  if (binding->action == interact::Action::ResetView) {
+    resetView();
+    message = "view reset";
+    return 1;
+  }
+  return static_cast<int>(interact::applyAction(binding->action, scene_, message));
+}
+
+void WebSession::resetView() { scene_.render.camera = dragStart_ = loadedCamera_; }
+
+std::string WebSession::sceneText() const { return saveScene(scene_); }
+
+std::vector<Setting> WebSession::settings() const {
+  using namespace scene_detail;
+  std::vector<Setting> out;
+  Scene scene = scene_;  // the schema's fields address a mutable Scene
+  for (const KeySpec& spec : keySpecs()) {
+    if (spec.legacyLight >= 0) continue;  // old names, read only
+    Setting s;
+    s.key = std::string(spec.name);
+    s.lo = spec.range.lo;
+    s.hi = spec.range.hi;
+    s.loOpen = spec.range.loOpen;
+    s.hiOpen = spec.range.hiOpen;
+    std::visit(
+        [&](const auto& field) {
+          using F = std::decay_t<decltype(field)>;
+          if constexpr (std::is_same_v<F, BoolRef>) {
+            s.type = "bool";
+            s.value = {field(scene) ? 1.0 : 0.0};
+          } else if constexpr (std::is_same_v<F, IntRef>) {
+            s.type = "int";
+            s.value = {double(field(scene))};
+          } else if constexpr (std::is_same_v<F, SizeRef>) {
+            s.type = "int";
+            s.value = {double(field(scene))};
+          } else if constexpr (std::is_same_v<F, RealRef>) {
+            s.type = "real";
+            s.value = {field(scene)};
+          } else if constexpr (std::is_same_v<F, VecRef>) {
+            s.type = "vec3";
+            const Vec3& v = field(scene);
+            s.value = {v[0], v[1], v[2]};
+          } else {
+            s.type = "enum";
+            for (std::string_view name : field.names) s.choices.emplace_back(name);
+            const int index = field.get(scene);
+            if (index >= 0 && index < int(s.choices.size())) s.choice = s.choices[std::size_t(index)];
+          }
+        },
+        spec.field);
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+std::vector<std::pair<std::string, double>> WebSession::params() const {
+  std::vector<std::pair<std::string, double>> out;
+  if (!surface_) return out;
+  const auto& names = surface_->formula.graph.params();
+  for (std::size_t i = 0; i < names.size() && i < surface_->params.size(); ++i)
+    out.emplace_back(names[i], surface_->params[i]);
+  return out;
+}
+
+std::string WebSession::notes() const {
+  std::string notes = importNotes_;
+  if (surface_) notes += surface_->methodWarning + surface_->constantNote + surface_->singularNote;
+  return notes;
+}
+
+std::string WebSession::method() const {
+  if (!surface_) return {};
+  switch (surface_->method) {
+    case TracingMethod::Bernstein: return "bernstein";
+    case TracingMethod::Sampling: return "sampling";
+    default: return "interval";
+  }
+}
+
+}  // namespace zs::web

@@ -1,0 +1,108 @@
+#pragma once
+// The web page's core: holds one scene, takes what the page's controls ask for (a formula, a
+// .surf or .jsurf file, `--set` assignments, a drag, a wheel step, a key), applies it with
+// the same parsing, scene rules and validation as the command line, and puts out what WebGL2
+// needs to draw the scene: the GLSL ES shaders (src/codegen, the same templates), the
+// hierarchy's texels and every uniform of a frame (render/frame_uniforms.hpp). GL-free and
+// free of emscripten: bindings.cpp exposes it to JavaScript, and the native tests drive it
+// directly. Every edit that fails leaves the scene and the prepared surface as they were and
+// returns the positioned message ("" on success).
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "interact/key_bindings.hpp"
+#include "pipeline/pipeline.hpp"
+#include "render/frame_uniforms.hpp"
+#include "render/hierarchy_gpu.hpp"
+#include "scene/scene.hpp"
+
+namespace zs::web {
+
+// One key of the .surf schema (scene/schema.hpp) as the page's panels show it.
+struct Setting {
+  std::string key;   // dotted, as in a .surf file and --set: "tracing.epsilon"
+  std::string type;  // "bool", "int", "real", "vec3" or "enum"
+  double lo = 0, hi = 0;         // the allowed range (each component of a vec3)
+  bool loOpen = false, hiOpen = false;
+  std::vector<std::string> choices;  // enum only
+  std::vector<double> value;         // the current value: 1 number (bool: 0/1), or 3
+  std::string choice;                // enum only: the current name
+};
+
+class WebSession {
+ public:
+  WebSession();
+
+  // The default scene with this formula (as `zeroset render FORMULA`).
+  std::string loadFormula(std::string_view formula);
+  // The formula only; every other setting stays.
+  std::string setFormula(std::string_view formula);
+  // A whole .surf text; `fileName` names it in errors.
+  std::string loadSurf(std::string_view text, std::string_view fileName);
+  // A SURFER .jsurf text; what zeroset shows differently goes to notes().
+  std::string loadJsurf(std::string_view text, std::string_view fileName);
+  // `--set KEY=VALUE` assignments, checked together as on the command line.
+  std::string applyOverrides(std::span<const std::string> assignments);
+  // One parameter's value (a slider).
+  std::string setParam(std::string_view name, double value);
+
+  // The CPU half of a frame for WebGL2 (pipeline.hpp with ShaderDialect::Es300): octree,
+  // hierarchy, method, shaders. Needed after every edit above; a drag or a wheel step
+  // needs none.
+  std::string prepare();
+  bool prepared() const { return surface_.has_value(); }
+  // Counts successful prepare() calls: the page uploads the hierarchy when it changes.
+  int generation() const { return generation_; }
+
+  const std::string& vertexShader() const;
+  // The fragment shader with the #define lines of the scene's variant (lights, coloring,
+  // supersampling, hits, reflection): render/program_variant.hpp.
+  std::string fragmentShader() const;
+  const GpuHierarchy& hierarchy() const { return gpu_; }
+  // Every uniform of one frame of width x height pixels (the full picture, also when the
+  // page draws it in tiles), and the proxy's vertex count (0: nothing to draw).
+  FrameUniforms frame(int width, int height) const;
+
+  // Pointer drags orbit the camera about its target (interact/arcball.hpp): positions in CSS
+  // pixels from the canvas' top-left, the canvas' size in the same pixels.
+  void beginDrag();
+  void drag(double x0, double y0, double x1, double y1, int width, int height);
+  void zoom(double wheelSteps);
+  // The desktop viewer's keys (interact/key_bindings.hpp; GLFW's key codes, which are the
+  // upper-case letters, and GLFW_MOD_SHIFT = 1). Returns the effect: 0 none, 1 redraw,
+  // 2 prepare; `message` says what changed.
+  int key(int keyCode, int mods, std::string& message);
+  // Back to the camera the scene was loaded with.
+  void resetView();
+
+  const Scene& scene() const { return scene_; }
+  // The scene as a complete .surf text (save, share links).
+  std::string sceneText() const;
+  // Every key of the scene schema with its range and current value, in file order.
+  std::vector<Setting> settings() const;
+  // Parameter names in the formula's order and their values (prepared surface's).
+  std::vector<std::pair<std::string, double>> params() const;
+  // Notes for the user: the method's fallback, a constant formula, what a .jsurf file
+  // could not carry over. One per line; "" when there is nothing to say.
+  std::string notes() const;
+  // "bernstein", "interval" or "sampling": the method the prepared surface is traced with.
+  std::string method() const;
+
+ private:
+  std::string replaceScene(Scene scene, std::string importNotes);
+
+  Scene scene_;
+  Camera loadedCamera_;
+  Camera dragStart_;
+  std::optional<PreparedSurface> surface_;
+  GpuHierarchy gpu_;
+  std::vector<float> params_;
+  std::string importNotes_;
+  int generation_ = 0;
+};
+
+}  // namespace zs::web

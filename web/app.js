@@ -1,0 +1,602 @@
+// The page: wires the HTML controls, the URL, pointer, wheel, touch and keys to the core
+// (zeroset.wasm: parsing, scene rules, validation, camera, shader assembly) and hands what
+// the core computes to the WebGL2 renderer. The URL contract is docs/web.md's.
+import { Renderer } from './renderer.js';
+
+const $ = (id) => document.getElementById(id);
+const root = document.documentElement;
+const canvas = $('view');
+const errorBox = $('zeroset-error');
+const notesBox = $('notes');
+const statusLine = $('status');
+const formulaInput = $('formula');
+
+const DRAG_SCALE = 0.5;   // resolution while the surface is being turned
+const MAX_DPR = 2;
+
+let core, session, renderer;
+let scale = 1;            // drawing-buffer scale: 1 at rest, DRAG_SCALE while dragging
+let fixedSize = null;     // &size=WxH
+let examples = [];
+let currentExample = -1;
+let pending = null;       // the draw in flight
+let redrawQueued = false;
+let firstPictureMs = null;
+
+function setState(state) { root.dataset.zeroset = state; }
+
+function showError(text) {
+  errorBox.textContent = text.trimEnd();
+  errorBox.hidden = false;
+  formulaInput.setAttribute('aria-invalid', 'true');
+  setState('error');
+}
+
+function clearError() {
+  errorBox.hidden = true;
+  errorBox.textContent = '';
+  formulaInput.removeAttribute('aria-invalid');
+}
+
+function showNotes() {
+  const notes = session.notes().trimEnd();
+  notesBox.textContent = notes;
+  notesBox.hidden = notes === '';
+}
+
+// ---- drawing ---------------------------------------------------------------------------
+
+function resizeCanvas() {
+  const dpr = Math.min(window.devicePixelRatio || 1, MAX_DPR);
+  const cssW = fixedSize ? fixedSize[0] : canvas.clientWidth;
+  const cssH = fixedSize ? fixedSize[1] : canvas.clientHeight;
+  const w = Math.max(1, Math.round(cssW * dpr * scale));
+  const h = Math.max(1, Math.round(cssH * dpr * scale));
+  if (canvas.width !== w || canvas.height !== h) {
+    canvas.width = w;
+    canvas.height = h;
+  }
+}
+
+let uploadedGeneration = -1;
+
+// Compiles and uploads what the prepared surface needs; '' or the message to show.
+function loadSurfaceIntoRenderer() {
+  const log = renderer.use(session.vertexShader(), session.fragmentShader());
+  if (log) {
+    return 'internal error: the browser\'s WebGL2 rejected the shader zeroset generated for ' +
+           'this formula. This is a bug in zeroset, not a problem with your input.\n' + log;
+  }
+  if (session.generation() !== uploadedGeneration) {
+    const h = session.hierarchy();
+    renderer.uploadHierarchy(h.texels, h.count);
+    uploadedGeneration = session.generation();
+  }
+  return '';
+}
+
+// Draws the current state; sets "ready" once a full-resolution picture is complete.
+function redraw() {
+  if (!session.prepared()) return;
+  if (pending) { redrawQueued = true; return; }
+  resizeCanvas();
+  const full = scale === 1;
+  const error = loadSurfaceIntoRenderer();
+  if (error) { showError(error); return; }
+  const bg = session.frame(1, 1).background;
+  const startedAt = performance.now();
+  pending = renderer.draw((w, h) => session.frame(w, h), bg).then((ms) => {
+    pending = null;
+    if (redrawQueued) { redrawQueued = false; redraw(); return; }
+    if (ms === null) return;  // superseded or lost: a later draw sets the state
+    statusLine.textContent = `${session.method()} · ${canvas.width}×${canvas.height} · ${ms.toFixed(1)} ms`;
+    if (full) {
+      if (firstPictureMs === null) firstPictureMs = performance.now();
+      if (errorBox.hidden) setState('ready');
+      else root.dataset.zeroset = 'error';
+    }
+    return ms;
+  });
+  void startedAt;
+}
+
+// prepare() (octree, hierarchy, shaders) and draw; '' or the error shown.
+function prepareAndDraw() {
+  const error = session.prepare();
+  if (error) { showError(error); return error; }
+  clearError();
+  showNotes();
+  buildParams();
+  buildSettings();
+  redraw();
+  return '';
+}
+
+// ---- scene edits -------------------------------------------------------------------------
+
+function afterSceneLoaded() {
+  formulaInput.value = currentFormula();
+  return prepareAndDraw();
+}
+
+function currentFormula() { return session.formula(); }
+
+function applySetting(key, tomlValue) {
+  setState('busy');
+  const error = session.applyOverrides([`${key}=${tomlValue}`]);
+  if (error) { showError(error); return; }
+  clearError();
+  if (key.startsWith('camera.')) { buildSettings(); redraw(); return; }
+  prepareAndDraw();
+}
+
+let typingTimer = 0;
+formulaInput.addEventListener('input', () => {
+  clearTimeout(typingTimer);
+  typingTimer = setTimeout(() => {
+    setState('busy');
+    const error = session.setFormula(formulaInput.value);
+    if (error) { showError(error); return; }
+    prepareAndDraw();
+  }, 120);
+});
+$('formula-form').addEventListener('submit', (e) => e.preventDefault());
+
+// ---- parameters and settings panels --------------------------------------------------
+
+const paramRanges = new Map();  // name -> [lo, hi], fixed while the formula keeps the name
+
+function buildParams() {
+  const box = $('params');
+  const params = session.params();
+  const names = params.map((p) => p.name).join(',');
+  if (box.dataset.names === names) {
+    for (const p of params) {
+      const row = box.querySelector(`[data-param="${p.name}"]`);
+      if (row && document.activeElement?.closest('.param') !== row) {
+        row.querySelector('input[type=range]').value = p.value;
+        row.querySelector('input[type=number]').value = p.value;
+      }
+    }
+    return;
+  }
+  box.dataset.names = names;
+  box.replaceChildren();
+  for (const p of params) {
+    if (!paramRanges.has(p.name)) {
+      const half = Math.max(1, Math.abs(p.value));  // as the desktop viewer's sliders
+      paramRanges.set(p.name, [p.value - half, p.value + half]);
+    }
+    const [lo, hi] = paramRanges.get(p.name);
+    const row = document.createElement('div');
+    row.className = 'param';
+    row.dataset.param = p.name;
+    const id = `param-${p.name}`;
+    row.innerHTML = `<label for="${id}"></label><input id="${id}" type="range"><input type="number" step="any" aria-label="">`;
+    row.querySelector('label').textContent = p.name;
+    const slider = row.querySelector('input[type=range]');
+    const number = row.querySelector('input[type=number]');
+    number.setAttribute('aria-label', p.name + ' value');
+    Object.assign(slider, { min: lo, max: hi, step: (hi - lo) / 1000, value: p.value });
+    number.value = p.value;
+    const set = (v) => {
+      const error = session.setParam(p.name, Number(v));
+      if (error) { showError(error); return; }
+      clearError();
+      slider.value = v;
+      number.value = v;
+      setState('busy');
+      const err = session.prepare();
+      if (err) { showError(err); return; }
+      redraw();
+    };
+    slider.addEventListener('input', () => set(slider.value));
+    number.addEventListener('change', () => set(number.value));
+    box.append(row);
+  }
+}
+
+const GROUPS = [
+  ['Tracing', /^(tracing|samples|opacity)/],
+  ['Domain', /^(domain|octree)/],
+  ['Camera', /^camera/],
+  ['Lights', /^lights/],
+  ['Materials', /^materials/],
+  ['Highlights', /^(silhouette|border|singular|highlights|reflection)/],
+  ['Colouring', /^(shading|background)/],
+];
+
+function groupOf(key) {
+  for (const [name, re] of GROUPS) if (re.test(key)) return name;
+  return 'More';
+}
+
+function tomlOf(setting, value) {
+  switch (setting.type) {
+    case 'bool': return value ? 'true' : 'false';
+    case 'enum': return JSON.stringify(value);
+    case 'vec3': return `[${value.map(Number).join(', ')}]`;
+    default: return String(Number(value));
+  }
+}
+
+const hex = (v) => Math.round(Math.min(1, Math.max(0, v)) * 255).toString(16).padStart(2, '0');
+
+function buildSettings() {
+  const box = $('settings');
+  const open = new Set([...box.querySelectorAll('details[open]')].map((d) => d.dataset.group));
+  const focused = document.activeElement?.dataset?.key;
+  box.replaceChildren();
+  const groups = new Map();
+  for (const s of session.settings()) {
+    const group = groupOf(s.key);
+    if (!groups.has(group)) {
+      const d = document.createElement('details');
+      d.dataset.group = group;
+      d.open = open.has(group);
+      const summary = document.createElement('summary');
+      summary.textContent = group;
+      d.append(summary);
+      groups.set(group, d);
+    }
+    const row = document.createElement('div');
+    row.className = 'setting';
+    const id = 'set-' + s.key.replace(/\./g, '-');
+    const label = document.createElement('label');
+    label.htmlFor = id;
+    label.textContent = s.key;
+    row.append(label);
+    let input;
+    if (s.type === 'bool') {
+      input = document.createElement('input');
+      input.type = 'checkbox';
+      input.checked = s.value[0] !== 0;
+      input.addEventListener('change', () => applySetting(s.key, tomlOf(s, input.checked)));
+    } else if (s.type === 'enum') {
+      input = document.createElement('select');
+      for (const c of s.choices) input.add(new Option(c, c, false, c === s.choice));
+      input.addEventListener('change', () => applySetting(s.key, tomlOf(s, input.value)));
+    } else if (s.type === 'vec3' && /color/.test(s.key)) {
+      input = document.createElement('input');
+      input.type = 'color';
+      input.value = '#' + s.value.map(hex).join('');
+      input.addEventListener('change', () => {
+        const v = [1, 3, 5].map((i) => parseInt(input.value.slice(i, i + 2), 16) / 255);
+        applySetting(s.key, tomlOf(s, v));
+      });
+    } else if (s.type === 'vec3') {
+      input = document.createElement('span');
+      input.className = 'vec';
+      const parts = s.value.map((v, i) => {
+        const n = document.createElement('input');
+        n.type = 'number';
+        n.step = 'any';
+        n.value = v;
+        n.setAttribute('aria-label', `${s.key} ${'xyz'[i]}`);
+        return n;
+      });
+      parts.forEach((n) => n.addEventListener('change', () => applySetting(s.key, tomlOf(s, parts.map((p) => p.value)))));
+      input.append(...parts);
+      parts[0].id = id;
+    } else {
+      input = document.createElement('input');
+      input.type = 'number';
+      input.step = s.type === 'int' ? '1' : 'any';
+      if (Number.isFinite(s.lo)) input.min = s.lo;
+      if (Number.isFinite(s.hi)) input.max = s.hi;
+      input.value = s.value[0];
+      input.addEventListener('change', () => applySetting(s.key, tomlOf(s, input.value)));
+    }
+    if (!input.id) input.id = id;
+    input.dataset.key = s.key;
+    row.append(input);
+    groups.get(group).append(row);
+  }
+  box.append(...groups.values());
+  if (focused) box.querySelector(`[data-key="${focused}"]`)?.focus();
+}
+
+// ---- pointer, wheel, touch, keys -----------------------------------------------------
+
+const pointers = new Map();
+let dragFrom = null;
+let pinchFrom = 0;
+
+function cssSize() {
+  const r = canvas.getBoundingClientRect();
+  return [r.width, r.height];
+}
+
+canvas.addEventListener('pointerdown', (e) => {
+  canvas.setPointerCapture(e.pointerId);
+  pointers.set(e.pointerId, [e.offsetX, e.offsetY]);
+  if (pointers.size === 1) {
+    session.beginDrag();
+    dragFrom = [e.offsetX, e.offsetY];
+  } else if (pointers.size === 2) {
+    const [a, b] = [...pointers.values()];
+    pinchFrom = Math.hypot(a[0] - b[0], a[1] - b[1]);
+    dragFrom = null;
+  }
+});
+
+canvas.addEventListener('pointermove', (e) => {
+  if (!pointers.has(e.pointerId)) return;
+  pointers.set(e.pointerId, [e.offsetX, e.offsetY]);
+  if (pointers.size === 1 && dragFrom) {
+    const [w, h] = cssSize();
+    session.drag(dragFrom[0], dragFrom[1], e.offsetX, e.offsetY, Math.round(w), Math.round(h));
+  } else if (pointers.size === 2 && pinchFrom > 0) {
+    const [a, b] = [...pointers.values()];
+    const d = Math.hypot(a[0] - b[0], a[1] - b[1]);
+    // zoomCamera: each step moves the eye 15% closer.
+    session.zoom(Math.log(d / pinchFrom) / -Math.log(0.85));
+    pinchFrom = d;
+  } else {
+    return;
+  }
+  scale = DRAG_SCALE;
+  setState('busy');
+  redraw();
+});
+
+function endPointer(e) {
+  if (!pointers.delete(e.pointerId)) return;
+  if (pointers.size === 1) {  // back to turning with the finger that stays
+    const [p] = [...pointers.values()];
+    session.beginDrag();
+    dragFrom = p;
+    return;
+  }
+  if (pointers.size === 0) {
+    dragFrom = null;
+    scale = 1;
+    buildSettings();
+    redraw();
+  }
+}
+canvas.addEventListener('pointerup', endPointer);
+canvas.addEventListener('pointercancel', endPointer);
+
+let wheelTimer = 0;
+canvas.addEventListener('wheel', (e) => {
+  e.preventDefault();
+  const steps = -e.deltaY / (e.deltaMode === 1 ? 3 : 100);
+  session.zoom(steps);
+  scale = DRAG_SCALE;
+  setState('busy');
+  redraw();
+  clearTimeout(wheelTimer);
+  wheelTimer = setTimeout(() => { scale = 1; buildSettings(); redraw(); }, 200);
+}, { passive: false });
+
+document.addEventListener('keydown', (e) => {
+  const t = e.target;
+  if (t instanceof HTMLInputElement || t instanceof HTMLSelectElement || t instanceof HTMLTextAreaElement) return;
+  if (e.altKey || e.metaKey || e.key.length !== 1) return;
+  const code = e.key.toUpperCase().charCodeAt(0);
+  const mods = (e.shiftKey ? 1 : 0) | (e.ctrlKey ? 2 : 0);
+  const result = session.key(code, mods);
+  if (!result.action && result.effect === 0) return;
+  e.preventDefault();
+  if (result.message) statusLine.textContent = result.message;
+  switch (result.action) {
+    case 'next': loadExampleAt(currentExample + 1); return;
+    case 'previous': loadExampleAt(currentExample - 1); return;
+    case 'png': downloadPng(); return;
+    case 'save': saveSurf(); return;
+    case 'formula': formulaInput.focus(); return;
+    case 'panel': togglePanel(); return;
+    case 'gallery': $('gallery-panel').open = !$('gallery-panel').open; return;
+    case 'reset': buildSettings(); redraw(); return;
+  }
+  if (result.effect === 2) prepareAndDraw();
+  else { buildSettings(); redraw(); }
+});
+
+function togglePanel() {
+  const panel = $('panel');
+  panel.hidden = !panel.hidden;
+  document.body.classList.toggle('panel-closed', panel.hidden);
+  $('panel-toggle').setAttribute('aria-expanded', String(!panel.hidden));
+}
+$('panel-toggle').addEventListener('click', togglePanel);
+
+// ---- files, gallery, sharing ---------------------------------------------------------
+
+function loadText(text, name) {
+  setState('busy');
+  const error = /\.jsurf$|\.pic$/i.test(name) ? session.loadJsurf(text, name) : session.loadSurf(text, name);
+  if (error) { showError(error); return error; }
+  return afterSceneLoaded();
+}
+
+async function loadFile(file) {
+  if (!/\.(surf|jsurf|pic)$/i.test(file.name)) {
+    showError(`${file.name}: zeroset opens .surf and .jsurf files`);
+    return;
+  }
+  loadText(await file.text(), file.name);
+}
+
+$('open').addEventListener('click', () => $('file').click());
+$('file').addEventListener('change', () => {
+  const f = $('file').files[0];
+  if (f) loadFile(f);
+  $('file').value = '';
+});
+window.addEventListener('dragover', (e) => { e.preventDefault(); document.body.classList.add('dropping'); });
+window.addEventListener('dragleave', () => document.body.classList.remove('dropping'));
+window.addEventListener('drop', (e) => {
+  e.preventDefault();
+  document.body.classList.remove('dropping');
+  const f = e.dataTransfer?.files?.[0];
+  if (f) loadFile(f);
+});
+
+function saveBlob(blob, name) {
+  const a = document.createElement('a');
+  a.href = URL.createObjectURL(blob);
+  a.download = name;
+  a.click();
+  setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+}
+function downloadPng() { canvas.toBlob((b) => b && saveBlob(b, 'zeroset.png'), 'image/png'); }
+function saveSurf() { saveBlob(new Blob([session.sceneText()], { type: 'text/plain' }), 'scene.surf'); }
+$('download').addEventListener('click', downloadPng);
+$('save').addEventListener('click', saveSurf);
+$('reset').addEventListener('click', () => { session.resetView(); buildSettings(); redraw(); });
+
+// Share links hold the whole scene: its .surf text, deflated and base64url-encoded.
+async function encodeScene(text) {
+  const stream = new Blob([text]).stream().pipeThrough(new CompressionStream('deflate-raw'));
+  const bytes = new Uint8Array(await new Response(stream).arrayBuffer());
+  let s = '';
+  for (const b of bytes) s += String.fromCharCode(b);
+  return btoa(s).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+}
+async function decodeScene(code) {
+  const b64 = code.replace(/-/g, '+').replace(/_/g, '/');
+  const bin = atob(b64 + '='.repeat((4 - b64.length % 4) % 4));
+  const bytes = Uint8Array.from(bin, (c) => c.charCodeAt(0));
+  const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream('deflate-raw'));
+  return await new Response(stream).text();
+}
+$('share').addEventListener('click', async () => {
+  const url = new URL(location.href);
+  url.search = '';
+  url.searchParams.set('scene', await encodeScene(session.sceneText()));
+  const field = $('share-link');
+  field.value = url.href;
+  field.hidden = false;
+  field.select();
+  navigator.clipboard?.writeText(url.href).catch(() => {});
+});
+
+async function loadExampleAt(i) {
+  if (examples.length === 0) return;
+  currentExample = ((i % examples.length) + examples.length) % examples.length;
+  const ex = examples[currentExample];
+  const text = await fetchText(`examples/${ex.name}.surf`);
+  if (text === null) { showError(`example ${ex.name}: not found`); return; }
+  loadText(text, ex.name + '.surf');
+}
+
+async function fetchText(url) {
+  try {
+    const r = await fetch(url);
+    return r.ok ? await r.text() : null;
+  } catch {
+    return null;
+  }
+}
+
+function buildGallery() {
+  const list = $('gallery');
+  list.replaceChildren();
+  examples.forEach((ex, i) => {
+    const li = document.createElement('li');
+    li.dataset.search = `${ex.name} ${ex.title} ${ex.formula}`.toLowerCase();
+    const b = document.createElement('button');
+    b.type = 'button';
+    b.title = ex.title || ex.name;
+    const img = document.createElement('img');
+    img.loading = 'lazy';
+    img.alt = '';
+    img.src = `examples/images/${ex.image}`;
+    const caption = document.createElement('span');
+    caption.textContent = ex.title || ex.name;
+    b.append(img, caption);
+    b.addEventListener('click', () => loadExampleAt(i));
+    li.append(b);
+    list.append(li);
+  });
+}
+$('gallery-search').addEventListener('input', () => {
+  const q = $('gallery-search').value.toLowerCase().trim();
+  for (const li of $('gallery').children) li.hidden = q !== '' && !li.dataset.search.includes(q);
+});
+
+// ---- start ---------------------------------------------------------------------------
+
+async function start() {
+  setState('loading');
+  const params = new URLSearchParams(location.search);
+  if (params.get('embed') === '1') document.body.classList.add('embed');
+  const size = /^(\d+)x(\d+)$/.exec(params.get('size') || '');
+  if (size) {
+    fixedSize = [Number(size[1]), Number(size[2])];
+    canvas.style.width = `${fixedSize[0]}px`;
+    canvas.style.height = `${fixedSize[1]}px`;
+  }
+  core = await createZeroset();
+  session = new core.Session();
+  renderer = new Renderer(canvas, { onRestored: () => { uploadedGeneration = -1; redraw(); } });
+  for (const k of core.keys()) {
+    const li = document.createElement('li');
+    li.textContent = `${k.key}: ${k.description}`;
+    $('keys').append(li);
+  }
+  const index = await fetchText('examples/index.json');
+  examples = index ? JSON.parse(index) : [];
+  buildGallery();
+
+  // The URL's scene; where it does not load, its error above the default surface.
+  let error = '';
+  if (params.has('scene')) {
+    try {
+      error = session.loadSurf(await decodeScene(params.get('scene')), 'shared scene');
+    } catch {
+      error = 'scene: this share link is damaged (it does not decode); showing the default surface';
+    }
+  } else if (params.has('example')) {
+    const name = params.get('example');
+    const at = examples.findIndex((e) => e.name === name);
+    const text = /^[A-Za-z0-9_\-/]+$/.test(name) ? await fetchText(`examples/${name}.surf`) : null;
+    if (text === null) error = `example=${name}: no such example (the gallery lists them)`;
+    else { currentExample = at; error = session.loadSurf(text, name + '.surf'); }
+  } else if (params.has('formula')) {
+    error = session.loadFormula(params.get('formula'));
+  }
+  if (!error) {
+    const sets = params.getAll('set');
+    if (sets.length) error = session.applyOverrides(sets);
+  }
+  formulaInput.value = currentFormula();
+  if (error) {
+    const prepareError = session.prepare();
+    if (prepareError) { session.loadFormula('x^2 + y^2 + z^2 - 1'); session.prepare(); }
+    showNotes(); buildParams(); buildSettings(); redraw();
+    showError(error);
+    return;
+  }
+  const prepareError = session.prepare();
+  if (prepareError) {
+    const shown = prepareError;
+    session.loadFormula('x^2 + y^2 + z^2 - 1');
+    session.prepare();
+    formulaInput.value = currentFormula();
+    showNotes(); buildParams(); buildSettings(); redraw();
+    showError(shown);
+    return;
+  }
+  showNotes(); buildParams(); buildSettings(); redraw();
+}
+
+new ResizeObserver(() => { if (session) redraw(); }).observe(canvas);
+
+// For tests and benchmarks (tests/web): the session, and full-frame timings.
+window.zeroset = {
+  get session() { return session; },
+  get firstPictureMs() { return firstPictureMs; },
+  async frameTimes(count) {
+    const times = [];
+    for (let i = 0; i < count; i++) {
+      const ms = await renderer.draw((w, h) => session.frame(w, h), session.frame(1, 1).background);
+      if (ms !== null) times.push(ms);
+    }
+    return times;
+  },
+};
+
+start().catch((e) => { showError('zeroset could not start: ' + (e && e.message ? e.message : e)); });

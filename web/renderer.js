@@ -1,0 +1,186 @@
+// WebGL2 side of the page: compiles the shaders the core assembled (GLSL ES 3.00 from the
+// same templates as the desktop), holds the hierarchy texture, sets the uniforms the core
+// computed for a frame and draws it, in tiles when a frame is slow, so that no single
+// draw runs long enough to trip the browser's GPU watchdog. Recovers a lost context. No
+// scene logic here: every number comes from the core (src/web/web_session.hpp).
+
+const NODE_ROW = 1024;  // texels per row of the hierarchy texture (raytrace_sampling.frag.glsl)
+const TILE_BUDGET_MS = 40;  // a frame slower than this is drawn in tiles over several tasks
+
+export class Renderer {
+  constructor(canvas, { onRestored } = {}) {
+    this.canvas = canvas;
+    this.onRestored = onRestored;
+    this.programs = new Map();  // vertex + fragment text -> { program, locations }
+    this.lost = false;
+    this.hierarchy = null;      // the last texels uploaded, to upload again after a loss
+    this.hierarchyGeneration = -1;
+    this.lastFrameMs = 0;
+    this.drawId = 0;
+    canvas.addEventListener('webglcontextlost', (e) => {
+      e.preventDefault();  // ask for the context back
+      this.lost = true;
+      this.drawId++;
+    });
+    canvas.addEventListener('webglcontextrestored', () => {
+      this.lost = false;
+      this.init();
+      if (this.hierarchy) this.uploadHierarchy(this.hierarchy.texels, this.hierarchy.count);
+      if (this.onRestored) this.onRestored();
+    });
+    this.init();
+  }
+
+  init() {
+    const gl = this.canvas.getContext('webgl2', {
+      antialias: false, depth: false, stencil: false, alpha: false,
+      preserveDrawingBuffer: true,  // tiles accumulate; PNG download reads the canvas
+      powerPreference: 'high-performance',
+    });
+    if (!gl) throw new Error('this browser has no WebGL2');
+    this.gl = gl;
+    this.programs.clear();
+    this.vao = gl.createVertexArray();
+    this.texture = null;
+    this.hierarchyGeneration = -1;
+  }
+
+  // Compiles (or reuses) the program for these sources; returns '' or the driver's log.
+  use(vertex, fragment) {
+    const key = vertex + '\u0000' + fragment;
+    let entry = this.programs.get(key);
+    if (!entry) {
+      const gl = this.gl;
+      const compile = (type, source) => {
+        const s = gl.createShader(type);
+        gl.shaderSource(s, source);
+        gl.compileShader(s);
+        return s;
+      };
+      const vs = compile(gl.VERTEX_SHADER, vertex);
+      const fs = compile(gl.FRAGMENT_SHADER, fragment);
+      const program = gl.createProgram();
+      gl.attachShader(program, vs);
+      gl.attachShader(program, fs);
+      gl.linkProgram(program);
+      if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
+        if (gl.isContextLost()) return 'the WebGL context was lost';
+        const log = (gl.getShaderInfoLog(vs) || '') + (gl.getShaderInfoLog(fs) || '') +
+                    (gl.getProgramInfoLog(program) || '');
+        gl.deleteProgram(program);
+        gl.deleteShader(vs);
+        gl.deleteShader(fs);
+        return log || 'the shader did not link';
+      }
+      gl.deleteShader(vs);
+      gl.deleteShader(fs);
+      // Keep a few: parameter edits and view changes reuse the program; a new formula or a
+      // new lighting variant makes another.
+      if (this.programs.size >= 6) {
+        const [oldKey, old] = this.programs.entries().next().value;
+        gl.deleteProgram(old.program);
+        this.programs.delete(oldKey);
+      }
+      entry = { program, locations: new Map() };
+      this.programs.set(key, entry);
+    }
+    this.current = entry;
+    return '';
+  }
+
+  uploadHierarchy(texels, count) {
+    const gl = this.gl;
+    this.hierarchy = { texels, count };
+    const rows = Math.max(1, Math.ceil(count / NODE_ROW));
+    const data = new Uint32Array(NODE_ROW * rows * 4);
+    data.set(texels.subarray(0, Math.min(texels.length, data.length)));
+    if (!this.texture) this.texture = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, this.texture);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32UI, NODE_ROW, rows, 0, gl.RGBA_INTEGER,
+                  gl.UNSIGNED_INT, data);
+  }
+
+  setUniforms(uniforms) {
+    const gl = this.gl;
+    const { program, locations } = this.current;
+    for (const u of uniforms) {
+      let loc = locations.get(u.name);
+      if (loc === undefined) {
+        const name = u.kind === 'floats' ? u.name + '[0]' : u.name;
+        loc = gl.getUniformLocation(program, name);
+        locations.set(u.name, loc);
+      }
+      if (loc === null) continue;  // not read by this program: the compiler removed it
+      switch (u.kind) {
+        case 'int': gl.uniform1i(loc, u.value); break;
+        case 'float': gl.uniform1f(loc, u.value[0]); break;
+        case 'vec2': gl.uniform2fv(loc, u.value); break;
+        case 'vec3': gl.uniform3fv(loc, u.value); break;
+        case 'vec4': gl.uniform4fv(loc, u.value); break;
+        case 'mat4': gl.uniformMatrix4fv(loc, false, u.value); break;
+        case 'floats': gl.uniform1fv(loc, u.value); break;
+      }
+    }
+  }
+
+  // Draws a frame: `frameAt(w, h)` gives the core's uniforms for the drawing-buffer size.
+  // Resolves with the milliseconds it took, or null when a newer draw or a lost context
+  // superseded it. Slow frames go in horizontal bands, one band per task.
+  async draw(frameAt, background) {
+    const id = ++this.drawId;
+    if (this.lost) return null;
+    const gl = this.gl;
+    const w = this.canvas.width, h = this.canvas.height;
+    const frame = frameAt(w, h);
+    const start = performance.now();
+    gl.useProgram(this.current.program);
+    this.setUniforms(frame.uniforms);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, this.texture);
+    gl.bindVertexArray(this.vao);
+    gl.disable(gl.DEPTH_TEST);
+    gl.disable(gl.BLEND);
+    // The box proxy keeps its back faces: one fragment per pixel (render/frame_uniforms.hpp).
+    gl.enable(gl.CULL_FACE);
+    gl.cullFace(gl.FRONT);
+    gl.frontFace(gl.CCW);
+    gl.viewport(0, 0, w, h);
+    gl.disable(gl.SCISSOR_TEST);
+    gl.clearColor(background[0], background[1], background[2], 1);
+    gl.clear(gl.COLOR_BUFFER_BIT);
+    if (frame.vertices === 0) {
+      gl.finish();
+      return performance.now() - start;
+    }
+    // Bands: as many as the last frame's time asks for, so each stays within the budget.
+    const bands = Math.min(64, Math.max(1, Math.ceil(this.lastFrameMs / TILE_BUDGET_MS)));
+    const bandHeight = Math.ceil(h / bands);
+    gl.enable(gl.SCISSOR_TEST);
+    for (let b = 0; b < bands; b++) {
+      if (id !== this.drawId || this.lost) {
+        gl.disable(gl.SCISSOR_TEST);
+        return null;
+      }
+      gl.useProgram(this.current.program);
+      gl.bindVertexArray(this.vao);
+      gl.activeTexture(gl.TEXTURE0);
+      gl.bindTexture(gl.TEXTURE_2D, this.texture);
+      gl.scissor(0, b * bandHeight, w, bandHeight);
+      gl.drawArrays(gl.TRIANGLES, 0, frame.vertices);
+      // A pixel read waits for the band (finish() need not), so the next band starts only
+      // after this one and the time measured is the GPU's.
+      const pixel = new Uint8Array(4);
+      gl.readPixels(0, Math.min(b * bandHeight, h - 1), 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+      if (bands > 1 && b + 1 < bands) await new Promise((r) => setTimeout(r, 0));
+    }
+    gl.disable(gl.SCISSOR_TEST);
+    const ms = performance.now() - start;
+    this.lastFrameMs = ms;
+    return ms;
+  }
+}
