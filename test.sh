@@ -4,6 +4,9 @@ set -euo pipefail
 cd "$(dirname "$0")"
 scripts/install-deps.sh
 scripts/build.sh
+# The web page (docs/web.md): its site and wasm tests, and the browser tests' driver.
+scripts/build-web.sh
+npm ci --prefix tests/web --no-audit --no-fund --loglevel=error
 # Every test has a TIMEOUT (tests/CMakeLists.txt); --timeout covers any added without one.
 log=build/Testing/test-run.log
 mkdir -p build/Testing

@@ -50,9 +50,9 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   int step = 0, windows = 0;
   do {
     len = wb - wa;
-    zs_Wide wide[zs_N], bound;  // double, or float in GLSL ES (emit_ray_polynomial.hpp)
-    bool defined = zs_FPoly(zs_Wide3(o) + (0.5 * (zs_Wide(wa) + zs_Wide(wb))) * zs_Wide3(d),
-                            (0.5 * zs_Wide(len)) * zs_Wide3(d), wide, bound);
+    zs_Wide wide[zs_N];  // double, or double-float in GLSL ES (emit_ray_polynomial.hpp)
+    zs_Bound bound;
+    bool defined = zs_FPolyOn(o, d, wa, wb, wide, bound);
     zs_toBernstein(wide, b0, c);
     // What rounding can have done to any coefficient of any restriction (4.): the Taylor
     // arithmetic and the conversion in zs_Wide (a priori, from the absolute-value bound), the

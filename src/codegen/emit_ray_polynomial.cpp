@@ -26,6 +26,78 @@ std::string wideLiteral(double v, bool fp64) {
   return v < 0 ? "(" + t + ")" : t;
 }
 
+// The expansion's arithmetic as GLSL text: the operators of double (fp64), or calls to the
+// double-float functions of kDoubleFloatGlsl (GLSL ES: a value is a vec2 hi + lo).
+struct WideOps {
+  bool df = false;
+  std::string add(const std::string& a, const std::string& b) const {
+    return df ? "zs_dfAdd(" + a + ", " + b + ")" : a + " + " + b;
+  }
+  std::string sub(const std::string& a, const std::string& b) const {
+    return df ? "zs_dfAdd(" + a + ", -(" + b + "))" : a + " - " + b;
+  }
+  std::string neg(const std::string& a) const { return df ? "(-" + a + ")" : "-" + a; }
+  std::string mul(const std::string& a, const std::string& b) const {
+    return df ? "zs_dfMul(" + a + ", " + b + ")" : a + " * " + b;
+  }
+  // A float value (a constant of the formula block) as a wide one.
+  std::string widen(const std::string& a) const {
+    return df ? "vec2(" + a + ", 0.0)" : "zs_Wide(" + a + ")";
+  }
+  // |x| of a wide value, as the bound's type (float in double-float, whose bound is float).
+  std::string absOf(const std::string& a) const { return df ? "abs(" + a + ".x)" : "abs(" + a + ")"; }
+};
+
+// The double-float arithmetic of GLSL ES (no double, no fma): Knuth's two-sum and Dekker's
+// split and two-product give each operation's rounding error exactly, so a value carries
+// about 44 bits. Each operation errs by at most zs_WIDE_EPS times its operands' magnitude.
+constexpr const char* kDoubleFloatGlsl = R"glsl(
+vec2 zs_twoSum(float a, float b) {
+  float s = a + b, v = s - a;
+  return vec2(s, (a - (s - v)) + (b - v));
+}
+vec2 zs_fastTwoSum(float a, float b) {
+  float s = a + b;
+  return vec2(s, b - (s - a));
+}
+vec2 zs_split(float a) {
+  float t = 4097.0 * a;
+  float hi = t - (t - a);
+  return vec2(hi, a - hi);
+}
+vec2 zs_twoProd(float a, float b) {
+  float p = a * b;
+  vec2 as = zs_split(a), bs = zs_split(b);
+  return vec2(p, ((as.x * bs.x - p) + as.x * bs.y + as.y * bs.x) + as.y * bs.y);
+}
+vec2 zs_dfAdd(vec2 a, vec2 b) {
+  vec2 s = zs_twoSum(a.x, b.x), t = zs_twoSum(a.y, b.y);
+  s = zs_fastTwoSum(s.x, s.y + t.x);
+  return zs_fastTwoSum(s.x, s.y + t.y);
+}
+vec2 zs_dfMul(vec2 a, vec2 b) {
+  vec2 p = zs_twoProd(a.x, b.x);
+  return zs_fastTwoSum(p.x, p.y + (a.x * b.y + a.y * b.x));
+}
+vec2 zs_dfDiv(vec2 a, vec2 b) {
+  float q1 = a.x / b.x;
+  vec2 r = zs_dfAdd(a, -zs_dfMul(vec2(q1, 0.0), b));
+  float q2 = r.x / b.x;
+  r = zs_dfAdd(r, -zs_dfMul(vec2(q2, 0.0), b));
+  return zs_dfAdd(zs_fastTwoSum(q1, q2), vec2(r.x / b.x, 0.0));
+}
+)glsl";
+
+// A double as a double-float literal: its float and the float of the rest.
+std::string dfLiteral(double v) {
+  const float hi = float(v);
+  const float lo = float(v - double(hi));
+  char text[80];
+  std::snprintf(text, sizeof text, "vec2(%.9g, %.9g)", double(hi), double(lo));
+  std::string t = text;
+  return t;
+}
+
 double binomial(int n, int k) {
   double r = 1;
   for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
@@ -41,31 +113,34 @@ double binomial(int n, int k) {
 // ch. 3), the rigorous noise band of the isolation (raytrace_bernstein.frag.glsl).
 class TaylorWriter {
  public:
-  TaylorWriter(const Graph& g, const std::vector<std::string>& names, int degree)
-      : g_(g), scalars_(g, names), names_(names), degree_(degree) {}
+  TaylorWriter(const Graph& g, const std::vector<std::string>& names, int degree, WideOps ops)
+      : g_(g), scalars_(g, names), names_(names), degree_(degree), ops_(ops) {}
 
   Coeffs node(NodeId id) {
     const Node& n = g_[id];
     switch (n.op) {
       case Op::VarX: case Op::VarY: case Op::VarZ: {
         const std::string axis = n.op == Op::VarX ? "x" : n.op == Op::VarY ? "y" : "z";
+        if (ops_.df) {
+          bound(id, "abs(p" + axis + ".x) + abs(v" + axis + ".x)", 0);
+          return {"p" + axis, "v" + axis};
+        }
         bound(id, "abs(p." + axis + ") + abs(v." + axis + ")", 0);
         return {"p." + axis, "v." + axis};
       }
       case Op::Neg: {
         Coeffs r;
-        for (const std::string& a : at(n.a)) r.push_back("-" + a);
+        for (const std::string& a : at(n.a)) r.push_back(ops_.neg(a));
         bound(id, boundOf(n.a), roundingsOf(n.a));
         return declare(r);
       }
       case Op::Add: case Op::Sub: {
         const Coeffs &a = at(n.a), &b = at(n.b);
         Coeffs r(std::max(a.size(), b.size()));
-        const char* op = n.op == Op::Add ? " + " : " - ";
         for (std::size_t i = 0; i < r.size(); ++i) {
-          if (i < a.size() && i < b.size()) r[i] = a[i] + op + b[i];
+          if (i < a.size() && i < b.size()) r[i] = n.op == Op::Add ? ops_.add(a[i], b[i]) : ops_.sub(a[i], b[i]);
           else if (i < a.size()) r[i] = a[i];
-          else r[i] = n.op == Op::Add ? b[i] : "-" + b[i];
+          else r[i] = n.op == Op::Add ? b[i] : ops_.neg(b[i]);
         }
         bound(id, boundOf(n.a) + " + " + boundOf(n.b),
               std::max(roundingsOf(n.a), roundingsOf(n.b)) + 1);
@@ -79,10 +154,12 @@ class TaylorWriter {
         const std::string& b = names_[static_cast<std::size_t>(n.b)];
         const std::string inv = "c" + std::to_string(next_++) + "_inv";
         out += "  zs_u = zs_u || " + b + " == 0.0;\n";
-        out += "  zs_Wide " + inv + " = 1.0 / zs_Wide(" + b + ");\n";
+        out += "  zs_Wide " + inv + " = " +
+               (ops_.df ? "zs_dfDiv(vec2(1.0, 0.0), vec2(" + b + ", 0.0))" : "1.0 / zs_Wide(" + b + ")") +
+               ";\n";
         Coeffs r;
-        for (const std::string& a : at(n.a)) r.push_back(a + " * " + inv);
-        bound(id, boundOf(n.a) + " * abs(" + inv + ")", roundingsOf(n.a) + roundingsOf(n.b) + 2);
+        for (const std::string& a : at(n.a)) r.push_back(ops_.mul(a, inv));
+        bound(id, boundOf(n.a) + " * " + ops_.absOf(inv), roundingsOf(n.a) + roundingsOf(n.b) + 2);
         return declare(r);
       }
       case Op::PowI: return power(id, at(n.a), n.ival);
@@ -96,8 +173,8 @@ class TaylorWriter {
       out += scalars_.out;
       scalars_.out.clear();
       const std::string& name = names_[static_cast<std::size_t>(id)];
-      coeffs_.emplace(id, Coeffs{name});
-      bound(id, "abs(zs_Wide(" + name + "))", constantRoundings(id));
+      coeffs_.emplace(id, Coeffs{ops_.df ? ops_.widen(name) : name});
+      bound(id, ops_.df ? "abs(" + name + ")" : "abs(zs_Wide(" + name + "))", constantRoundings(id));
       return;
     }
     coeffs_.emplace(id, node(id));
@@ -130,13 +207,11 @@ class TaylorWriter {
       for (int i = std::max(0, k - int(b.size()) + 1); i <= std::min(k, int(a.size()) - 1); ++i) {
         const int j = k - i;
         if (square && i > j) break;
-        if (square && i < j) {
-          twice += (twice.empty() ? "" : " + ") + a[i] + " * " + b[j];
-        } else {
-          sum += (sum.empty() ? "" : " + ") + a[i] + " * " + b[j];
-        }
+        std::string& into = square && i < j ? twice : sum;
+        into = into.empty() ? ops_.mul(a[i], b[j]) : ops_.add(into, ops_.mul(a[i], b[j]));
       }
-      if (!twice.empty()) sum = "2.0 * (" + twice + ")" + (sum.empty() ? "" : " + " + sum);
+      // Doubling is exact in either arithmetic.
+      if (!twice.empty()) sum = sum.empty() ? "2.0 * (" + twice + ")" : ops_.add("2.0 * (" + twice + ")", sum);
       r[std::size_t(k)] = sum;
     }
     return declare(r);
@@ -152,7 +227,7 @@ class TaylorWriter {
     const NodeId base = g_[id].a;
     if (k == 0) {
       bound(id, "1.0", 0);
-      return {"1.0"};
+      return {ops_.df ? "vec2(1.0, 0.0)" : "1.0"};
     }
     Coeffs result, square = a;
     std::string resultBound, squareBound = boundOf(base);
@@ -192,7 +267,7 @@ class TaylorWriter {
 
   std::string declareBound(const std::string& expr) {
     const std::string name = "a" + std::to_string(next_++);
-    out += "  zs_Wide " + name + " = " + expr + ";\n";
+    out += "  zs_Bound " + name + " = " + expr + ";\n";
     return name;
   }
 
@@ -205,6 +280,7 @@ class TaylorWriter {
   BodyWriter scalars_;
   const std::vector<std::string>& names_;
   int degree_;
+  WideOps ops_;
   int next_ = 0;
   std::unordered_map<NodeId, Coeffs> coeffs_;
   std::unordered_map<NodeId, std::string> bounds_;
@@ -249,13 +325,17 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision, bool fp64) {
   const std::string real = doublePrecision ? "double" : "float";
   s += "#define zs_Real " + real + "\n";
   s += std::string("#define zs_Real4 ") + (doublePrecision ? "dvec4" : "vec4") + "\n";
-  // The expansion's type: double where the GPU has it, float in GLSL ES (WebGL2).
-  s += std::string("#define zs_Wide ") + (fp64 ? "double" : "float") + "\n";
-  s += std::string("#define zs_Wide3 ") + (fp64 ? "dvec3" : "vec3") + "\n";
+  // The expansion's type: double where the GPU has it, double-float (vec2) in GLSL ES
+  // (WebGL2); the bound's: double, or float (it only scales the noise band).
+  s += std::string("#define zs_Wide ") + (fp64 ? "double" : "vec2") + "\n";
+  s += std::string("#define zs_Bound ") + (fp64 ? "double" : "float") + "\n";
   // Twice the unit roundoff (2^-23 of float, 2^-52 of double): the noise band of the
   // isolation is a first-order bound; the factor 2 covers the rest and its own rounding.
   s += std::string("const zs_Real zs_EPS = ") + (doublePrecision ? "2.23e-16lf" : "1.2e-7") + ";\n";
-  s += std::string("const zs_Wide zs_WIDE_EPS = ") + (fp64 ? "2.23e-16lf" : "1.2e-7") + ";\n";
+  // Double-float: 2^-44, four times its operations' error bound, which also covers the bound's
+  // own rounding in float.
+  s += std::string("const zs_Bound zs_WIDE_EPS = ") + (fp64 ? "2.23e-16lf" : "5.7e-14") + ";\n";
+  if (!fp64) s += kDoubleFloatGlsl;
   s += "const int zs_DEGREE = " + std::to_string(d) + ";\n";
   s += "const int zs_N = " + std::to_string(d + 1) + ";\n";
 
@@ -275,11 +355,22 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision, bool fp64) {
       }
       m /= binomial(d, i);
       if (m == 0) continue;
-      const std::string term = m == 1.0 ? idx("c", j) : wideLiteral(m, fp64) + " * " + idx("c", j);
-      sum += (sum.empty() ? "" : " + ") + term;
+      if (fp64) {
+        const std::string term = m == 1.0 ? idx("c", j) : wideLiteral(m, fp64) + " * " + idx("c", j);
+        sum += (sum.empty() ? "" : " + ") + term;
+      } else {
+        const std::string term = m == 1.0 ? idx("c", j) : "zs_dfMul(" + dfLiteral(m) + ", " + idx("c", j) + ")";
+        sum = sum.empty() ? term : "zs_dfAdd(" + sum + ", " + term + ")";
+      }
     }
-    s += "  " + idx("b", i) + " = zs_Real(" + (sum.empty() ? "0.0" : sum) + ");\n";
-    s += "  " + idx("narrow", i) + " = zs_Real(" + idx("c", i) + ");\n";
+    if (fp64) {
+      s += "  " + idx("b", i) + " = zs_Real(" + (sum.empty() ? "0.0" : sum) + ");\n";
+      s += "  " + idx("narrow", i) + " = zs_Real(" + idx("c", i) + ");\n";
+    } else {  // hi + lo rounded once
+      s += "  { vec2 t = " + (sum.empty() ? std::string("vec2(0.0)") : sum) + "; " + idx("b", i) +
+           " = t.x + t.y; }\n";
+      s += "  " + idx("narrow", i) + " = " + idx("c", i) + ".x + " + idx("c", i) + ".y;\n";
+    }
   }
   s += "}\n";
 
@@ -353,26 +444,48 @@ std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f,
   result.doublePrecision = fp64 && d >= kDoubleDegree;
   s += emitBernsteinKernelsGlsl(d, result.doublePrecision, fp64);
 
-  TaylorWriter taylor(g, names, d);
+  WideOps ops;
+  ops.df = !fp64;
+  TaylorWriter taylor(g, names, d, ops);
   for (NodeId id : order) taylor.define(id);
   // The rounding count of the coefficients, plus that of the conversion to Bernstein form
   // (d + 1 products summed, the matrix entries rounded once).
   s += "\n// Roundings on the longest path to a Bernstein coefficient in zs_Wide (zs_FPoly's error\n";
   s += "// bound, with the conversion's d + 1 products summed).\n";
-  s += "const zs_Wide zs_ROUNDINGS = " + std::to_string(taylor.roundingsOf(f) + d + 3) + ".0;\n";
+  s += "const zs_Bound zs_ROUNDINGS = " + std::to_string(taylor.roundingsOf(f) + d + 3) + ".0;\n";
   s += "\n// Coefficients of f(s) in the power basis, in zs_Wide, and `bound` >= sum_k |c_k| computed\n";
   s += "// with every operation on absolute values: the error of any Bernstein coefficient made\n";
   s += "// from them in zs_Wide is at most zs_ROUNDINGS zs_WIDE_EPS bound. False where F is\n";
   s += "// undefined on the whole ray.\n";
-  s += "bool zs_FPoly(zs_Wide3 p, zs_Wide3 v, out zs_Wide c[zs_N], out zs_Wide bound) {\n";
+  if (fp64) {
+    s += "bool zs_FPoly(dvec3 p, dvec3 v, out zs_Wide c[zs_N], out zs_Bound bound) {\n";
+  } else {
+    s += "bool zs_FPoly(vec2 px, vec2 py, vec2 pz, vec2 vx, vec2 vy, vec2 vz, out zs_Wide c[zs_N],\n";
+    s += "              out zs_Bound bound) {\n";
+  }
   s += "  bool zs_u = false;\n";
   s += taylor.out;
   const Coeffs& root = taylor.at(f);
   for (int k = 0; k <= d; ++k) {
-    s += "  " + idx("c", k) + " = " + (k < int(root.size()) ? root[std::size_t(k)] : "0.0") + ";\n";
+    s += "  " + idx("c", k) + " = " +
+         (k < int(root.size()) ? root[std::size_t(k)] : std::string(fp64 ? "0.0" : "vec2(0.0)")) + ";\n";
   }
   s += "  bound = " + taylor.boundOf(f) + ";\n";
   s += "  return !zs_u;\n}\n";
+  // The segment [wa, wb] of the ray o + t d: its midpoint and half of it, in the wide type.
+  s += "\n// f on the ray segment [wa, wb] of o + t d, expanded about the segment's midpoint.\n";
+  s += "bool zs_FPolyOn(vec3 o, vec3 d, float wa, float wb, out zs_Wide c[zs_N], out zs_Bound bound) {\n";
+  if (fp64) {
+    s += "  return zs_FPoly(dvec3(o) + (0.5 * (double(wa) + double(wb))) * dvec3(d),\n";
+    s += "                  (0.5 * double(wb - wa)) * dvec3(d), c, bound);\n}\n";
+  } else {
+    s += "  vec2 mid = 0.5 * zs_twoSum(wa, wb), halfLen = vec2(0.5 * (wb - wa), 0.0);\n";
+    s += "  return zs_FPoly(zs_dfAdd(vec2(o.x, 0.0), zs_dfMul(mid, vec2(d.x, 0.0))),\n";
+    s += "                  zs_dfAdd(vec2(o.y, 0.0), zs_dfMul(mid, vec2(d.y, 0.0))),\n";
+    s += "                  zs_dfAdd(vec2(o.z, 0.0), zs_dfMul(mid, vec2(d.z, 0.0))),\n";
+    s += "                  zs_dfMul(halfLen, vec2(d.x, 0.0)), zs_dfMul(halfLen, vec2(d.y, 0.0)),\n";
+    s += "                  zs_dfMul(halfLen, vec2(d.z, 0.0)), c, bound);\n}\n";
+  }
   return result;
 }
 

@@ -7,10 +7,11 @@
 //
 //   const int zs_DEGREE = D;  const int zs_N = D + 1;
 //   #define zs_Real float (double from kDoubleDegree on), zs_Real4 vec4 (dvec4)
-//   #define zs_Wide double, zs_Wide3 dvec3 (float, vec3 in GLSL ES)
-//   const zs_Wide zs_ROUNDINGS;  // roundings on the longest path to a Bernstein coefficient
-//   bool zs_FPoly(zs_Wide3 p, zs_Wide3 v, out zs_Wide c[zs_N], out zs_Wide bound);  // c[k]
-//        of s^k; bound: the expansion with every operation on absolute values
+//   #define zs_Wide double (vec2, a double-float, in GLSL ES), zs_Bound double (float)
+//   const zs_Bound zs_ROUNDINGS;  // roundings on the longest path to a Bernstein coefficient
+//   bool zs_FPolyOn(vec3 o, vec3 d, float wa, float wb, out zs_Wide c[zs_N], out zs_Bound
+//        bound);  // c[k] of s^k on the segment [wa, wb] of the ray o + t d; bound: the
+//        expansion with every operation on absolute values
 //   void zs_toBernstein(zs_Wide c[zs_N], out zs_Real b[zs_N], out zs_Real narrow[zs_N]);
 //        // Bernstein on [0, 1] (s' = (s+1)/2) in zs_Wide, rounded once; narrow: c rounded once
 //   void zs_restrict(zs_Real b[zs_N], float u, float w, out zs_Real r[zs_N]);  // to [u, w]
@@ -44,14 +45,16 @@ inline constexpr int kDoubleDegree = 7;
 struct RayPolynomialGlsl {
   std::string source;  // the block, ending with a newline
   int degree = 0;      // D
-  bool fp64 = true;    // the expansion runs in double (needs GL_ARB_gpu_shader_fp64)
+  bool fp64 = true;    // the expansion runs in double (GL_ARB_gpu_shader_fp64), else double-float
   bool doublePrecision = false;  // fp64 and D >= kDoubleDegree: the isolation runs in double too
 };
 
-// GLSL ES 3.00 (WebGL2) has no double: there the expansion and the isolation run in float,
-// with the same a priori bound taken with float's roundoff, up to this degree; above it the
-// web build traces polynomials with interval arithmetic (docs/web.md).
-inline constexpr int kFloatBernsteinMaxDegree = kDoubleDegree - 1;
+// GLSL ES 3.00 (WebGL2) has no double: there the expansion runs in double-float arithmetic
+// (a value is a float pair, about 44 bits) with the same a priori bound taken with its
+// roundoff, and the isolation in float, up to this degree. Above it the shader's JIT in a
+// software WebGL (SwiftShader) takes minutes, and the web build traces with interval
+// arithmetic (docs/web.md).
+inline constexpr int kWebBernsteinMaxDegree = 10;
 
 // Degree of f(s) the block would have: the structural degree of F, or nothing when F is not
 // a polynomial in x, y, z (parameters are coefficients).
@@ -59,7 +62,8 @@ std::optional<int> rayPolynomialDegree(const Graph& g, NodeId f);
 
 // Nothing when F is not a polynomial. The formula block (emit_glsl.hpp) must precede it: it
 // declares zs_params.
-// fp64 false: everything in float (GLSL ES), whatever the degree.
+// fp64 false (GLSL ES): the expansion in double-float and the isolation in float, whatever
+// the degree.
 std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f, bool fp64 = true);
 
 // The Bernstein kernels alone for degree d (part of the block above); exposed for tests.

@@ -109,7 +109,7 @@ SphereHierarchy tracingHierarchy(const Formula& formula, std::span<const double>
 }
 
 int maxBernsteinDegree(const PrepareOptions& options) {
-  return options.dialect == ShaderDialect::Es300 ? kFloatBernsteinMaxDegree : kMaxBernsteinDegree;
+  return options.dialect == ShaderDialect::Es300 ? kWebBernsteinMaxDegree : kMaxBernsteinDegree;
 }
 
 std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,

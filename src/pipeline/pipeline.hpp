@@ -66,8 +66,8 @@ SphereHierarchy tracingHierarchy(const Formula& formula, std::span<const double>
 
 struct PrepareOptions {
   bool validate = true;  // run glslang on the assembled shaders (not in the web build)
-  // GLSL ES 3.00 for WebGL2: no double there, so Bernstein runs in float up to
-  // kFloatBernsteinMaxDegree and polynomials of higher degree take the interval method.
+  // GLSL ES 3.00 for WebGL2: no double there, so Bernstein expands in double-float up to
+  // kWebBernsteinMaxDegree and polynomials of higher degree take the interval method.
   ShaderDialect dialect = ShaderDialect::Gl330;
   // With highlights.singular on: mark these points instead of searching for singular points.
   std::optional<std::vector<std::array<double, 3>>> markedPoints;
