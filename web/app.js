@@ -592,7 +592,8 @@ window.zeroset = {
   async frameTimes(count) {
     const times = [];
     for (let i = 0; i < count; i++) {
-      const ms = await renderer.draw((w, h) => session.frame(w, h), session.frame(1, 1).background);
+      const ms = await renderer.draw((w, h) => session.frame(w, h), session.frame(1, 1).background,
+                                     { whole: true });
       if (ms !== null) times.push(ms);
     }
     return times;

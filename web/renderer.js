@@ -130,8 +130,9 @@ export class Renderer {
 
   // Draws a frame: `frameAt(w, h)` gives the core's uniforms for the drawing-buffer size.
   // Resolves with the milliseconds it took, or null when a newer draw or a lost context
-  // superseded it. Slow frames go in horizontal bands, one band per task.
-  async draw(frameAt, background) {
+  // superseded it. Slow frames go in horizontal bands, one band per task; `whole` draws one
+  // band (frame-time measurements).
+  async draw(frameAt, background, { whole = false } = {}) {
     const id = ++this.drawId;
     if (this.lost) return null;
     const gl = this.gl;
@@ -158,7 +159,7 @@ export class Renderer {
       return performance.now() - start;
     }
     // Bands: as many as the last frame's time asks for, so each stays within the budget.
-    const bands = Math.min(64, Math.max(1, Math.ceil(this.lastFrameMs / TILE_BUDGET_MS)));
+    const bands = whole ? 1 : Math.min(64, Math.max(1, Math.ceil(this.lastFrameMs / TILE_BUDGET_MS)));
     const bandHeight = Math.ceil(h / bands);
     gl.enable(gl.SCISSOR_TEST);
     for (let b = 0; b < bands; b++) {
@@ -180,7 +181,7 @@ export class Renderer {
     }
     gl.disable(gl.SCISSOR_TEST);
     const ms = performance.now() - start;
-    this.lastFrameMs = ms;
+    if (!whole) this.lastFrameMs = ms;
     return ms;
   }
 }

@@ -210,6 +210,31 @@ cases['gallery'] = async () => {
   if (failures.length) throw new Error(failures.join('\n'));
 };
 
+// Numbers for docs/PERFORMANCE.md (not part of test.sh): page load to the first picture,
+// and the median of 9 full frames at 800 x 600 in the browser beside `zeroset bench` of the
+// same scene on the desktop (the method the page uses), in the same run.
+cases['bench'] = async () => {
+  const scenes = ['thesis/2-cayley-cubic', 'thesis/3-cuboid', 'thesis/5-klein-quartic',
+                  'barth-sextic', 'endrass-octic', 'gyroid'];
+  console.log('| scene | method | first picture ms | browser ms | desktop ms | browser / desktop |');
+  console.log('|---|---|---:|---:|---:|---:|');
+  for (const scene of scenes) {
+    const page = await openPage(`example=${scene}&size=800x600`);
+    await settled(page, 'ready', 60000);
+    const first = await page.evaluate(() => window.zeroset.firstPictureMs);
+    const method = await page.evaluate(() => window.zeroset.session.method());
+    const times = (await page.evaluate(() => window.zeroset.frameTimes(9))).sort((a, b) => a - b);
+    const browserMs = times[Math.floor(times.length / 2)];
+    await page.context().close();
+    const r = spawnSync(zeroset, ['bench', path.join(sourceDir, 'examples', `${scene}.surf`), '--frames', '9'],
+                        { encoding: 'utf8' });
+    const row = r.stdout.split('\n').find((l) => l.startsWith(`| ${method} |`));
+    const desktopMs = row ? Number(row.split('|')[2]) : NaN;
+    console.log(`| ${scene} | ${method} | ${first.toFixed(0)} | ${browserMs.toFixed(1)} | ` +
+                `${desktopMs.toFixed(1)} | ${(browserMs / desktopMs).toFixed(2)} |`);
+  }
+};
+
 cases['bad-formula-keeps-picture'] = async () => {
   const page = await openPage(`formula=${encodeURIComponent('x^2 + y^2 + z^2 - 1')}&size=${SIZE[0]}x${SIZE[1]}`);
   await settled(page);
