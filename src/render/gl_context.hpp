@@ -1,7 +1,7 @@
 #pragma once
 // GL contexts: takes a backend choice, puts out a current OpenGL 3.3+ core context whose
-// entry points are loaded through glad. Three backends: EGL surfaceless (the headless
-// default, renders into FBOs only), OSMesa (core profile, software only) and a GLFW window
+// entry points are loaded through glad. Three backends: EGL (the headless default,
+// Mesa's surfaceless platform or else an EGL device; renders into FBOs only), OSMesa (core profile, software only) and a GLFW window
 // (glfw_context.hpp, for the viewer). Every makeCurrent() reloads the glad function
 // pointers from that context's own get-proc-address, because libOSMesa and libOpenGL both
 // export gl* symbols and whichever the linker picked may be the wrong one.
@@ -21,7 +21,8 @@ class GlContext {
   // Makes this context current on the calling thread and reloads glad. False (with
   // lastError()) when the platform refuses or the loader finds no GL.
   virtual bool makeCurrent() = 0;
-  // "EGL surfaceless", "OSMesa", "GLFW window".
+  // "EGL surfaceless", "EGL device 0" (the first of EGL_EXT_device_enumeration that worked),
+  // "OSMesa", "GLFW window".
   virtual std::string backendName() const = 0;
   const std::string& lastError() const { return error_; }
 
