@@ -552,7 +552,8 @@ async function start() {
   } else if (params.has('example')) {
     const name = params.get('example');
     const at = examples.findIndex((e) => e.name === name);
-    const text = /^[A-Za-z0-9_\-/]+$/.test(name) ? await fetchText(`examples/${name}.surf`) : null;
+    // Only names the gallery lists are fetched: anything else is an error, not a request.
+    const text = at >= 0 ? await fetchText(`examples/${name}.surf`) : null;
     if (text === null) error = `example=${name}: no such example (the gallery lists them)`;
     else { currentExample = at; error = session.loadSurf(text, name + '.surf'); }
   } else if (params.has('formula')) {

@@ -1,6 +1,7 @@
 #include "web/web_session.hpp"
 
 #include <cstdio>
+#include <exception>
 #include <type_traits>
 #include <utility>
 
@@ -84,7 +85,12 @@ std::string WebSession::prepare() {
   PrepareOptions options;
   options.validate = false;  // WebGL2 compiles, and reports what it rejects
   options.dialect = ShaderDialect::Es300;
-  auto result = prepareSurface(scene_, options);
+  std::variant<PreparedSurface, std::string> result;
+  try {
+    result = prepareSurface(scene_, options);
+  } catch (const std::exception& e) {  // a bug in zeroset: said, and the page goes on
+    return std::string("internal error in zeroset: ") + e.what() + "\n";
+  }
   if (auto* err = std::get_if<std::string>(&result)) return *err;
   PreparedSurface surface = std::get<PreparedSurface>(std::move(result));
   GpuHierarchy gpu;

@@ -235,6 +235,84 @@ cases['bench'] = async () => {
   }
 };
 
+// Whatever is typed, dropped or put in the URL ends in a picture or a positioned message.
+cases['bad-formulas'] = async () => {
+  const page = await openPage(`size=${SIZE[0]}x${SIZE[1]}`);
+  await settled(page);
+  const typed = ['', 'x^', '1/0', 'sqrt(-1)', '0', 'a', 'x^1000', '(((((x', 'x²+y²-1',
+                 'sin(x)^2 + cos(y)^2 - 1', 'exp(x*1e6) - 1', '1e400 x',
+                 'x^2+y^2+z^2-1'.repeat(12).replace(/1x/g, '1+x')];
+  for (const formula of typed) {
+    await markBusy(page);
+    await page.fill('#formula', formula);
+    await page.waitForFunction(() => ['ready', 'error'].includes(document.documentElement.dataset.zeroset),
+                               null, { timeout: 15000 });
+    const state = await page.evaluate(() => document.documentElement.dataset.zeroset);
+    if (state === 'error') {
+      const message = await page.textContent('#zeroset-error');
+      check(message.trim() !== '' && !/internal error/.test(message), `"${formula}": ${message}`);
+    }
+  }
+};
+
+cases['bad-files-and-urls'] = async () => {
+  const page = await openPage(`size=${SIZE[0]}x${SIZE[1]}`);
+  await settled(page);
+  // A damaged .jsurf file, dropped.
+  await markBusy(page);
+  await page.evaluate(() => {
+    const dt = new DataTransfer();
+    dt.items.add(new File(['surface_equation=x^^2+y^2-1\n'], 'broken.jsurf', { type: 'text/plain' }));
+    window.dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
+  });
+  await settled(page, 'error');
+  const jsurfError = await page.textContent('#zeroset-error');
+  check(/broken\.jsurf:\d+:\d+/.test(jsurfError), `the .jsurf error has no position: ${jsurfError}`);
+  // URL parameters that are not what they should be.
+  for (const query of ['example=..%2F..%2Fetc%2Fpasswd', 'example=no-such-example', 'scene=%%%',
+                       'set=camera', 'set=no.such.key%3D1', 'size=abcxdef&formula=x']) {
+    const other = await openPage(query);
+    await other.waitForFunction(() => ['ready', 'error'].includes(document.documentElement.dataset.zeroset),
+                                null, { timeout: 15000 });
+    await other.context().close();
+  }
+};
+
+// A lost WebGL context comes back with the same picture.
+cases['lost-context-recovers'] = async () => {
+  const page = await openPage(`example=thesis/2-cayley-cubic&size=${SIZE[0]}x${SIZE[1]}`);
+  await settled(page);
+  await snapshot(page, 'before');
+  await markBusy(page);
+  await page.evaluate(async () => {
+    const ext = document.getElementById('view').getContext('webgl2').getExtension('WEBGL_lose_context');
+    ext.loseContext();
+    await new Promise((r) => setTimeout(r, 100));
+    ext.restoreContext();
+  });
+  await settled(page);
+  const r = await compareWith(page, { snapshotName: 'before' });
+  check(r.differing === 0, `the restored picture differs (${JSON.stringify(r)})`);
+};
+
+// On a phone 360 px wide: the picture fills the width above the panel, and the panel folds.
+cases['phone-layout'] = async () => {
+  const context = await browser.newContext({ viewport: { width: 360, height: 740 }, deviceScaleFactor: 2,
+                                             hasTouch: true, isMobile: true });
+  const page = await context.newPage();
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
+  page.on('pageerror', (e) => problems.push(`uncaught exception: ${e.message}`));
+  await page.goto(`${origin}/index.html?example=thesis/3-cuboid`);
+  await settled(page, 'ready', 30000);
+  const view = await page.locator('#view').boundingBox();
+  const panel = await page.locator('#panel').boundingBox();
+  check(view.width >= 359 && view.height > 250, `canvas ${JSON.stringify(view)}`);
+  check(panel.y >= view.y + view.height - 1 && panel.width >= 359, `panel ${JSON.stringify(panel)} over the picture`);
+  await page.click('#panel-toggle');
+  check(await page.isHidden('#panel'), 'the panel does not fold');
+  await context.close();
+};
+
 cases['bad-formula-keeps-picture'] = async () => {
   const page = await openPage(`formula=${encodeURIComponent('x^2 + y^2 + z^2 - 1')}&size=${SIZE[0]}x${SIZE[1]}`);
   await settled(page);
