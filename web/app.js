@@ -529,15 +529,25 @@ async function start() {
     canvas.style.width = `${fixedSize[0]}px`;
     canvas.style.height = `${fixedSize[1]}px`;
   }
-  core = await createZeroset();
-  session = new core.Session();
+  // The wasm, the gallery's index and the WebGL context (the browser starts its GPU side)
+  // come at once: none waits for another.
+  const coreReady = createZeroset();
+  const indexReady = fetchText('examples/index.json');
+  // The URL's example too, once the index says it exists (no request for unknown names).
+  const exampleName = params.get('example');
+  const exampleReady = indexReady.then((index) => {
+    const known = index && JSON.parse(index).some((e) => e.name === exampleName);
+    return known ? fetchText(`examples/${exampleName}.surf`) : null;
+  });
   renderer = new Renderer(canvas, { onRestored: () => { uploadedGeneration = -1; redraw(); } });
+  core = await coreReady;
+  session = new core.Session();
   for (const k of core.keys()) {
     const li = document.createElement('li');
     li.textContent = `${k.key}: ${k.description}`;
     $('keys').append(li);
   }
-  const index = await fetchText('examples/index.json');
+  const index = await indexReady;
   examples = index ? JSON.parse(index) : [];
   buildGallery();
 
@@ -552,8 +562,7 @@ async function start() {
   } else if (params.has('example')) {
     const name = params.get('example');
     const at = examples.findIndex((e) => e.name === name);
-    // Only names the gallery lists are fetched: anything else is an error, not a request.
-    const text = at >= 0 ? await fetchText(`examples/${name}.surf`) : null;
+    const text = at >= 0 ? await exampleReady : null;
     if (text === null) error = `example=${name}: no such example (the gallery lists them)`;
     else { currentExample = at; error = session.loadSurf(text, name + '.surf'); }
   } else if (params.has('formula')) {
