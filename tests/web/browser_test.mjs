@@ -299,6 +299,18 @@ cases['lost-context-recovers'] = async () => {
   check(r.differing === 0, `the restored picture differs (${JSON.stringify(r)})`);
 };
 
+// embed=1 shows only the picture, at the size the URL asks for.
+cases['embed-and-size'] = async () => {
+  const page = await openPage('example=thesis/7-racor&embed=1&size=200x150');
+  await settled(page);
+  check(await page.isHidden('#panel') && await page.isHidden('#panel-toggle') && await page.isHidden('#status'),
+        'embed mode shows more than the picture');
+  const view = await page.locator('#view').boundingBox();
+  check(Math.round(view.width) === 200 && Math.round(view.height) === 150, `canvas ${JSON.stringify(view)}`);
+  const size = await page.evaluate(() => [document.getElementById('view').width, document.getElementById('view').height]);
+  check(size[0] === 200 && size[1] === 150, `drawing buffer ${size}`);
+};
+
 // On a phone 360 px wide: the picture fills the width above the panel, and the panel folds.
 cases['phone-layout'] = async () => {
   const context = await browser.newContext({ viewport: { width: 360, height: 740 }, deviceScaleFactor: 2,
