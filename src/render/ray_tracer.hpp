@@ -5,13 +5,18 @@
 // formula's parameter values and the RenderSettings; puts out frames (RGBA8 + per-pixel
 // depth) rendered offscreen in tiles, or draws into the current framebuffer for the viewer.
 // Needs a current GL 3.3+ core context (gl_context.hpp) for its whole life; all GL objects
-// belong to that context. Never aborts on bad input: errors come back as strings.
+// belong to that context. Never aborts on bad input: errors come back as strings. It orders a
+// frame's passes; each part has its own file and keeps the GL state it does not own as it
+// found it: programs (program_cache.hpp), offscreen target (offscreen_target.hpp), beam pass
+// and tile skipping (beam_pass.hpp), curvature probe and read-back (frame_readback.hpp),
+// uniform values (frame_uniforms.hpp).
 #include <functional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "render/beam_pass.hpp"
 #include "render/frame_uniforms.hpp"
 #include "render/hierarchy_gpu.hpp"
 #include "render/image.hpp"
@@ -92,21 +97,14 @@ class RayTracer {
   // hierarchy texture, the proxy's vertex array and culling, the viewport.
   void setDrawState(int width, int height);
   void clearBackground(const RenderSettings& settings, bool offscreen);
-  // The interval method's beam pass (raytrace_beam.frag.glsl) into beamTex_, one texel per
-  // tile of the picture; false where the shader has none or it could not run. Leaves the
-  // frame's program in use and the framebuffer binding as they were.
+  // The interval method's beam pass (beam_pass.hpp) for this frame; false where the shader
+  // has none or it could not run.
   bool drawBeam(const RenderSettings& settings, const Domain& domain, int width, int height);
-  void releaseBeam();
-  // Reads the beam pass's result back, marks its clear tiles in the stencil buffer
-  // (render/beam_tiles.hpp) and leaves the stencil test on so that the next draw skips
-  // them; leaves the test off where too few tiles are clear or the tile mask does not
-  // compile.
-  void markClearTiles(int width, int height);
   // The frame's draw call, with the stencil test turned off after it.
   void drawFrame();
 
   // shading.curvature_range, or for 0 the range measured on a picture a quarter the size
-  // (render/shading_defines.hpp curvatureRangeOf); needs the current program in use.
+  // (frame_readback.hpp); needs the current program in use.
   double resolveCurvatureRange(const RenderSettings& settings, const Domain& domain, int width,
                                int height);
 
@@ -116,11 +114,9 @@ class RayTracer {
   ProgramVariant preferred_;  // what build() compiles first: the variant of the last frame
   double curvatureRange_ = 0;
   OffscreenTarget target_;
-  unsigned beamFbo_ = 0, beamTex_ = 0;
-  int beamWidth_ = 0, beamHeight_ = 0;
+  BeamPass beam_;
   bool beamPass_ = true;
   bool tileSkipping_ = true;
-  unsigned tileBuffer_ = 0;  // the clear tiles' rectangles (vertex attribute 0)
   GpuHierarchy hierarchy_;
   std::vector<float> params_;
   bool tangentRoots_ = true;
