@@ -71,10 +71,11 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   float len = tb - ta;
   // A pixel's width at distance t along the ray (a constant when orthographic).
   float pixel = 2.0 * rt.planeHalf / rt.resolution.y;
-  // F at the left and right end of the segment: evaluated at the ray's start, the form's
-  // c + s tau further on (only their signs, which are proven, and rough sizes count).
-  float fl = zs_F(o + ta * d), fr = 0.0;
-  bool dl = !zs_isUndefined(fl);
+  // F at the left end u of the segment, carried from the segment before (evaluated at the
+  // ray's start), and at its right end v (the form's c + s tau): only their signs, which are
+  // proven where carriedKnown / knownAtV say so, and rough sizes count.
+  float fCarried = zs_F(o + ta * d), fAtV = 0.0;
+  bool carriedKnown = !zs_isUndefined(fCarried);
   bool done = !(len > 0.0), found = false, bracketed = false;
   // The segment [u, v] being classified, in [0, 1]; the first one as long as the hint (5.).
   float u = 0.0, v = clamp(rtFirstSegment / len, 0.0, 1.0);
@@ -112,12 +113,12 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
       // F's signs at the ends from the form alone: where it clears the segment, c's; else,
       // outside the window, those of c + s tau.
       bool cleared = none && range.x <= range.y;
-      fr = F.x + F.y;
-      bool dr = cleared || (sloped && window.y < 1.0);
-      float fL = dl ? fl : F.x - F.y;
-      bool lk = dl || cleared || (sloped && window.x > -1.0);
-      bool known = lk && dr;
-      bool signChange = known && (fL == 0.0 || (fL > 0.0) != (fr > 0.0));
+      fAtV = F.x + F.y;
+      bool knownAtV = cleared || (sloped && window.y < 1.0);
+      float fAtU = carriedKnown ? fCarried : F.x - F.y;
+      bool knownAtU = carriedKnown || cleared || (sloped && window.x > -1.0);
+      bool known = knownAtU && knownAtV;
+      bool signChange = known && (fAtU == 0.0 || (fAtU > 0.0) != (fAtV > 0.0));
       // Where F is tame, splitting goes on to tracing.epsilon, which places a tangency or a
       // thin sheet that precisely; where it is not, it stops at the pixel footprint.
       float footprint = rt.epsilon + pixel * (rt.ortho != 0 ? 1.0 : max(t0, 0.0));
@@ -137,58 +138,59 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
       // A root isolated on a monotone segment lies in that window too: its ends, with the
       // form's values there (whose signs the form proves), become the bracket refinement
       // starts from, so a tight form leaves little to refine.
-      float nu = u, nv = v, nfl = fL, nfr = fr;
+      float clipU = u, clipV = v, clipFU = fAtU, clipFV = fAtV;
       if (sloped && !touch) {
         float lo = window.x, hi = window.y;
         float ul = (tm + h * lo - ta) / len, uh = (tm + h * hi - ta) / len;
         float value = F.x + F.y * lo, high = F.x + F.y * hi;
-        if (ul > u && lo > -1.0 && value != 0.0) { nu = ul; nfl = value; }
+        if (ul > u && lo > -1.0 && value != 0.0) { clipU = ul; clipFU = value; }
         if (uh < v && hi < 1.0 && high != 0.0) {
-          nv = uh; nfr = high;
+          clipV = uh; clipFV = high;
           bool joins = v >= gapFrom;  // (uh, v] and the gap before make one stretch
-          gapValue = (joins && gapTo > v) ? gapValue : fr;  // the form at v
+          gapValue = (joins && gapTo > v) ? gapValue : fAtV;  // the form at v
           gapTo = joins ? max(gapTo, v) : v;
           gapFrom = uh;
         }
         // The clipped range misses [u, v] (it lies in the rounding slack of tm +- h); a root
         // whose window collapsed that way keeps its segment.
-        none = none || (!found && !(nu < nv));
-        if (root && !(nu < nv)) { nu = u; nv = v; nfl = fL; nfr = fr; }
+        none = none || (!found && !(clipU < clipV));
+        if (root && !(clipU < clipV)) { clipU = u; clipV = v; clipFU = fAtU; clipFV = fAtV; }
       }
       // Next: after a segment with no root, the one to its right, longer by the growth below;
       // else the clipped segment, or the left half of it where clipping gained less than half.
-      float kept = nv - nu;
+      float kept = clipV - clipU;
       // Where the remainder dwarfs the slope the form is far from first-order tight (it
       // shrinks with the square of the length): a quarter.
       float part = F.z > 2.0 * abs(F.y) ? 0.25 : 0.5;
       // Monotone with the window over the right end: a root lies only near that end, inside or
       // just past it: the segment from the window on, twice as long as what of it was inside.
-      bool straddle = monotone && !dr && !found && !none && kept < 0.5 * size;
-      nv = straddle ? min(1.0, nu + 2.0 * kept)
-                    : ((!found && kept > 0.5 * size) ? nu + part * kept : nv);
-      fl = none ? fr : (nu > u ? nfl : fL);
-      fr = root ? nfr : fr;
-      dl = none ? dr : (lk || nu > u);
-      u = none ? v : nu;
+      bool straddle = monotone && !knownAtV && !found && !none && kept < 0.5 * size;
+      clipV = straddle ? min(1.0, clipU + 2.0 * kept)
+                       : ((!found && kept > 0.5 * size) ? clipU + part * kept : clipV);
+      fCarried = none ? fAtV : (clipU > u ? clipFU : fAtU);
+      fAtV = root ? clipFV : fAtV;
+      carriedKnown = none ? knownAtV : (knownAtU || clipU > u);
+      u = none ? v : clipU;
       // How much longer the next segment may be and still be cleared by its form, predicted
       // from this one's: with e = c + s (the form at the right end), the next segment g times
       // as long has its center near e + g s, slope g s and remainder g^2 r, which keeps F's
-      // sign while |e| - a g - r g^2 > 0, a = |s| - s sgn(e). Only a guess (any growth is
-      // exact): never below rtGrowth (raytrace_main.frag.glsl sets it per ray and says why).
-      float e = F.x + F.y, E = abs(e), a = abs(F.y) - F.y * sign(e);
-      float g = RT_GROWTH_TRUST * 2.0 * E / (a + sqrt(a * a + 4.0 * E * F.z));
-      float growth = (tame && g > rtGrowth) ? min(g, RT_GROWTH_MAX) : rtGrowth;  // NaN: rtGrowth
-      v = none ? min(1.0, v + max(growth * size, least)) : nv;
+      // sign while |e| - a g - r g^2 > 0, a = |s| - s sgn(e); g is growthGuess. Only a guess
+      // (any growth is exact): never below rtGrowth (raytrace_main.frag.glsl sets it per ray
+      // and says why); a NaN guess gives rtGrowth.
+      float e = F.x + F.y, absE = abs(e), a = abs(F.y) - F.y * sign(e);
+      float growthGuess = RT_GROWTH_TRUST * 2.0 * absE / (a + sqrt(a * a + 4.0 * absE * F.z));
+      float growth = (tame && growthGuess > rtGrowth) ? min(growthGuess, RT_GROWTH_MAX) : rtGrowth;
+      v = none ? min(1.0, v + max(growth * size, least)) : clipV;
       bool jump = none && u >= gapFrom && u < gapTo;
       v = jump ? min(1.0, gapTo + (v - u)) : v;
-      fl = jump ? gapValue : fl;
-      dl = dl || jump;
+      fCarried = jump ? gapValue : fCarried;
+      carriedKnown = carriedKnown || jump;
       u = jump ? gapTo : u;
       done = done || found || u >= 1.0;
     }
   } while (!done && ++step < RT_MAX_STEPS);
   found = found && u < 1.0 && len > 0.0;
-  float lo = u, hi = v, flo = fl, fhi = fr;
+  float lo = u, hi = v, flo = fCarried, fhi = fAtV;
   float x = (bracketed && flo == 0.0) ? lo : ((bracketed && fhi == 0.0) ? hi : 0.5 * (u + v));
 
   // Illinois: regula falsi that halves the value kept at an end chosen twice in a row, so
