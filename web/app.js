@@ -222,76 +222,90 @@ function tomlOf(setting, value) {
 
 const hex = (v) => Math.round(Math.min(1, Math.max(0, v)) * 255).toString(16).padStart(2, '0');
 
+// One row of a panel: the key and an input that applies it through --set's validation.
+function settingRow(s) {
+  const row = document.createElement('div');
+  row.className = 'setting';
+  const id = 'set-' + s.key.replace(/\./g, '-');
+  const label = document.createElement('label');
+  label.htmlFor = id;
+  label.textContent = s.key.replace(/^lights\.source\.\d+\./, '');
+  row.append(label);
+  let input;
+  if (s.type === 'bool') {
+    input = document.createElement('input');
+    input.type = 'checkbox';
+    input.checked = s.value[0] !== 0;
+    input.addEventListener('change', () => applySetting(s.key, tomlOf(s, input.checked)));
+  } else if (s.type === 'enum') {
+    input = document.createElement('select');
+    for (const c of s.choices) input.add(new Option(c, c, false, c === s.choice));
+    input.addEventListener('change', () => applySetting(s.key, tomlOf(s, input.value)));
+  } else if (s.type === 'vec3' && /color/.test(s.key)) {
+    input = document.createElement('input');
+    input.type = 'color';
+    input.value = '#' + s.value.map(hex).join('');
+    input.addEventListener('change', () => {
+      const v = [1, 3, 5].map((i) => parseInt(input.value.slice(i, i + 2), 16) / 255);
+      applySetting(s.key, tomlOf(s, v));
+    });
+  } else if (s.type === 'vec3') {
+    input = document.createElement('span');
+    input.className = 'vec';
+    const parts = s.value.map((v, i) => {
+      const n = document.createElement('input');
+      n.type = 'number';
+      n.step = 'any';
+      n.value = v;
+      n.setAttribute('aria-label', `${s.key} ${'xyz'[i]}`);
+      return n;
+    });
+    parts.forEach((n) => n.addEventListener('change', () => applySetting(s.key, tomlOf(s, parts.map((p) => p.value)))));
+    input.append(...parts);
+    parts[0].id = id;
+  } else {
+    input = document.createElement('input');
+    input.type = 'number';
+    input.step = s.type === 'int' ? '1' : 'any';
+    if (Number.isFinite(s.lo)) input.min = s.lo;
+    if (Number.isFinite(s.hi)) input.max = s.hi;
+    input.value = s.value[0];
+    input.addEventListener('change', () => applySetting(s.key, tomlOf(s, input.value)));
+  }
+  if (!input.id) input.id = id;
+  input.dataset.key = s.key;
+  row.append(input);
+  return row;
+}
+
+// The panels, built from the .surf schema (every key, its range and value) and the scene's
+// light sources; rebuilt after each edit, keeping which are open and the focused key.
 function buildSettings() {
   const box = $('settings');
   const open = new Set([...box.querySelectorAll('details[open]')].map((d) => d.dataset.group));
   const focused = document.activeElement?.dataset?.key;
   box.replaceChildren();
   const groups = new Map();
-  for (const s of session.settings()) {
-    const group = groupOf(s.key);
-    if (!groups.has(group)) {
+  const group = (name) => {
+    if (!groups.has(name)) {
       const d = document.createElement('details');
-      d.dataset.group = group;
-      d.open = open.has(group);
+      d.dataset.group = name;
+      d.open = open.has(name);
       const summary = document.createElement('summary');
-      summary.textContent = group;
+      summary.textContent = name;
       d.append(summary);
-      groups.set(group, d);
+      groups.set(name, d);
     }
-    const row = document.createElement('div');
-    row.className = 'setting';
-    const id = 'set-' + s.key.replace(/\./g, '-');
-    const label = document.createElement('label');
-    label.htmlFor = id;
-    label.textContent = s.key;
-    row.append(label);
-    let input;
-    if (s.type === 'bool') {
-      input = document.createElement('input');
-      input.type = 'checkbox';
-      input.checked = s.value[0] !== 0;
-      input.addEventListener('change', () => applySetting(s.key, tomlOf(s, input.checked)));
-    } else if (s.type === 'enum') {
-      input = document.createElement('select');
-      for (const c of s.choices) input.add(new Option(c, c, false, c === s.choice));
-      input.addEventListener('change', () => applySetting(s.key, tomlOf(s, input.value)));
-    } else if (s.type === 'vec3' && /color/.test(s.key)) {
-      input = document.createElement('input');
-      input.type = 'color';
-      input.value = '#' + s.value.map(hex).join('');
-      input.addEventListener('change', () => {
-        const v = [1, 3, 5].map((i) => parseInt(input.value.slice(i, i + 2), 16) / 255);
-        applySetting(s.key, tomlOf(s, v));
-      });
-    } else if (s.type === 'vec3') {
-      input = document.createElement('span');
-      input.className = 'vec';
-      const parts = s.value.map((v, i) => {
-        const n = document.createElement('input');
-        n.type = 'number';
-        n.step = 'any';
-        n.value = v;
-        n.setAttribute('aria-label', `${s.key} ${'xyz'[i]}`);
-        return n;
-      });
-      parts.forEach((n) => n.addEventListener('change', () => applySetting(s.key, tomlOf(s, parts.map((p) => p.value)))));
-      input.append(...parts);
-      parts[0].id = id;
-    } else {
-      input = document.createElement('input');
-      input.type = 'number';
-      input.step = s.type === 'int' ? '1' : 'any';
-      if (Number.isFinite(s.lo)) input.min = s.lo;
-      if (Number.isFinite(s.hi)) input.max = s.hi;
-      input.value = s.value[0];
-      input.addEventListener('change', () => applySetting(s.key, tomlOf(s, input.value)));
-    }
-    if (!input.id) input.id = id;
-    input.dataset.key = s.key;
-    row.append(input);
-    groups.get(group).append(row);
-  }
+    return groups.get(name);
+  };
+  for (const s of session.settings()) group(groupOf(s.key)).append(settingRow(s));
+  session.lights().forEach((light, i) => {
+    const set = document.createElement('fieldset');
+    const legend = document.createElement('legend');
+    legend.textContent = `light ${i + 1}`;
+    set.append(legend, ...light.map(settingRow));
+    group('Lights').append(set);
+  });
   box.append(...groups.values());
   if (focused) box.querySelector(`[data-key="${focused}"]`)?.focus();
 }

@@ -122,24 +122,36 @@ val keysJs() {
   return out;
 }
 
+val settingJs(const Setting& setting) {
+  val e = val::object();
+  e.set("key", setting.key);
+  e.set("type", setting.type);
+  e.set("lo", setting.lo);
+  e.set("hi", setting.hi);
+  e.set("loOpen", setting.loOpen);
+  e.set("hiOpen", setting.hiOpen);
+  val choices = val::array();
+  for (const std::string& c : setting.choices) choices.call<void>("push", c);
+  e.set("choices", choices);
+  val value = val::array();
+  for (double v : setting.value) value.call<void>("push", v);
+  e.set("value", value);
+  e.set("choice", setting.choice);
+  return e;
+}
+
 val settingsJs(const WebSession& s) {
   val out = val::array();
-  for (const Setting& setting : s.settings()) {
-    val e = val::object();
-    e.set("key", setting.key);
-    e.set("type", setting.type);
-    e.set("lo", setting.lo);
-    e.set("hi", setting.hi);
-    e.set("loOpen", setting.loOpen);
-    e.set("hiOpen", setting.hiOpen);
-    val choices = val::array();
-    for (const std::string& c : setting.choices) choices.call<void>("push", c);
-    e.set("choices", choices);
-    val value = val::array();
-    for (double v : setting.value) value.call<void>("push", v);
-    e.set("value", value);
-    e.set("choice", setting.choice);
-    out.call<void>("push", e);
+  for (const Setting& setting : s.settings()) out.call<void>("push", settingJs(setting));
+  return out;
+}
+
+val lightsJs(const WebSession& s) {
+  val out = val::array();
+  for (const std::vector<Setting>& light : s.lights()) {
+    val keys = val::array();
+    for (const Setting& setting : light) keys.call<void>("push", settingJs(setting));
+    out.call<void>("push", keys);
   }
   return out;
 }
@@ -193,6 +205,7 @@ EMSCRIPTEN_BINDINGS(zeroset) {
       .function("formula", &formulaJs)
       .function("params", &paramsJs)
       .function("settings", &settingsJs)
+      .function("lights", &lightsJs)
       .function("notes", &WebSession::notes)
       .function("method", &WebSession::method)
       .function("sceneSize", &sizeJs);

@@ -154,46 +154,69 @@ void WebSession::resetView() { scene_.render.camera = dragStart_ = loadedCamera_
 
 std::string WebSession::sceneText() const { return saveScene(scene_); }
 
-std::vector<Setting> WebSession::settings() const {
+namespace {
+
+// One schema key's range and current value in `scene`, as the page shows it.
+Setting settingOf(const scene_detail::KeySpec& spec, Scene& scene, std::string key) {
   using namespace scene_detail;
+  Setting s;
+  s.key = std::move(key);
+  s.lo = spec.range.lo;
+  s.hi = spec.range.hi;
+  s.loOpen = spec.range.loOpen;
+  s.hiOpen = spec.range.hiOpen;
+  std::visit(
+      [&](const auto& field) {
+        using F = std::decay_t<decltype(field)>;
+        if constexpr (std::is_same_v<F, BoolRef>) {
+          s.type = "bool";
+          s.value = {field(scene) ? 1.0 : 0.0};
+        } else if constexpr (std::is_same_v<F, IntRef> || std::is_same_v<F, SizeRef>) {
+          s.type = "int";
+          s.value = {double(field(scene))};
+        } else if constexpr (std::is_same_v<F, RealRef>) {
+          s.type = "real";
+          s.value = {field(scene)};
+        } else if constexpr (std::is_same_v<F, VecRef>) {
+          s.type = "vec3";
+          const Vec3& v = field(scene);
+          s.value = {v[0], v[1], v[2]};
+        } else {
+          s.type = "enum";
+          for (std::string_view name : field.names) s.choices.emplace_back(name);
+          const int index = field.get(scene);
+          if (index >= 0 && index < int(s.choices.size())) s.choice = s.choices[std::size_t(index)];
+        }
+      },
+      spec.field);
+  return s;
+}
+
+}  // namespace
+
+std::vector<Setting> WebSession::settings() const {
   std::vector<Setting> out;
   Scene scene = scene_;  // the schema's fields address a mutable Scene
-  for (const KeySpec& spec : keySpecs()) {
+  for (const scene_detail::KeySpec& spec : scene_detail::keySpecs()) {
     if (spec.legacyLight >= 0) continue;  // old names, read only
-    Setting s;
-    s.key = std::string(spec.name);
-    s.lo = spec.range.lo;
-    s.hi = spec.range.hi;
-    s.loOpen = spec.range.loOpen;
-    s.hiOpen = spec.range.hiOpen;
-    std::visit(
-        [&](const auto& field) {
-          using F = std::decay_t<decltype(field)>;
-          if constexpr (std::is_same_v<F, BoolRef>) {
-            s.type = "bool";
-            s.value = {field(scene) ? 1.0 : 0.0};
-          } else if constexpr (std::is_same_v<F, IntRef>) {
-            s.type = "int";
-            s.value = {double(field(scene))};
-          } else if constexpr (std::is_same_v<F, SizeRef>) {
-            s.type = "int";
-            s.value = {double(field(scene))};
-          } else if constexpr (std::is_same_v<F, RealRef>) {
-            s.type = "real";
-            s.value = {field(scene)};
-          } else if constexpr (std::is_same_v<F, VecRef>) {
-            s.type = "vec3";
-            const Vec3& v = field(scene);
-            s.value = {v[0], v[1], v[2]};
-          } else {
-            s.type = "enum";
-            for (std::string_view name : field.names) s.choices.emplace_back(name);
-            const int index = field.get(scene);
-            if (index >= 0 && index < int(s.choices.size())) s.choice = s.choices[std::size_t(index)];
-          }
-        },
-        spec.field);
-    out.push_back(std::move(s));
+    out.push_back(settingOf(spec, scene, std::string(spec.name)));
+  }
+  return out;
+}
+
+std::vector<std::vector<Setting>> WebSession::lights() const {
+  std::vector<std::vector<Setting>> out;
+  const std::vector<Light>& sources = scene_.render.lights.sources;
+  for (std::size_t i = 0; i < sources.size(); ++i) {
+    // The light keys address the first light of a scene that holds just this one.
+    Scene scratch;
+    scratch.render.lights.sources = {sources[i]};
+    std::vector<Setting> light;
+    for (const scene_detail::KeySpec& spec : scene_detail::lightKeySpecs()) {
+      light.push_back(settingOf(spec, scratch, "lights.source." + std::to_string(i + 1) + "." +
+                                                   std::string(spec.name)));
+    }
+    out.push_back(std::move(light));
   }
   return out;
 }

@@ -24,7 +24,7 @@ namespace zs::web {
 
 // One key of the .surf schema (scene/schema.hpp) as the page's panels show it.
 struct Setting {
-  std::string key;   // dotted, as in a .surf file and --set: "tracing.epsilon"
+  std::string key;   // as --set takes it: "tracing.epsilon", "lights.source.2.intensity"
   std::string type;  // "bool", "int", "real", "vec3" or "enum"
   double lo = 0, hi = 0;         // the allowed range (each component of a vec3)
   bool loOpen = false, hiOpen = false;
@@ -84,6 +84,9 @@ class WebSession {
   std::string sceneText() const;
   // Every key of the scene schema with its range and current value, in file order.
   std::vector<Setting> settings() const;
+  // The light sources in order, each as its keys ("lights.source.N.KEY", N from 1, what
+  // applyOverrides takes).
+  std::vector<std::vector<Setting>> lights() const;
   // Parameter names in the formula's order and their values (prepared surface's).
   std::vector<std::pair<std::string, double>> params() const;
   // Notes for the user: the method's fallback, a constant formula, what a .jsurf file

@@ -299,6 +299,27 @@ cases['lost-context-recovers'] = async () => {
   check(r.differing === 0, `the restored picture differs (${JSON.stringify(r)})`);
 };
 
+// A light edited in the Lights panel goes through --set's validation and redraws.
+cases['light-edit-redraws'] = async () => {
+  const page = await openPage(`example=thesis/3-cuboid&size=${SIZE[0]}x${SIZE[1]}`);
+  await settled(page);
+  await snapshot(page, 'before');
+  await page.click('details[data-group="Lights"] > summary');
+  await markBusy(page);
+  await page.fill('#set-lights-source-1-intensity', '0');
+  await page.press('#set-lights-source-1-intensity', 'Enter');
+  await page.dispatchEvent('#set-lights-source-1-intensity', 'change');
+  await settled(page);
+  check(/intensity = 0\.0/.test(await page.evaluate(() => window.zeroset.session.sceneText())),
+        'the light\'s intensity did not reach the scene');
+  check((await compareWith(page, { snapshotName: 'before' })).differing > 0.05, 'the picture did not change');
+  await markBusy(page);
+  await page.fill('#set-lights-source-1-intensity', '-1');
+  await page.dispatchEvent('#set-lights-source-1-intensity', 'change');
+  await settled(page, 'error');
+  check(/lights\.source\.1\.intensity/.test(await page.textContent('#zeroset-error')), 'a bad intensity names no key');
+};
+
 // embed=1 shows only the picture, at the size the URL asks for.
 cases['embed-and-size'] = async () => {
   const page = await openPage('example=thesis/7-racor&embed=1&size=200x150');
