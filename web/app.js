@@ -334,8 +334,33 @@ canvas.addEventListener('pointerdown', (e) => {
   }
 });
 
+// Hovering with a mouse shows what lies under the cursor (src/probe): the point, F's
+// normal and the curvatures, in the status line.
+let lastProbe = 0, probeTimer = 0;
+function showProbe(e) {
+  // At most one probe per 80 ms, and always one for where the cursor stopped.
+  const x = Math.floor(e.offsetX), y = Math.floor(e.offsetY);
+  clearTimeout(probeTimer);
+  const wait = lastProbe + 80 - performance.now();
+  if (wait > 0) {
+    probeTimer = setTimeout(() => showProbe({ offsetX: x, offsetY: y }), wait);
+    return;
+  }
+  if (!session.prepared()) return;
+  lastProbe = performance.now();
+  const [w, h] = cssSize();
+  const r = session.probe(x, y, Math.round(w), Math.round(h));
+  const f = (v) => (Number.isFinite(v) ? v.toPrecision(4) : 'n/a');
+  statusLine.textContent = r.error ? r.error : !r.hit ? 'no surface under the cursor'
+    : `(${r.point.map(f).join(', ')}) · n (${r.normal.map(f).join(', ')}) · ` +
+      `K ${f(r.K)} · H ${f(r.H)} · k1 ${f(r.k1)} · k2 ${f(r.k2)}`;
+}
+
 canvas.addEventListener('pointermove', (e) => {
-  if (!pointers.has(e.pointerId)) return;
+  if (!pointers.has(e.pointerId)) {
+    if (e.pointerType === 'mouse') showProbe(e);
+    return;
+  }
   pointers.set(e.pointerId, [e.offsetX, e.offsetY]);
   if (pointers.size === 1 && dragFrom) {
     const [w, h] = cssSize();

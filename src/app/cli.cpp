@@ -20,6 +20,7 @@ void addCommands(CLI::App& app) {
   addBenchCommand(app);
   addViewCommand(app);
   addSingularCommand(app);
+  addProbeCommand(app);
   addMeshCommand(app);
   addImportCommand(app);
   addExportCommand(app);

@@ -16,6 +16,7 @@ void addMeshCommand(CLI::App& app);
 void addImportCommand(CLI::App& app);
 void addExportCommand(CLI::App& app);
 void addGalleryCommand(CLI::App& app);
+void addProbeCommand(CLI::App& app);
 
 // `zeroset` with no arguments: the formula prompt (repl/prompt.hpp).
 int runPrompt();

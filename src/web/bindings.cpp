@@ -156,6 +156,32 @@ val lightsJs(const WebSession& s) {
   return out;
 }
 
+val probeJs(const WebSession& s, int x, int y, int width, int height) {
+  auto result = s.probe(x, y, width, height);
+  val out = val::object();
+  if (auto* err = std::get_if<std::string>(&result)) {
+    out.set("error", *err);
+    return out;
+  }
+  const ProbeResult& r = std::get<ProbeResult>(result);
+  out.set("hit", r.hit);
+  if (!r.hit) return out;
+  auto vec = [](const Vec3& v) {
+    val a = val::array();
+    for (double c : v) a.call<void>("push", c);
+    return a;
+  };
+  out.set("point", vec(r.point));
+  out.set("F", r.value);
+  out.set("gradient", vec(r.gradient));
+  out.set("normal", vec(r.normal));
+  out.set("K", r.gaussian);
+  out.set("H", r.mean);
+  out.set("k1", r.k1);
+  out.set("k2", r.k2);
+  return out;
+}
+
 std::string formulaJs(const WebSession& s) { return s.scene().formula; }
 
 val sizeJs(const WebSession& s) {
@@ -203,6 +229,7 @@ EMSCRIPTEN_BINDINGS(zeroset) {
       .function("resetView", &WebSession::resetView)
       .function("sceneText", &WebSession::sceneText)
       .function("formula", &formulaJs)
+      .function("probe", &probeJs)
       .function("params", &paramsJs)
       .function("settings", &settingsJs)
       .function("lights", &lightsJs)

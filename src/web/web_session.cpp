@@ -128,6 +128,11 @@ FrameUniforms WebSession::frame(int width, int height) const {
   return frame;
 }
 
+std::variant<ProbeResult, std::string> WebSession::probe(int x, int y, int width, int height) const {
+  if (!surface_) return std::string("nothing is drawn yet");
+  return probePixel(surface_->formula, surface_->params, scene_, width, height, x, y);
+}
+
 void WebSession::beginDrag() { dragStart_ = scene_.render.camera; }
 
 void WebSession::drag(double x0, double y0, double x1, double y1, int width, int height) {

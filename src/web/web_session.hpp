@@ -16,6 +16,7 @@
 
 #include "interact/key_bindings.hpp"
 #include "pipeline/pipeline.hpp"
+#include "probe/probe.hpp"
 #include "render/frame_uniforms.hpp"
 #include "render/hierarchy_gpu.hpp"
 #include "scene/scene.hpp"
@@ -72,6 +73,9 @@ class WebSession {
   void beginDrag();
   void drag(double x0, double y0, double x1, double y1, int width, int height);
   void zoom(double wheelSteps);
+  // What lies under pixel (x, y) of a width x height view of the prepared surface
+  // (probe/probe.hpp): the hover readout.
+  std::variant<ProbeResult, std::string> probe(int x, int y, int width, int height) const;
   // The desktop viewer's keys (interact/key_bindings.hpp; GLFW's key codes, which are the
   // upper-case letters, and GLFW_MOD_SHIFT = 1). Returns the effect: 0 none, 1 redraw,
   // 2 prepare; `message` says what changed.

@@ -320,6 +320,21 @@ cases['light-edit-redraws'] = async () => {
   check(/lights\.source\.1\.intensity/.test(await page.textContent('#zeroset-error')), 'a bad intensity names no key');
 };
 
+// Hovering over the unit sphere reads its curvatures (src/probe): K = H = 1.
+cases['hover-shows-curvature'] = async () => {
+  const page = await openPage(`formula=${encodeURIComponent('x^2 + y^2 + z^2 - 1')}&size=${SIZE[0]}x${SIZE[1]}`);
+  await settled(page);
+  const box = await page.locator('#view').boundingBox();
+  await page.mouse.move(box.x + SIZE[0] / 2 + 3, box.y + SIZE[1] / 2 - 2, { steps: 4 });
+  await page.waitForFunction(() => /K /.test(document.getElementById('status').textContent), null,
+                             { timeout: 5000 }).catch(() => {});
+  const status = await page.textContent('#status');
+  check(/K 1\.000 · H 1\.000 · k1 1\.000 · k2 1\.000/.test(status), `status: ${status}`);
+  await page.mouse.move(box.x + 2, box.y + 2, { steps: 4 });
+  await page.waitForFunction(() => /no surface/.test(document.getElementById('status').textContent), null,
+                             { timeout: 5000 });
+};
+
 // embed=1 shows only the picture, at the size the URL asks for.
 cases['embed-and-size'] = async () => {
   const page = await openPage('example=thesis/7-racor&embed=1&size=200x150');

@@ -1,0 +1,49 @@
+#pragma once
+// Inspecting one point of the picture: takes a formula with its parameter values, the
+// scene's domain and camera, and a pixel of a width x height picture (or any ray), puts out
+// where that ray first meets F = 0 inside the domain, and there F, grad F, the unit normal,
+// the Gaussian and mean curvature K and H and the principal curvatures k1 >= k2, from the
+// symbolic Hessian in double (docs/curvature.md for the formulas and the orientation). The
+// first root is isolated with interval arithmetic on the CPU (src/interval), with the
+// tangent tolerance of the tracer (docs/renderer.md), so no GPU is needed: the command line
+// (`zeroset probe`), the viewer and the web page share it.
+#include <span>
+#include <string>
+#include <variant>
+
+#include "parser/parser.hpp"
+#include "render/camera.hpp"
+#include "scene/scene.hpp"
+
+namespace zs {
+
+struct ProbeResult {
+  bool hit = false;
+  double t = 0;        // along the unit ray, from its origin
+  Vec3 point{};
+  double value = 0;    // F at the point (near 0: the root is located within 1e-12 of t)
+  Vec3 gradient{};
+  // grad F / |grad F| and the curvatures; NaN where grad F = 0 (a singular point).
+  Vec3 normal{};
+  double gaussian = 0, mean = 0, k1 = 0, k2 = 0;
+};
+
+// The first root along `ray` inside the domain (box, or ball), or hit = false. An error
+// only when the search runs out of its budget (a ray grazing a surface over its whole length).
+std::variant<ProbeResult, std::string> probeRay(const Formula& formula,
+                                                std::span<const double> params,
+                                                const Domain& domain, const Ray& ray);
+
+// The same for the centre of pixel (x, y) of the picture `zeroset render` draws at
+// width x height (docs/camera.md), x from the left and y from the top, both from 0.
+std::variant<ProbeResult, std::string> probePixel(const Formula& formula,
+                                                  std::span<const double> params,
+                                                  const Scene& scene, int width, int height,
+                                                  int x, int y);
+
+// "name: value" lines (point, F, gradient, normal, K, H, k1, k2), or a JSON object with the
+// same keys; a miss says so ("hit: false").
+std::string probeText(const ProbeResult& result);
+std::string probeJson(const ProbeResult& result);
+
+}  // namespace zs

@@ -1,0 +1,104 @@
+// The probe against analytic answers: the unit sphere and a torus (its outer and inner
+// equators), a miss, a pole that is not a surface, and the centre pixel of a picture.
+#include "probe/probe.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <variant>
+
+namespace zs {
+namespace {
+
+Formula parse(const char* text) {
+  ParseResult parsed = parseFormula(text);
+  EXPECT_TRUE(std::holds_alternative<Formula>(parsed)) << text;
+  return std::get<Formula>(std::move(parsed));
+}
+
+ProbeResult probe(const char* formula, const Ray& ray, Domain domain = {}) {
+  const Formula f = parse(formula);
+  auto result = probeRay(f, {}, domain, ray);
+  EXPECT_TRUE(std::holds_alternative<ProbeResult>(result));
+  return std::get<ProbeResult>(result);
+}
+
+Domain cube(double half) {
+  Domain d;
+  d.min = {-half, -half, -half};
+  d.max = {half, half, half};
+  return d;
+}
+
+constexpr double kTol = 1e-4;
+
+TEST(Probe, UnitSphereHasTheAnalyticCurvatures) {
+  const ProbeResult r = probe("x^2 + y^2 + z^2 - 1", Ray{{0, 0, 4}, {0, 0, -1}}, cube(2));
+  ASSERT_TRUE(r.hit);
+  EXPECT_NEAR(r.t, 3, 1e-9);
+  EXPECT_NEAR(r.point[2], 1, 1e-9);
+  EXPECT_NEAR(r.value, 0, 1e-9);
+  EXPECT_NEAR(r.normal[2], 1, 1e-12);
+  EXPECT_NEAR(r.gaussian, 1, kTol);
+  EXPECT_NEAR(r.mean, 1, kTol);  // grad F points outwards: H = +1/r (docs/curvature.md)
+  EXPECT_NEAR(r.k1, 1, kTol);
+  EXPECT_NEAR(r.k2, 1, kTol);
+}
+
+TEST(Probe, TorusEquatorsHaveTheAnalyticCurvatures) {
+  // R = 1, r = 0.4: outer equator (1.4, 0, 0), inner (0.6, 0, 0).
+  const char* torus = "(x^2 + y^2 + z^2 + 1 - 0.16)^2 - 4*(x^2 + y^2)";
+  const double R = 1, r = 0.4;
+  const ProbeResult outer = probe(torus, Ray{{3, 0, 0}, {-1, 0, 0}}, cube(2));
+  ASSERT_TRUE(outer.hit);
+  EXPECT_NEAR(outer.point[0], R + r, 1e-9);
+  EXPECT_NEAR(outer.gaussian, 1 / (r * (R + r)), kTol);
+  EXPECT_NEAR(outer.mean, 0.5 * (1 / r + 1 / (R + r)), kTol);
+  EXPECT_NEAR(outer.k1, 1 / r, kTol);
+  EXPECT_NEAR(outer.k2, 1 / (R + r), kTol);
+  const ProbeResult inner = probe(torus, Ray{{0, 0, 0}, {1, 0, 0}}, cube(2));
+  ASSERT_TRUE(inner.hit);
+  EXPECT_NEAR(inner.point[0], R - r, 1e-9);
+  EXPECT_NEAR(inner.gaussian, -1 / (r * (R - r)), kTol);
+  EXPECT_NEAR(inner.mean, 0.5 * (1 / r - 1 / (R - r)), kTol);
+  EXPECT_NEAR(inner.k1, 1 / r, kTol);
+  EXPECT_NEAR(inner.k2, -1 / (R - r), kTol);
+}
+
+TEST(Probe, MissesAndPolesAreNoHit) {
+  EXPECT_FALSE(probe("x^2 + y^2 + z^2 - 1", Ray{{0, 3, 4}, {0, 0, -1}}, cube(2)).hit);
+  // 1/x changes sign at x = 0 without a root.
+  EXPECT_FALSE(probe("1/x", Ray{{2, 0.3, 0.2}, {-1, 0, 0}}, cube(3)).hit);
+  // Outside the ball domain nothing is found, though the plane continues there.
+  Domain ball;
+  ball.shape = DomainShape::Sphere;
+  ball.center = {0, 0, 0};
+  ball.radius = 1;
+  EXPECT_FALSE(probe("z", Ray{{3, 0, 1}, {-1, 0, 0}}, ball).hit);
+  EXPECT_TRUE(probe("z - 0.5", Ray{{0, 0, 3}, {0, 0, -1}}, ball).hit);
+}
+
+TEST(Probe, TangentRayTouchesTheSquaredSphere) {
+  // (x^2+y^2+z^2-1)^2 has no sign change at all: still a surface.
+  const ProbeResult r = probe("(x^2 + y^2 + z^2 - 1)^2", Ray{{0, 0, 4}, {0, 0, -1}}, cube(2));
+  ASSERT_TRUE(r.hit);
+  EXPECT_NEAR(r.point[2], 1, 1e-4);
+}
+
+TEST(Probe, CentrePixelOfThePicture) {
+  Scene scene;  // the unit sphere, the default camera looking at the origin
+  const Formula f = parse(scene.formula.c_str());
+  auto result = probePixel(f, {}, scene, 101, 101, 50, 50);
+  ASSERT_TRUE(std::holds_alternative<ProbeResult>(result));
+  const ProbeResult& r = std::get<ProbeResult>(result);
+  ASSERT_TRUE(r.hit);
+  EXPECT_NEAR(std::hypot(r.point[0], r.point[1], r.point[2]), 1, 1e-9);
+  EXPECT_NEAR(r.gaussian, 1, kTol);
+  EXPECT_TRUE(std::holds_alternative<std::string>(probePixel(f, {}, scene, 10, 10, 10, 3)));
+  EXPECT_NE(probeText(r).find("k2: "), std::string::npos);
+  EXPECT_NE(probeJson(r).find("\"K\": "), std::string::npos);
+  EXPECT_EQ(probeText(ProbeResult{}), "hit: false\n");
+}
+
+}  // namespace
+}  // namespace zs
