@@ -31,7 +31,8 @@ int runProbe(const ProbeArgs& args) {
   std::optional<Scene> scene = loadSceneArgs(args.scene);
   if (!scene) return 1;
   int width = scene->width, height = scene->height;
-  if (!args.size.empty() && !(parsePair(args.size, 'x', width, height) && width > 0 && height > 0)) {
+  if (!args.size.empty() &&
+      !(parsePair(args.size, 'x', width, height) && width > 0 && height > 0)) {
     std::cerr << "error: --size '" << args.size << "' is not WIDTHxHEIGHT\n"
               << "hint: e.g. --size 800x600, the size of the picture the pixel belongs to\n";
     return 1;
@@ -48,7 +49,8 @@ int runProbe(const ProbeArgs& args) {
     return 1;
   }
   const Formula& formula = std::get<Formula>(parsed);
-  auto result = probePixel(formula, paramValues(*scene, formula.graph), *scene, width, height, x, y);
+  auto result =
+      probePixel(formula, paramValues(*scene, formula.graph), *scene, width, height, x, y);
   if (auto* err = std::get_if<std::string>(&result)) {
     std::cerr << "error: " << *err << "\n";
     return 1;

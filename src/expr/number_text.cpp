@@ -20,7 +20,8 @@ std::string portable(T v) {
   char buf[64];
   for (int p = 1; p <= maxDigits; ++p) {
     std::snprintf(buf, sizeof buf, "%.*e", p - 1, double(v));
-    const T back = sizeof(T) == sizeof(float) ? T(std::strtof(buf, nullptr)) : T(std::strtod(buf, nullptr));
+    const T back =
+        sizeof(T) == sizeof(float) ? T(std::strtof(buf, nullptr)) : T(std::strtod(buf, nullptr));
     if (back == v) break;
   }
   std::string text = buf;
@@ -36,15 +37,17 @@ std::string portable(T v) {
   std::string scientific = digits.substr(0, 1);
   if (n > 1) scientific += "." + digits.substr(1);
   const int a = exponent < 0 ? -exponent : exponent;
-  scientific += std::string("e") + (exponent < 0 ? "-" : "+") + (a < 10 ? "0" : "") + std::to_string(a);
+  scientific +=
+      std::string("e") + (exponent < 0 ? "-" : "+") + (a < 10 ? "0" : "") + std::to_string(a);
   std::string fixed;
   if (exponent >= 0) {
     // An integer longer than its shortest digits: to_chars writes its exact value.
     if (exponent + 1 >= n) {
       std::snprintf(buf, sizeof buf, "%.0f", std::fabs(double(v)));
       fixed = buf;
-    }
-    else fixed = digits.substr(0, std::size_t(exponent + 1)) + "." + digits.substr(std::size_t(exponent + 1));
+    } else
+      fixed = digits.substr(0, std::size_t(exponent + 1)) + "." +
+              digits.substr(std::size_t(exponent + 1));
   } else {
     fixed = "0." + std::string(std::size_t(-exponent - 1), '0') + digits;
   }
@@ -64,10 +67,18 @@ std::string shortest(T v) {
 
 }  // namespace
 
-std::string shortestText(double v) { return shortest(v); }
-std::string shortestText(float v) { return shortest(v); }
-std::string shortestTextPortable(double v) { return portable(v); }
-std::string shortestTextPortable(float v) { return portable(v); }
+std::string shortestText(double v) {
+  return shortest(v);
+}
+std::string shortestText(float v) {
+  return shortest(v);
+}
+std::string shortestTextPortable(double v) {
+  return portable(v);
+}
+std::string shortestTextPortable(float v) {
+  return portable(v);
+}
 
 std::optional<double> parseDecimal(std::string_view text) {
 #if defined(__cpp_lib_to_chars) && __cpp_lib_to_chars >= 201611L

@@ -116,7 +116,8 @@ std::variant<ProbeResult, std::string> probeRay(const Formula& formula,
     slopes.eval(box, params, withGradient);
     Interval slope = Interval::point(0);
     for (int k = 0; k < 3; ++k)
-      slope = ia::add(slope, ia::mul(withGradient[std::size_t(k + 1)], Interval::point(ray.direction[k])));
+      slope = ia::add(slope,
+                      ia::mul(withGradient[std::size_t(k + 1)], Interval::point(ray.direction[k])));
     double lo = a, hi = b, flo = valueAt(a), fhi = valueAt(b);
     const bool signChange = std::isfinite(flo) && std::isfinite(fhi) && (flo > 0) != (fhi > 0);
     const bool monotone = !slope.isEmpty() && !slope.containsZero();
@@ -125,8 +126,16 @@ std::variant<ProbeResult, std::string> probeRay(const Formula& formula,
     if (signChange && flo != 0) {
       for (int i = 0; i < 80 && hi - lo > 1e-15 * std::max(1.0, std::abs(lo)); ++i) {
         const double m = 0.5 * (lo + hi), fm = valueAt(m);
-        if (fm == 0) { lo = hi = m; break; }
-        if ((fm > 0) == (flo > 0)) { lo = m; flo = fm; } else { hi = m; }
+        if (fm == 0) {
+          lo = hi = m;
+          break;
+        }
+        if ((fm > 0) == (flo > 0)) {
+          lo = m;
+          flo = fm;
+        } else {
+          hi = m;
+        }
       }
     }
     tHit = 0.5 * (lo + hi);
@@ -181,8 +190,8 @@ std::variant<ProbeResult, std::string> probeRay(const Formula& formula,
 
 std::variant<ProbeResult, std::string> probePixel(const Formula& formula,
                                                   std::span<const double> params,
-                                                  const Scene& scene, int width, int height,
-                                                  int x, int y) {
+                                                  const Scene& scene, int width, int height, int x,
+                                                  int y) {
   if (width <= 0 || height <= 0 || x < 0 || y < 0 || x >= width || y >= height) {
     return "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
            std::to_string(width) + "x" + std::to_string(height) + " picture";
@@ -202,15 +211,17 @@ std::string number(double v) {
 std::string vec(const Vec3& v, const char* sep) {
   return number(v[0]) + sep + number(v[1]) + sep + number(v[2]);
 }
-std::string jsonNumber(double v) { return std::isfinite(v) ? number(v) : "null"; }
+std::string jsonNumber(double v) {
+  return std::isfinite(v) ? number(v) : "null";
+}
 
 }  // namespace
 
 std::string probeText(const ProbeResult& r) {
   if (!r.hit) return "hit: false\n";
-  return "point: " + vec(r.point, " ") + "\nF: " + number(r.value) + "\ngradient: " +
-         vec(r.gradient, " ") + "\nnormal: " + vec(r.normal, " ") + "\nK: " +
-         number(r.gaussian) + "\nH: " + number(r.mean) + "\nk1: " + number(r.k1) +
+  return "point: " + vec(r.point, " ") + "\nF: " + number(r.value) +
+         "\ngradient: " + vec(r.gradient, " ") + "\nnormal: " + vec(r.normal, " ") +
+         "\nK: " + number(r.gaussian) + "\nH: " + number(r.mean) + "\nk1: " + number(r.k1) +
          "\nk2: " + number(r.k2) + "\n";
 }
 

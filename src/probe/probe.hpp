@@ -19,9 +19,9 @@ namespace zs {
 
 struct ProbeResult {
   bool hit = false;
-  double t = 0;        // along the unit ray, from its origin
+  double t = 0;  // along the unit ray, from its origin
   Vec3 point{};
-  double value = 0;    // F at the point (near 0: the root is located within 1e-12 of t)
+  double value = 0;  // F at the point (near 0: the root is located within 1e-12 of t)
   Vec3 gradient{};
   // grad F / |grad F| and the curvatures; NaN where grad F = 0 (a singular point).
   Vec3 normal{};
@@ -38,8 +38,8 @@ std::variant<ProbeResult, std::string> probeRay(const Formula& formula,
 // width x height (docs/camera.md), x from the left and y from the top, both from 0.
 std::variant<ProbeResult, std::string> probePixel(const Formula& formula,
                                                   std::span<const double> params,
-                                                  const Scene& scene, int width, int height,
-                                                  int x, int y);
+                                                  const Scene& scene, int width, int height, int x,
+                                                  int y);
 
 // "name: value" lines (point, F, gradient, normal, K, H, k1, k2), or a JSON object with the
 // same keys; a miss says so ("hit: false").

@@ -109,7 +109,8 @@ void BeamPass::markClearTiles(const std::function<unsigned()>& mask, unsigned va
   glEnableVertexAttribArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   glUseProgram(program);
-  glUniform1i(glGetUniformLocation(program, "rtProxy"), 2);  // the rectangles (fullscreen.vert.glsl)
+  glUniform1i(glGetUniformLocation(program, "rtProxy"),
+              2);  // the rectangles (fullscreen.vert.glsl)
   const GLboolean culling = glIsEnabled(GL_CULL_FACE);
   glDisable(GL_CULL_FACE);
   glDisable(GL_SCISSOR_TEST);

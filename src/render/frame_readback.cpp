@@ -63,9 +63,10 @@ double probeCurvatureRange(OffscreenTarget& target, const RenderSettings& settin
   glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(readBinding));
   // Noise floor: 1e-3 of the curvature of a sphere as large as the domain.
   const Domain box = boundingBox(domain);
-  const double half = 0.5 * std::hypot(box.max[0] - box.min[0], box.max[1] - box.min[1],
-                                       box.max[2] - box.min[2]);
-  const double floor = settings.shading.color == ColorMode::Gauss ? 1e-3 / (half * half) : 1e-3 / half;
+  const double half =
+      0.5 * std::hypot(box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]);
+  const double floor =
+      settings.shading.color == ColorMode::Gauss ? 1e-3 / (half * half) : 1e-3 / half;
   return curvatureRangeOf(std::move(values), floor);
 }
 

@@ -11,9 +11,7 @@ namespace {
 class UniformList {
  public:
   explicit UniformList(std::vector<UniformValue>& out) : out_(out) {}
-  void integer(const char* name, int v) {
-    out_.push_back({name, UniformValue::Kind::Int, {}, v});
-  }
+  void integer(const char* name, int v) { out_.push_back({name, UniformValue::Kind::Int, {}, v}); }
   void real(const char* name, double v) {
     out_.push_back({name, UniformValue::Kind::Float, {float(v)}, 0});
   }
@@ -113,7 +111,8 @@ FrameUniforms frameUniforms(const RenderSettings& s, const Domain& clip, const F
   // Tangent roots are accepted within a distance far below epsilon: epsilon bounds how
   // precisely a crossing is located, not how near a ray may pass and still count as a hit.
   double diagonal = 0;
-  for (int a = 0; a < 3; ++a) diagonal += (domain.max[a] - domain.min[a]) * (domain.max[a] - domain.min[a]);
+  for (int a = 0; a < 3; ++a)
+    diagonal += (domain.max[a] - domain.min[a]) * (domain.max[a] - domain.min[a]);
   u.real("rtTangentTolerance", 1e-5 * std::max(std::sqrt(diagonal), 1e-6));
 
   // The lights themselves are shader constants (render/shading_defines.hpp).

@@ -32,8 +32,8 @@ struct FrameInputs {
   std::span<const float> params;            // zs_params, in declaration order
   int width = 1, height = 1;                // the full picture, in pixels
   Proxy proxy = Proxy::Box;
-  bool tangentRoots = true;                 // sampling: look for tangent roots
-  double curvatureRange = 0;                // the curvature colorings' range; <= 0: 1
+  bool tangentRoots = true;   // sampling: look for tangent roots
+  double curvatureRange = 0;  // the curvature colorings' range; <= 0: 1
 };
 
 struct FrameUniforms {

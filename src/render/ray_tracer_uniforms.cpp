@@ -14,12 +14,24 @@ void applyUniforms(ProgramCache& programs, unsigned program,
     if (location < 0) continue;  // not read by this variant: the driver removed it
     const float* v = u.values.data();
     switch (u.kind) {
-      case UniformValue::Kind::Int: glUniform1i(location, u.integer); break;
-      case UniformValue::Kind::Float: glUniform1f(location, v[0]); break;
-      case UniformValue::Kind::Vec2: glUniform2f(location, v[0], v[1]); break;
-      case UniformValue::Kind::Vec3: glUniform3f(location, v[0], v[1], v[2]); break;
-      case UniformValue::Kind::Vec4: glUniform4f(location, v[0], v[1], v[2], v[3]); break;
-      case UniformValue::Kind::Mat4: glUniformMatrix4fv(location, 1, GL_FALSE, v); break;
+      case UniformValue::Kind::Int:
+        glUniform1i(location, u.integer);
+        break;
+      case UniformValue::Kind::Float:
+        glUniform1f(location, v[0]);
+        break;
+      case UniformValue::Kind::Vec2:
+        glUniform2f(location, v[0], v[1]);
+        break;
+      case UniformValue::Kind::Vec3:
+        glUniform3f(location, v[0], v[1], v[2]);
+        break;
+      case UniformValue::Kind::Vec4:
+        glUniform4f(location, v[0], v[1], v[2], v[3]);
+        break;
+      case UniformValue::Kind::Mat4:
+        glUniformMatrix4fv(location, 1, GL_FALSE, v);
+        break;
       case UniformValue::Kind::FloatArray:
         glUniform1fv(location, GLsizei(u.values.size()), v);
         break;
@@ -29,8 +41,8 @@ void applyUniforms(ProgramCache& programs, unsigned program,
 
 }  // namespace
 
-int RayTracer::setUniforms(unsigned program, const RenderSettings& s, const Domain& clip,
-                           int width, int height) {
+int RayTracer::setUniforms(unsigned program, const RenderSettings& s, const Domain& clip, int width,
+                           int height) {
   FrameInputs in;
   in.hierarchy = &hierarchy_;
   in.params = params_;

@@ -31,13 +31,20 @@ val hierarchyJs(const WebSession& s) {
 
 const char* kindName(UniformValue::Kind kind) {
   switch (kind) {
-    case UniformValue::Kind::Int: return "int";
-    case UniformValue::Kind::Float: return "float";
-    case UniformValue::Kind::Vec2: return "vec2";
-    case UniformValue::Kind::Vec3: return "vec3";
-    case UniformValue::Kind::Vec4: return "vec4";
-    case UniformValue::Kind::Mat4: return "mat4";
-    case UniformValue::Kind::FloatArray: return "floats";
+    case UniformValue::Kind::Int:
+      return "int";
+    case UniformValue::Kind::Float:
+      return "float";
+    case UniformValue::Kind::Vec2:
+      return "vec2";
+    case UniformValue::Kind::Vec3:
+      return "vec3";
+    case UniformValue::Kind::Vec4:
+      return "vec4";
+    case UniformValue::Kind::Mat4:
+      return "mat4";
+    case UniformValue::Kind::FloatArray:
+      return "floats";
   }
   return "float";
 }
@@ -53,7 +60,8 @@ val frameJs(const WebSession& s, int width, int height) {
       entry.set("value", u.integer);
     } else {
       val values = val::global("Float32Array").new_(u.values.size());
-      values.call<void>("set", val(emscripten::typed_memory_view(u.values.size(), u.values.data())));
+      values.call<void>("set",
+                        val(emscripten::typed_memory_view(u.values.size(), u.values.data())));
       entry.set("value", values);
     }
     uniforms.call<void>("push", entry);
@@ -84,15 +92,25 @@ val paramsJs(const WebSession& s) {
 const char* pageAction(interact::Action action) {
   using interact::Action;
   switch (action) {
-    case Action::NextExample: return "next";
-    case Action::PrevExample: return "previous";
-    case Action::Screenshot: case Action::WindowShot: return "png";
-    case Action::SaveScene: return "save";
-    case Action::FocusFormula: return "formula";
-    case Action::TogglePanel: return "panel";
-    case Action::ToggleGallery: return "gallery";
-    case Action::ResetView: return "reset";
-    default: return "";
+    case Action::NextExample:
+      return "next";
+    case Action::PrevExample:
+      return "previous";
+    case Action::Screenshot:
+    case Action::WindowShot:
+      return "png";
+    case Action::SaveScene:
+      return "save";
+    case Action::FocusFormula:
+      return "formula";
+    case Action::TogglePanel:
+      return "panel";
+    case Action::ToggleGallery:
+      return "gallery";
+    case Action::ResetView:
+      return "reset";
+    default:
+      return "";
   }
 }
 
@@ -182,7 +200,9 @@ val probeJs(const WebSession& s, int x, int y, int width, int height) {
   return out;
 }
 
-std::string formulaJs(const WebSession& s) { return s.scene().formula; }
+std::string formulaJs(const WebSession& s) {
+  return s.scene().formula;
+}
 
 val sizeJs(const WebSession& s) {
   val out = val::object();
@@ -198,23 +218,22 @@ EMSCRIPTEN_BINDINGS(zeroset) {
   emscripten::class_<WebSession>("Session")
       .constructor<>()
       // embind passes std::string, not std::string_view
-      .function("loadFormula", emscripten::optional_override(
-                                   [](WebSession& s, const std::string& f) { return s.loadFormula(f); }))
-      .function("setFormula", emscripten::optional_override(
-                                  [](WebSession& s, const std::string& f) { return s.setFormula(f); }))
+      .function("loadFormula",
+                emscripten::optional_override(
+                    [](WebSession& s, const std::string& f) { return s.loadFormula(f); }))
+      .function("setFormula",
+                emscripten::optional_override(
+                    [](WebSession& s, const std::string& f) { return s.setFormula(f); }))
       .function("loadSurf", emscripten::optional_override(
-                                [](WebSession& s, const std::string& text, const std::string& name) {
-                                  return s.loadSurf(text, name);
-                                }))
+                                [](WebSession& s, const std::string& text,
+                                   const std::string& name) { return s.loadSurf(text, name); }))
       .function("loadJsurf", emscripten::optional_override(
-                                 [](WebSession& s, const std::string& text, const std::string& name) {
-                                   return s.loadJsurf(text, name);
-                                 }))
+                                 [](WebSession& s, const std::string& text,
+                                    const std::string& name) { return s.loadJsurf(text, name); }))
       .function("applyOverrides", &applyOverridesJs)
-      .function("setParam", emscripten::optional_override(
-                                [](WebSession& s, const std::string& name, double value) {
-                                  return s.setParam(name, value);
-                                }))
+      .function("setParam",
+                emscripten::optional_override([](WebSession& s, const std::string& name,
+                                                 double value) { return s.setParam(name, value); }))
       .function("prepare", &WebSession::prepare)
       .function("prepared", &WebSession::prepared)
       .function("generation", &WebSession::generation)

@@ -128,12 +128,15 @@ FrameUniforms WebSession::frame(int width, int height) const {
   return frame;
 }
 
-std::variant<ProbeResult, std::string> WebSession::probe(int x, int y, int width, int height) const {
+std::variant<ProbeResult, std::string> WebSession::probe(int x, int y, int width,
+                                                         int height) const {
   if (!surface_) return std::string("nothing is drawn yet");
   return probePixel(surface_->formula, surface_->params, scene_, width, height, x, y);
 }
 
-void WebSession::beginDrag() { dragStart_ = scene_.render.camera; }
+void WebSession::beginDrag() {
+  dragStart_ = scene_.render.camera;
+}
 
 void WebSession::drag(double x0, double y0, double x1, double y1, int width, int height) {
   scene_.render.camera = interact::orbitCamera(dragStart_, {x0, y0, x1, y1, width, height});
@@ -155,9 +158,13 @@ int WebSession::key(int keyCode, int mods, std::string& message) {
   return static_cast<int>(interact::applyAction(binding->action, scene_, message));
 }
 
-void WebSession::resetView() { scene_.render.camera = dragStart_ = loadedCamera_; }
+void WebSession::resetView() {
+  scene_.render.camera = dragStart_ = loadedCamera_;
+}
 
-std::string WebSession::sceneText() const { return saveScene(scene_); }
+std::string WebSession::sceneText() const {
+  return saveScene(scene_);
+}
 
 namespace {
 
@@ -218,8 +225,8 @@ std::vector<std::vector<Setting>> WebSession::lights() const {
     scratch.render.lights.sources = {sources[i]};
     std::vector<Setting> light;
     for (const scene_detail::KeySpec& spec : scene_detail::lightKeySpecs()) {
-      light.push_back(settingOf(spec, scratch, "lights.source." + std::to_string(i + 1) + "." +
-                                                   std::string(spec.name)));
+      light.push_back(settingOf(
+          spec, scratch, "lights.source." + std::to_string(i + 1) + "." + std::string(spec.name)));
     }
     out.push_back(std::move(light));
   }
@@ -244,9 +251,12 @@ std::string WebSession::notes() const {
 std::string WebSession::method() const {
   if (!surface_) return {};
   switch (surface_->method) {
-    case TracingMethod::Bernstein: return "bernstein";
-    case TracingMethod::Sampling: return "sampling";
-    default: return "interval";
+    case TracingMethod::Bernstein:
+      return "bernstein";
+    case TracingMethod::Sampling:
+      return "sampling";
+    default:
+      return "interval";
   }
 }
 

@@ -25,9 +25,9 @@ namespace zs::web {
 
 // One key of the .surf schema (scene/schema.hpp) as the page's panels show it.
 struct Setting {
-  std::string key;   // as --set takes it: "tracing.epsilon", "lights.source.2.intensity"
-  std::string type;  // "bool", "int", "real", "vec3" or "enum"
-  double lo = 0, hi = 0;         // the allowed range (each component of a vec3)
+  std::string key;        // as --set takes it: "tracing.epsilon", "lights.source.2.intensity"
+  std::string type;       // "bool", "int", "real", "vec3" or "enum"
+  double lo = 0, hi = 0;  // the allowed range (each component of a vec3)
   bool loOpen = false, hiOpen = false;
   std::vector<std::string> choices;  // enum only
   std::vector<double> value;         // the current value: 1 number (bool: 0/1), or 3

@@ -23,9 +23,28 @@ std::string toChars(T v) {
 }
 
 TEST(NumberText, PortableWritesWhatToCharsWrites) {
-  const double cases[] = {0.0, -0.0, 1.0, -1.0, 0.1, 0.4, 2.5, 100.0, 1e5, 123456.0, 1e15,
-                          1e16, 1e22, 1e-4, 1e-5, 3.0e-7, 1.0 / 3.0, 9.55, 1e300, 5e-324,
-                          std::numeric_limits<double>::max(), std::numeric_limits<double>::min()};
+  const double cases[] = {0.0,
+                          -0.0,
+                          1.0,
+                          -1.0,
+                          0.1,
+                          0.4,
+                          2.5,
+                          100.0,
+                          1e5,
+                          123456.0,
+                          1e15,
+                          1e16,
+                          1e22,
+                          1e-4,
+                          1e-5,
+                          3.0e-7,
+                          1.0 / 3.0,
+                          9.55,
+                          1e300,
+                          5e-324,
+                          std::numeric_limits<double>::max(),
+                          std::numeric_limits<double>::min()};
   for (double v : cases) {
     EXPECT_EQ(shortestTextPortable(v), toChars(v)) << v;
     EXPECT_EQ(shortestTextPortable(float(v)), toChars(float(v))) << v;
