@@ -86,7 +86,7 @@ std::string loadLevel(const PreparedSurface& surface, Scene& scene, int level,
       tracingHierarchy(surface.formula, surface.params, octree, surface.method);
   info.octreeMs = msSince(start);
   info.leaves = octree.leaves.size();
-  info.spheres = hierarchy.nodes.size();
+  info.nodes = hierarchy.nodes.size();
   return tracer.setHierarchy(hierarchy.packed());
 }
 
