@@ -26,7 +26,7 @@ constexpr std::array<KeyBinding, 25> kBindings{{
     {GLFW_KEY_S, 0, Action::ToggleSilhouette, "S", "toggle the silhouette highlight"},
     {GLFW_KEY_E, 0, Action::EpsilonUp, "E", "epsilon x10 (coarser roots, faster)"},
     {GLFW_KEY_E, S, Action::EpsilonDown, "Shift+E", "epsilon /10 (finer roots)"},
-    {GLFW_KEY_O, 0, Action::LevelUp, "O", "octree level +1 (tighter spheres)"},
+    {GLFW_KEY_O, 0, Action::LevelUp, "O", "octree level +1 (tighter boxes)"},
     {GLFW_KEY_O, S, Action::LevelDown, "Shift+O", "octree level -1"},
     {GLFW_KEY_I, 0, Action::IntervalsUp, "I", "intervals per segment +1"},
     {GLFW_KEY_I, S, Action::IntervalsDown, "Shift+I", "intervals per segment -1"},

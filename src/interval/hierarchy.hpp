@@ -1,14 +1,19 @@
 #pragma once
-// The bounding-sphere hierarchy: takes the kept boxes of an octree, puts out a flat array
-// the fragment shader walks without a stack. Layout (docs/hierarchy.md):
+// The box hierarchy: takes the kept boxes of an octree, puts out a tree of axis-aligned
+// boxes as a flat array that the fragment shader walks without a stack. A leaf's box is a
+// kept octree cell (maybe cut to the surface's bounds), an inner node's the tight union of
+// its children's. Layout (docs/hierarchy.md):
 //   nodes in pre-order; each node is 3 vec4 texels
-//     t0 = (center.xyz, radius)         radius = half the box diagonal (exact bound)
+//     t0 = (center.xyz, radius)         the sphere around the box, radius = half the
+//                                       diagonal: the thesis' bounding sphere. Only
+//                                       tests/interval/hierarchy_test.cpp reads it;
+//                                       toGpuHierarchy (render/hierarchy_gpu.hpp) drops it
 //     t1 = (boxMin.xyz, escape)         escape = index of the next node when this subtree
 //                                       is skipped or finished (== node count at the end)
 //     t2 = (boxMax.xyz, isLeaf)         1.0 for a leaf (kept box at the deepest level it
 //                                       reached), 0.0 for an inner node
-//   Walking: i = 0; while i < count: if ray meets sphere(i) and box(i): if leaf, trace the
-//   segment and go to escape, else go to i + 1 (first child); otherwise go to escape.
+//   Walking: i = 0; while i < count: if the ray meets box(i): if leaf, trace the segment
+//   and go to escape, else go to i + 1 (first child); otherwise go to escape.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -40,16 +45,16 @@ inline std::optional<Box> meet(const Box& a, const Box& b) {
   return r;
 }
 
-struct SphereNode {
-  std::array<double, 3> center{};
+struct BoxNode {
+  std::array<double, 3> center{};  // the sphere around the box (t0 above)
   double radius = 0;
   Box box;
   std::int32_t escape = 0;
   bool leaf = false;
 };
 
-struct SphereHierarchy {
-  std::vector<SphereNode> nodes;  // pre-order
+struct BoxHierarchy {
+  std::vector<BoxNode> nodes;  // pre-order
 
   // 12 floats per node, in the texel layout above.
   std::vector<float> packed() const;

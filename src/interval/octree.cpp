@@ -1,6 +1,6 @@
 // The octree build. The top levels run on one thread and hand out the boxes at level
-// kSplitLevel as tasks; worker threads take tasks from a shared counter and walk each
-// subtree depth-first with an explicit stack. Task results are joined in task order, so
+// kSplitLevel as tasks; worker threads take tasks from a shared counter (parallelFor) and
+// walk each subtree depth-first with an explicit stack. Task results are joined in task order, so
 // the leaves come out in the same pre-order whatever the thread count or timing.
 #include "interval/octree.hpp"
 
@@ -12,6 +12,7 @@
 
 #include "expr/derivative.hpp"
 #include "expr/tape.hpp"
+#include "interval/parallel.hpp"
 #include "interval/tape_eval.hpp"
 
 namespace zs {
@@ -188,26 +189,15 @@ OctreeResult buildOctree(const Formula& formula, std::span<const double> params,
 #else
   unsigned threads = settings.threads ? settings.threads : std::thread::hardware_concurrency();
 #endif
-  threads = std::clamp(threads, 1u, unsigned(std::max<std::size_t>(tasks.size(), 1)));
+  threads = unsigned(workerCount(tasks.size(), threads));
   std::vector<std::vector<OctreeLeaf>> results(tasks.size());
-  std::vector<std::vector<LevelStats>> stats(threads);
-  std::atomic<std::size_t> next{0};
-  auto work = [&](unsigned t) {
-    Walker w(shared);
-    for (std::size_t i; (i = next.fetch_add(1)) < tasks.size();) w.walk(tasks[i], results[i], 0, nullptr);
-    w.flushBudget();
-    stats[t] = w.stats();
-  };
-#ifdef __EMSCRIPTEN__
-  work(0);
-#else
-  if (threads == 1) {
-    work(0);
-  } else {
-    std::vector<std::jthread> pool;
-    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work, t);
-  }
-#endif
+  std::vector<Walker> walkers;  // one per worker: its own evaluator, statistics and budget share
+  walkers.reserve(threads);
+  for (unsigned t = 0; t < threads; ++t) walkers.emplace_back(shared);
+  parallelFor(tasks.size(), threads, [&](std::size_t task, std::size_t worker) {
+    walkers[worker].walk(tasks[task], results[task], 0, nullptr);
+  });
+  for (Walker& w : walkers) w.flushBudget();
   topWalker.flushBudget();
   if (shared.overBudget)
     return OctreeError{"octree build stopped: more than " + std::to_string(settings.nodeBudget) +
@@ -221,12 +211,14 @@ OctreeResult buildOctree(const Formula& formula, std::span<const double> params,
   tree.settings = settings;
   tree.threads = threads;
   tree.levels = topWalker.stats();
-  for (const auto& s : stats)
+  for (const Walker& w : walkers) {
+    const std::vector<LevelStats>& s = w.stats();
     for (std::size_t l = 0; l < s.size(); ++l) {
       tree.levels[l].tested += s[l].tested;
       tree.levels[l].kept += s[l].kept;
       tree.levels[l].leaves += s[l].leaves;
     }
+  }
   for (const OctreeLeaf& leaf : top) {
     if (leaf.level >= 0) {
       tree.leaves.push_back(leaf);

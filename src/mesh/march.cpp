@@ -1,11 +1,10 @@
 #include "mesh/march.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <span>
-#include <thread>
 
+#include "interval/parallel.hpp"
 #include "mesh/huge_pages.hpp"
 #include "mesh/kuhn.hpp"
 
@@ -138,20 +137,12 @@ Marched marchBricks(const Grid& grid, std::vector<std::uint64_t> seeds,
     for (std::size_t groupStart = 0; groupStart < wave.size(); groupStart += kGroupChunks * kChunkBricks) {
       const std::size_t bricks = std::min(kGroupChunks * kChunkBricks, wave.size() - groupStart);
       const std::size_t chunks = (bricks + kChunkBricks - 1) / kChunkBricks;
-      std::atomic<std::size_t> next{0};
-      auto work = [&](std::size_t t) {
-        for (std::size_t c; (c = next.fetch_add(1)) < chunks;) {
-          const std::size_t first = groupStart + c * kChunkBricks;
-          group[c].clear();
-          marchChunk(grid, std::span(wave).subspan(first, std::min(kChunkBricks, groupStart + bricks - first)),
-                     evaluators[t], group[c]);
-        }
-      };
-      {
-        std::vector<std::jthread> pool;
-        for (std::size_t t = 1; t < std::min(evaluators.size(), chunks); ++t) pool.emplace_back(work, t);
-        work(0);
-      }
+      parallelFor(chunks, evaluators.size(), [&](std::size_t c, std::size_t worker) {
+        const std::size_t first = groupStart + c * kChunkBricks;
+        group[c].clear();
+        marchChunk(grid, std::span(wave).subspan(first, std::min(kChunkBricks, groupStart + bricks - first)),
+                   evaluators[worker], group[c]);
+      });
       if (m.bricks == 0) {
         // Room for all the seeds' edges and faces at this group's rate, in advised storage.
         std::size_t edges = 0, triangles = 0, quads = 0;
@@ -206,40 +197,35 @@ double placeRoots(const Grid& grid, const Marched& marched, std::span<FieldEvalu
   // Work in blocks, so that the threads share it evenly and write disjoint parts.
   constexpr std::size_t kBlock = 4096;
   const std::size_t blocks = (n + kBlock - 1) / kBlock;
-  const std::size_t threads = std::min<std::size_t>(evaluators.size(), blocks);
-  std::vector<double> worst(threads, 0.0);
-  std::atomic<std::size_t> next{0};
-  auto work = [&](std::size_t t) {
-    FieldEvaluator& ev = evaluators[t];
+  const std::size_t workers = workerCount(blocks, evaluators.size());
+  std::vector<double> worst(workers, 0.0);
+  struct Scratch {  // per worker, reused from block to block
     std::vector<FieldEvaluator::Edge> queries;
     std::vector<FieldEvaluator::Root> roots;
-    for (std::size_t block; (block = next.fetch_add(1)) < blocks;) {
-      const std::size_t first = block * kBlock, last = std::min(n, first + kBlock);
-      queries.clear();
-      for (std::size_t i = first; i < last; ++i) {
-        const GridEdge& e = marched.edges[i];
-        queries.push_back({grid.position(e.negativeKey), grid.position(e.positiveKey), e.negativeValue, e.positiveValue});
-      }
-      roots.assign(queries.size(), {});
-      ev.rootsOnEdges(queries, roots);
-      for (std::size_t i = first; i < last; ++i) {
-        const FieldEvaluator::Edge& q = queries[i - first];
-        const FieldEvaluator::Root& r = roots[i - first];
-        mesh.positions[i] = r.position;
-        // Where the gradient vanishes or is undefined, the edge's direction (negative to
-        // positive) still points out of the solid.
-        const std::array<float, 3> along = unit({q.b[0] - q.a[0], q.b[1] - q.a[1], q.b[2] - q.a[2]}, {0, 0, 1});
-        mesh.normals[i] = unit(r.gradient, along);
-        mesh.kinds[i] = r.onBall ? VertexKind::Cap : (r.pole ? VertexKind::Pole : VertexKind::Surface);
-        if (mesh.kinds[i] == VertexKind::Surface) worst[t] = std::max(worst[t], r.residual);
-      }
-    }
   };
-  {
-    std::vector<std::jthread> pool;
-    for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work, t);
-    work(0);
-  }
+  std::vector<Scratch> scratch(workers);
+  parallelFor(blocks, workers, [&](std::size_t block, std::size_t worker) {
+    auto& [queries, roots] = scratch[worker];
+    const std::size_t first = block * kBlock, last = std::min(n, first + kBlock);
+    queries.clear();
+    for (std::size_t i = first; i < last; ++i) {
+      const GridEdge& e = marched.edges[i];
+      queries.push_back({grid.position(e.negativeKey), grid.position(e.positiveKey), e.negativeValue, e.positiveValue});
+    }
+    roots.assign(queries.size(), {});
+    evaluators[worker].rootsOnEdges(queries, roots);
+    for (std::size_t i = first; i < last; ++i) {
+      const FieldEvaluator::Edge& q = queries[i - first];
+      const FieldEvaluator::Root& r = roots[i - first];
+      mesh.positions[i] = r.position;
+      // Where the gradient vanishes or is undefined, the edge's direction (negative to
+      // positive) still points out of the solid.
+      const std::array<float, 3> along = unit({q.b[0] - q.a[0], q.b[1] - q.a[1], q.b[2] - q.a[2]}, {0, 0, 1});
+      mesh.normals[i] = unit(r.gradient, along);
+      mesh.kinds[i] = r.onBall ? VertexKind::Cap : (r.pole ? VertexKind::Pole : VertexKind::Surface);
+      if (mesh.kinds[i] == VertexKind::Surface) worst[worker] = std::max(worst[worker], r.residual);
+    }
+  });
   double w = 0;
   for (double x : worst) w = std::max(w, x);
   return w;

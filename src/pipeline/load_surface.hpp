@@ -1,7 +1,7 @@
 #pragma once
 // The hand-over from the CPU half to the GPU half: takes a PreparedSurface and a RayTracer
 // on a current context, puts the program (rebuilt only when the shader text changed), the
-// packed sphere hierarchy and the parameter values into the tracer.
+// packed box hierarchy and the parameter values into the tracer.
 #include <memory>
 #include <string>
 

@@ -11,7 +11,7 @@
 #include "codegen/shader_assembly.hpp"
 #include "expr/derivative.hpp"
 #include "expr/tape.hpp"
-#include "interval/sphere_builder.hpp"
+#include "interval/hierarchy_builder.hpp"
 #include "interval/surface_bounds.hpp"
 #include "parser/parser.hpp"
 #include "scene/scene_io.hpp"
@@ -101,11 +101,11 @@ void findMarkedPoints(const Scene& scene, PreparedSurface& s) {
 
 }  // namespace
 
-SphereHierarchy tracingHierarchy(const Formula& formula, std::span<const double> params,
-                                 const Octree& octree, TracingMethod method) {
-  if (method == TracingMethod::Sampling) return buildSphereHierarchy(octree);
+BoxHierarchy tracingHierarchy(const Formula& formula, std::span<const double> params,
+                              const Octree& octree, TracingMethod method) {
+  if (method == TracingMethod::Sampling) return buildBoxHierarchy(octree);
   const Box bounds = surfaceBounds(formula, params, octree.domain, octree.ball);
-  return buildSphereHierarchy(octree, &bounds);
+  return buildBoxHierarchy(octree, &bounds);
 }
 
 int maxBernsteinDegree(const PrepareOptions& options) {

@@ -1,6 +1,6 @@
 #pragma once
 // The CPU half of zeroset, end to end: takes a Scene, puts out everything the GPU half needs
-// (the packed sphere hierarchy, the parameter values, the shader text validated by glslang)
+// (the packed box hierarchy, the parameter values, the shader text validated by glslang)
 // with the time each stage took. The one pipeline of every front end (the commands, the
 // viewer, the prompt), the tests and the benchmarks; load_surface.hpp hands its result to
 // a tracer. No GL here.
@@ -29,7 +29,7 @@ struct PreparedSurface {
   std::array<NodeId, 3> gradient{};
   std::vector<double> params;  // graph.params() order
   Octree octree;
-  SphereHierarchy hierarchy;
+  BoxHierarchy hierarchy;
   TracingMethod method = TracingMethod::Interval;  // resolved: never Auto
   std::string methodWarning;  // why the method asked for could not be used ("" if it was)
   GlslFormula glsl;
@@ -57,12 +57,12 @@ std::optional<Ball> toBall(const Domain& domain);
 TracingMethod resolveMethod(TracingMethod asked, const Formula& formula, std::string& warning,
                             int maxBernsteinDegree = kMaxBernsteinDegree);
 
-// The sphere hierarchy the tracer walks: the octree's leaves, cut for the exact methods
+// The box hierarchy the tracer walks: the octree's leaves, cut for the exact methods
 // (Bernstein, interval) to the surface's bounds (interval/surface_bounds.hpp), which they clip
 // every ray to; the thesis' sampling method keeps the octree's own boxes, so its tables
 // stay reproducible.
-SphereHierarchy tracingHierarchy(const Formula& formula, std::span<const double> params,
-                                 const Octree& octree, TracingMethod method);
+BoxHierarchy tracingHierarchy(const Formula& formula, std::span<const double> params,
+                              const Octree& octree, TracingMethod method);
 
 struct PrepareOptions {
   bool validate = true;  // run glslang on the assembled shaders (not in the web build)

@@ -1,7 +1,7 @@
 #pragma once
-// Repacks the bounding-sphere hierarchy for the fragment shader: takes the 12-float-per-
-// node layout of interval/hierarchy.hpp (pre-order, escape indices), puts out ONE uvec4
-// texel per node. The node's box is stored as integer corners on a grid of 2^14 cells per
+// Repacks the box hierarchy for the fragment shader: takes the 12-float-per-node layout
+// of interval/hierarchy.hpp (pre-order, escape indices), puts out ONE uvec4 texel per
+// node. The node's box is stored as integer corners on a grid of 2^14 cells per
 // axis spanning the root box (16 bits each, min rounded down and max up, so the stored box
 // always contains the real one and is exact for octree cells down to level 14):
 //   x = qmin.x | qmin.y << 16,  y = qmin.z | qmax.x << 16,  z = qmax.y | qmax.z << 16,

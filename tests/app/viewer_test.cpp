@@ -91,7 +91,7 @@ TEST(Viewer, LevelKeysRebuildTheOctreeAndKeepThePicture) {
   ASSERT_FALSE(v.waitLog("octree level 3").empty());
   ASSERT_FALSE(v.waitLog("built ").empty()) << "the level change rebuilds on the worker";
   const Image deeper = v.screenshot();
-  // Tighter spheres bound the same surface: the picture must not change.
+  // Tighter boxes bound the same surface: the picture must not change.
   EXPECT_LT(changed(before, deeper), 0.01);
   EXPECT_EQ(loadSaved(v.save()).octree.level, 3);
   v.key("shift+o");

@@ -1,4 +1,4 @@
-// The sphere hierarchy: structure (pre-order, escapes, tight boxes, pruning), the packed
+// The box hierarchy: structure (pre-order, escapes, tight boxes, pruning), the packed
 // GPU layout, and a stackless walk that must find exactly the leaves a ray meets.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <random>
 
 #include "interval/octree.hpp"
-#include "interval/sphere_builder.hpp"
+#include "interval/hierarchy_builder.hpp"
 #include "surfaces.hpp"
 
 namespace zs {
@@ -25,10 +25,10 @@ bool inside(const Box& inner, const Box& outer) {
   return true;
 }
 
-void checkStructure(const Octree& tree, const SphereHierarchy& h) {
+void checkStructure(const Octree& tree, const BoxHierarchy& h) {
   std::size_t leaves = 0;
   for (std::size_t i = 0; i < h.nodes.size(); ++i) {
-    const SphereNode& n = h.nodes[i];
+    const BoxNode& n = h.nodes[i];
     ASSERT_GT(std::size_t(n.escape), i);
     ASSERT_LE(std::size_t(n.escape), h.nodes.size());
     if (n.leaf) {
@@ -67,27 +67,27 @@ void checkStructure(const Octree& tree, const SphereHierarchy& h) {
 TEST(Hierarchy, StructureForBothCriteria) {
   for (Criteria c : {Criteria::Thesis, Criteria::Uniform}) {
     const Octree tree = build(std::string(test::kThesisSurfaces[6]), 5, c);
-    const SphereHierarchy h = buildSphereHierarchy(tree);
+    const BoxHierarchy h = buildBoxHierarchy(tree);
     checkStructure(tree, h);
     EXPECT_EQ(std::size_t(h.nodes.front().escape), h.nodes.size());  // one root
   }
 }
 
 TEST(Hierarchy, EmptyAndSingleLeaf) {
-  EXPECT_TRUE(buildSphereHierarchy(build("x^2+y^2+z^2+1", 4, Criteria::Thesis)).nodes.empty());
-  const SphereHierarchy one = buildSphereHierarchy(build("x^2+y^2+z^2-1", 0, Criteria::Thesis));
+  EXPECT_TRUE(buildBoxHierarchy(build("x^2+y^2+z^2+1", 4, Criteria::Thesis)).nodes.empty());
+  const BoxHierarchy one = buildBoxHierarchy(build("x^2+y^2+z^2-1", 0, Criteria::Thesis));
   ASSERT_EQ(one.nodes.size(), 1u);
   EXPECT_TRUE(one.nodes[0].leaf);
 }
 
 TEST(Hierarchy, PackedLayoutHoldsTheDoubleBoxes) {
   const Octree tree = build("x^2+y^2+z^2-1.3", 4, Criteria::Uniform);
-  const SphereHierarchy h = buildSphereHierarchy(tree);
+  const BoxHierarchy h = buildBoxHierarchy(tree);
   const std::vector<float> p = h.packed();
   ASSERT_EQ(p.size(), h.nodes.size() * 12);
   for (std::size_t i = 0; i < h.nodes.size(); ++i) {
     const float* t = &p[i * 12];
-    const SphereNode& n = h.nodes[i];
+    const BoxNode& n = h.nodes[i];
     EXPECT_EQ(t[7], float(n.escape));
     EXPECT_EQ(t[11], n.leaf ? 1.0f : 0.0f);
     for (std::size_t a = 0; a < 3; ++a) {
@@ -102,7 +102,7 @@ TEST(Hierarchy, PackedLayoutHoldsTheDoubleBoxes) {
   }
 }
 
-// Slab test of a ray against a box, and the ray-sphere test the shader does.
+// Slab test of a ray against a box, the test the shader does.
 bool hitsBox(const std::array<double, 3>& o, const std::array<double, 3>& d, const Box& b) {
   double t0 = 0, t1 = INFINITY;
   for (std::size_t a = 0; a < 3; ++a) {
@@ -113,21 +113,10 @@ bool hitsBox(const std::array<double, 3>& o, const std::array<double, 3>& d, con
   }
   return t0 <= t1;
 }
-bool hitsSphere(const std::array<double, 3>& o, const std::array<double, 3>& d, const SphereNode& n) {
-  double oc[3], b = 0, c = 0, dd = 0;
-  for (std::size_t a = 0; a < 3; ++a) {
-    oc[a] = o[a] - n.center[a];
-    b += oc[a] * d[a];
-    c += oc[a] * oc[a];
-    dd += d[a] * d[a];
-  }
-  const double disc = b * b - dd * (c - n.radius * n.radius);
-  return disc >= 0 && (-b + std::sqrt(disc)) >= 0;
-}
 
 TEST(Hierarchy, StacklessWalkFindsExactlyTheLeavesARayMeets) {
   const Octree tree = build(std::string(test::kThesisSurfaces[2]), 5, Criteria::Thesis);
-  const SphereHierarchy h = buildSphereHierarchy(tree);
+  const BoxHierarchy h = buildBoxHierarchy(tree);
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> u(-1, 1);
   for (int ray = 0; ray < 2000; ++ray) {
@@ -135,8 +124,8 @@ TEST(Hierarchy, StacklessWalkFindsExactlyTheLeavesARayMeets) {
     const std::array<double, 3> d{u(rng) - o[0] / 5, u(rng) - o[1] / 5, -1.0};
     std::vector<std::size_t> walked, brute;
     for (std::size_t i = 0; i < h.nodes.size();) {
-      const SphereNode& n = h.nodes[i];
-      if (hitsSphere(o, d, n) && hitsBox(o, d, n.box)) {
+      const BoxNode& n = h.nodes[i];
+      if (hitsBox(o, d, n.box)) {
         if (n.leaf) walked.push_back(i);
         i = n.leaf ? std::size_t(n.escape) : i + 1;
       } else {

@@ -1,7 +1,7 @@
 // The surface's bounding box (interval/surface_bounds.hpp): it must hold every surface point
 // found by dense sampling in double precision (sign changes along the lines of a 96^3 grid,
 // narrowed by bisection), also when its search runs out of budget; it must be tight where
-// the surface fills a small part of the domain; and the sphere hierarchy cut to it must keep
+// the surface fills a small part of the domain; and the box hierarchy cut to it must keep
 // covering the surface.
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 
 #include "expr/tape.hpp"
 #include "interval/octree.hpp"
-#include "interval/sphere_builder.hpp"
+#include "interval/hierarchy_builder.hpp"
 #include "interval/surface_bounds.hpp"
 #include "surfaces.hpp"
 
@@ -183,10 +183,10 @@ TEST(SurfaceBounds, CutTheHierarchyWithoutUncoveringTheSurface) {
   st.level = 2;
   const Octree tree = std::get<Octree>(buildOctree(f, {}, cube(-2, 2), st));
   const Box bounds = surfaceBounds(f, {}, cube(-2, 2), std::nullopt);
-  const SphereHierarchy h = buildSphereHierarchy(tree, &bounds);
+  const BoxHierarchy h = buildBoxHierarchy(tree, &bounds);
   ASSERT_FALSE(h.nodes.empty());
   std::vector<Box> leaves;
-  for (const SphereNode& n : h.nodes) {
+  for (const BoxNode& n : h.nodes) {
     for (std::size_t a = 0; a < 3; ++a) {
       EXPECT_GE(n.box.min[a], bounds.min[a]);
       EXPECT_LE(n.box.max[a], bounds.max[a]);
@@ -203,9 +203,9 @@ TEST(SurfaceBounds, CutTheHierarchyWithoutUncoveringTheSurface) {
   }
   // A clip box that misses some leaves leaves them out.
   const Box corner{{0.5, 0.5, 0.5}, {2, 2, 2}};
-  const SphereHierarchy c = buildSphereHierarchy(tree, &corner);
+  const BoxHierarchy c = buildBoxHierarchy(tree, &corner);
   std::size_t kept = 0;
-  for (const SphereNode& n : c.nodes) kept += n.leaf ? 1 : 0;
+  for (const BoxNode& n : c.nodes) kept += n.leaf ? 1 : 0;
   EXPECT_GT(kept, 0u);
   EXPECT_LT(kept, tree.leaves.size());
 }

@@ -11,7 +11,7 @@
 // evaluated with the parameters' values, so a parameter that appears in F changes it and
 // every frame gets its own (a tree built for one value may drop boxes the surface reaches
 // at another: reusing it would cut holes). A parameter F does not use, and camera.orbit,
-// change no box: the octree, the sphere hierarchy and the shader are built once.
+// change no box: the octree, the box hierarchy and the shader are built once.
 #include <optional>
 #include <string>
 
@@ -39,7 +39,7 @@ std::optional<Animation> parseAnimation(const std::string& text, int frames, std
 // message (a value the scene refuses, e.g. a parameter name the formula language rejects).
 std::string frameScene(const Animation& anim, const Scene& base, int i, Scene& out);
 
-// Whether a frame needs its own octree and sphere hierarchy (see above): the animated
+// Whether a frame needs its own octree and box hierarchy (see above): the animated
 // parameter appears in `formula`.
 bool changesOctree(const Animation& anim, const Scene& base);
 

@@ -128,7 +128,7 @@ std::string goals(const BenchResults& results) {
 std::string deepLevels(const BenchResults& results) {
   std::string md = format("## Octree level 0..%d, both methods (10 intervals, epsilon 0.001)\n\n",
                           results.options.maxLevel);
-  md += "| Surface | Level | Leaves | Spheres | Octree + spheres ms | sampling ms | fps | "
+  md += "| Surface | Level | Leaves | Nodes | Octree + hierarchy ms | sampling ms | fps | "
         "bernstein ms | fps | bernstein speed-up |\n"
         "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   const auto ms = [](const ConfigResult* r) {
@@ -144,7 +144,7 @@ std::string deepLevels(const BenchResults& results) {
       const bool both = r && b && r->error.empty() && b->error.empty() && b->stats.medianMs > 0;
       md += format("| %s | %d | %zu | %zu | %.2f | %s | %s | %s | %s | %s |\n",
                    level == 0 ? std::to_string(s.number).c_str() : "", level, any->leaves,
-                   any->spheres, any->octreeMs, ms(r).c_str(), fpsCell(r).c_str(),
+                   any->nodes, any->octreeMs, ms(r).c_str(), fpsCell(r).c_str(),
                    ms(b).c_str(), fpsCell(b).c_str(),
                    both ? format("%.2fx", r->stats.medianMs / b->stats.medianMs).c_str() : "-");
     }
@@ -156,7 +156,7 @@ std::string firstFrames(const BenchResults& results) {
   std::string md =
       "## Time to first frame (level 1, 10 intervals, epsilon 0.001)\n\n"
       "Milliseconds. JIT estimate = first draw - the median frame of the same settings.\n\n"
-      "| Surface | Method | Parse + gradient | Octree + spheres | Codegen | glslang | GL compile "
+      "| Surface | Method | Parse + gradient | Octree + hierarchy | Codegen | glslang | GL compile "
       "+ link | First draw | Total ms | JIT estimate |\n"
       "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const FirstFrame& f : results.firstFrames) {
@@ -219,7 +219,7 @@ std::string markdownReport(const BenchResults& results) {
 std::string configCsv(const BenchResults& results) {
   std::string csv =
       "surface,method,level,intervals,epsilon,width,height,frames,median_ms,min_ms,max_ms,fps,"
-      "octree_ms,leaves,spheres,thesis_table52_fps,thesis_table53_fps,error\n";
+      "octree_ms,leaves,nodes,thesis_table52_fps,thesis_table53_fps,error\n";
   const auto opt = [](std::optional<int> v) { return v ? std::to_string(*v) : std::string(); };
   for (const ConfigResult& r : results.configs) {
     const BenchConfig& c = r.config;
@@ -230,7 +230,7 @@ std::string configCsv(const BenchResults& results) {
                   c.surface, tracingMethodName(c.method), c.level, c.intervals, formatEpsilon(c.epsilon).c_str(),
                   results.options.width, results.options.height, r.stats.frames,
                   r.stats.medianMs, r.stats.minMs, r.stats.maxMs, r.stats.fps(), r.octreeMs,
-                  r.leaves, r.spheres,
+                  r.leaves, r.nodes,
                   thesis ? opt(table52Fps(c.surface, c.level, c.intervals, c.epsilon)).c_str() : "",
                   thesis ? opt(table53Fps(c.surface, c.level, c.intervals, c.epsilon)).c_str() : "",
                   error.c_str());

@@ -72,7 +72,7 @@ FirstFrame measureFirstFrame(int number, const Scene& scene, RayTracer& tracer,
   return ff;
 }
 
-// Builds the octree and sphere hierarchy of one level and hands them to the tracer.
+// Builds the octree and box hierarchy of one level and hands them to the tracer.
 std::string loadLevel(const PreparedSurface& surface, Scene& scene, int level,
                       RayTracer& tracer, ConfigResult& info) {
   scene.octree.level = level;
@@ -82,11 +82,11 @@ std::string loadLevel(const PreparedSurface& surface, Scene& scene, int level,
                   toBall(scene.domain));
   if (auto* err = std::get_if<OctreeError>(&tree)) return err->message;
   const Octree& octree = std::get<Octree>(tree);
-  const SphereHierarchy hierarchy =
+  const BoxHierarchy hierarchy =
       tracingHierarchy(surface.formula, surface.params, octree, surface.method);
   info.octreeMs = msSince(start);
   info.leaves = octree.leaves.size();
-  info.spheres = hierarchy.nodes.size();
+  info.nodes = hierarchy.nodes.size();
   return tracer.setHierarchy(hierarchy.packed());
 }
 

@@ -21,7 +21,7 @@ namespace zs::bench {
 struct FirstFrame {
   int surface = 0;
   TracingMethod method = TracingMethod::Sampling;  // as resolved for the formula
-  StageTimes cpu;  // parse (+ gradient), octree (+ spheres), codegen, glslang
+  StageTimes cpu;  // parse (+ gradient), octree (+ box hierarchy), codegen, glslang
   double glCompileMs = 0;
   double firstDrawMs = 0;
   double totalMs = 0;   // wall time of all of the above, end to end
@@ -37,9 +37,9 @@ struct FrameStats {
 struct ConfigResult {
   BenchConfig config;
   FrameStats stats;
-  double octreeMs = 0;  // octree + sphere hierarchy build, wall time
+  double octreeMs = 0;  // octree + box hierarchy build, wall time
   std::size_t leaves = 0;
-  std::size_t spheres = 0;  // nodes of the sphere hierarchy the shader traverses
+  std::size_t nodes = 0;  // of the box hierarchy the shader walks
   std::string error;
 };
 

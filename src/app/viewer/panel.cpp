@@ -85,7 +85,7 @@ void drawStats(const PanelStats& s) {
   ImGui::Text("%.1f fps, frame %.1f ms", s.fps, s.frameMs);
   ImGui::Text("trace %.1f ms at %dx%d%s", s.traceMs, s.width / std::max(1, s.traceScale),
               s.height / std::max(1, s.traceScale), s.traceScale > 1 ? " (reduced)" : "");
-  ImGui::Text("build %.0f ms: %zu leaves, %zu spheres%s", s.buildMs, s.leaves, s.spheres,
+  ImGui::Text("build %.0f ms: %zu leaves, %zu boxes%s", s.buildMs, s.leaves, s.nodes,
               s.building ? " (building...)" : "");
   if (s.singularPoints >= 0) ImGui::Text("%d certified singular points", s.singularPoints);
   if (!s.example.empty()) ImGui::Text("example %s", s.example.c_str());

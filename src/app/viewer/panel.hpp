@@ -21,7 +21,7 @@ struct PanelStats {
   int width = 0, height = 0;
   double buildMs = 0;      // request to upload, for the shown surface
   std::size_t leaves = 0;  // octree leaves of the shown surface
-  std::size_t spheres = 0;
+  std::size_t nodes = 0;   // of the box hierarchy
   int singularPoints = -1;  // marked by highlights.singular; -1 when the highlight is off
   bool building = false;
   std::string example;     // name of the example on screen, if any

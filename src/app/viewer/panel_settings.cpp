@@ -126,7 +126,7 @@ void tracing(Scene& scene) {
 }
 
 void octreeAndDomain(Scene& scene) {
-  // Each of these rebuilds the octree and the sphere hierarchy on the worker thread.
+  // Each of these rebuilds the octree and the box hierarchy on the worker thread.
   dragInt("octree level", scene.octree.level, 0, 12);
   int criteria = scene.octree.criteria == Criteria::Uniform;
   if (ImGui::Combo("criterion", &criteria, "thesis\0uniform\0"))

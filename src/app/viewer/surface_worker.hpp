@@ -1,6 +1,6 @@
 #pragma once
 // Builds surfaces off the main thread, so the window never freezes: takes Scenes, runs
-// prepareSurface (parse, octree, sphere hierarchy, GLSL, glslang: CPU only) on one worker
+// prepareSurface (parse, octree, box hierarchy, GLSL, glslang: CPU only) on one worker
 // thread, and puts out the finished surface or its error text, tagged with the request's
 // id. Latest wins: a request that has not started yet is replaced by a newer one, so
 // dragging a slider queues at most one build behind the running one.

@@ -104,7 +104,7 @@ void Viewer::takeBuild() {
       if (latest) built_.params = scene_.params;
       stats_.buildMs = result->wallMs;
       stats_.leaves = surface.octree.leaves.size();
-      stats_.spheres = surface.hierarchy.nodes.size();
+      stats_.nodes = surface.hierarchy.nodes.size();
       stats_.singularPoints =
           scene_.render.singular.enabled ? int(surface.singularPoints.size()) : -1;
       if (latest && panel_.formula == built_.formula) panel_.formulaError.clear();

@@ -1,4 +1,4 @@
-#include "interval/sphere_builder.hpp"
+#include "interval/hierarchy_builder.hpp"
 
 #include <algorithm>
 #include <cassert>
@@ -71,8 +71,8 @@ std::vector<Tmp> rebuildTree(const Octree& tree, const Box* clip) {
 
 }  // namespace
 
-SphereNode sphereAround(const Box& box) {
-  SphereNode n;
+BoxNode boxNode(const Box& box) {
+  BoxNode n;
   n.box = box;
   double d2 = 0;
   for (std::size_t i = 0; i < 3; ++i) {
@@ -85,9 +85,9 @@ SphereNode sphereAround(const Box& box) {
   return n;
 }
 
-SphereHierarchy buildSphereHierarchy(const Octree& tree, const Box* clip) {
+BoxHierarchy buildBoxHierarchy(const Octree& tree, const Box* clip) {
   const std::vector<Tmp> tmp = rebuildTree(tree, clip);
-  SphereHierarchy h;
+  BoxHierarchy h;
   std::vector<std::int32_t> emitted(tmp.size(), -1);  // nearest emitted ancestor-or-self
   std::vector<std::int32_t> parentOut;
   for (std::size_t i = 0; i < tmp.size(); ++i) {
@@ -97,7 +97,7 @@ SphereHierarchy buildSphereHierarchy(const Octree& tree, const Box* clip) {
       continue;
     }
     emitted[i] = std::int32_t(h.nodes.size());
-    SphereNode n = sphereAround(tmp[i].box);
+    BoxNode n = boxNode(tmp[i].box);
     n.leaf = tmp[i].leaf;
     h.nodes.push_back(n);
     parentOut.push_back(p);
@@ -111,7 +111,7 @@ SphereHierarchy buildSphereHierarchy(const Octree& tree, const Box* clip) {
   return h;
 }
 
-std::vector<float> SphereHierarchy::packed() const {
+std::vector<float> BoxHierarchy::packed() const {
   auto down = [](double v) {
     float f = float(v);
     return double(f) > v ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
@@ -124,7 +124,7 @@ std::vector<float> SphereHierarchy::packed() const {
   assert(nodes.size() < (std::size_t(1) << 24));
   std::vector<float> out;
   out.reserve(nodes.size() * 12);
-  for (const SphereNode& n : nodes) {
+  for (const BoxNode& n : nodes) {
     // The float box holds the double box; the float sphere holds the float box.
     std::array<float, 3> lo{}, hi{}, c{};
     double d2 = 0;
