@@ -1,7 +1,7 @@
 #pragma once
 // The GPU ray tracer of thesis chapter 4.4. Takes finished shader text (vertex + the
 // fragment shader spliced from the prelude, the generated formula and
-// raytrace_main.frag.glsl), the packed sphere hierarchy (interval/hierarchy.hpp), the
+// raytrace_main.frag.glsl), the packed box hierarchy (interval/hierarchy.hpp), the
 // formula's parameter values and the RenderSettings; puts out frames (RGBA8 + per-pixel
 // depth) rendered offscreen in tiles, or draws into the current framebuffer for the viewer.
 // Needs a current GL 3.3+ core context (gl_context.hpp) for its whole life; all GL objects

@@ -1,4 +1,4 @@
-// The one-texel-per-node repack of the sphere hierarchy.
+// The one-texel-per-node repack of the box hierarchy.
 #include <gtest/gtest.h>
 
 #include <cmath>
