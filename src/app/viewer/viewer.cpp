@@ -173,6 +173,17 @@ void Viewer::frame() {
   if (gallery_.visible) {
     if (const int picked = drawGallery(gallery_, exampleIndex_); picked >= 0) showExampleAt(picked);
   }
+  // Under the pointer, over the picture and while nothing is dragged or rebuilt: what lies
+  // there (src/probe).
+  if (hasSurface_ && dragButton_ < 0 && !ImGui::GetIO().WantCaptureMouse &&
+      built_.formula == scene_.formula && !buildAt_) {
+    int windowWidth = 0, windowHeight = 0;
+    glfwGetWindowSize(window_->window(), &windowWidth, &windowHeight);
+    hover_.update(scene_, cursorX_, cursorY_, windowWidth, windowHeight);
+    hover_.draw();
+  } else {
+    hover_.clear();
+  }
   // A sweeping play button counts as a drag: reduced-resolution traces keep it fluid.
   sliderActive_ = panel.sliderActive || panel.animating;
   if (panel.exportMesh) startMeshExport();

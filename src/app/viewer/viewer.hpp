@@ -20,6 +20,7 @@
 #include "app/viewer/gallery_panel.hpp"
 #include "interact/key_bindings.hpp"
 #include "app/viewer/panel.hpp"
+#include "app/viewer/hover_probe.hpp"
 #include "app/viewer/surface_view.hpp"
 #include "app/viewer/surface_worker.hpp"
 #include "render/glfw_context.hpp"
@@ -121,6 +122,7 @@ class Viewer {
   PanelStats stats_;
   bool panelVisible_ = true;
   GalleryPanel gallery_;
+  HoverProbe hover_;  // the readout under the pointer
 
   // Tracing state: `dirty_` = the scene changed since the last trace; `refine_` = the image
   // on screen is a reduced-resolution one.

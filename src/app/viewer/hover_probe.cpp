@@ -1,0 +1,50 @@
+#include "app/viewer/hover_probe.hpp"
+
+#include <imgui.h>
+
+#include <cmath>
+#include <variant>
+
+#include "scene/scene_io.hpp"
+
+namespace zs::app {
+
+void HoverProbe::update(const Scene& scene, double x, double y, int width, int height) {
+  const int px = int(std::floor(x)), py = int(std::floor(y));
+  if (px < 0 || py < 0 || px >= width || py >= height) {
+    clear();
+    return;
+  }
+  if (px == lastX_ && py == lastY_ && width == lastW_ && height == lastH_ && scene == lastScene_)
+    return;
+  lastX_ = px, lastY_ = py, lastW_ = width, lastH_ = height;
+  lastScene_ = scene;
+  if (scene.formula != formulaText_ || !formula_) {
+    formulaText_ = scene.formula;
+    ParseResult parsed = parseFormula(scene.formula);
+    formula_.reset();
+    if (auto* f = std::get_if<Formula>(&parsed)) formula_ = std::move(*f);
+  }
+  if (!formula_) {
+    clear();
+    return;
+  }
+  auto result = probePixel(*formula_, paramValues(scene, formula_->graph), scene, width, height,
+                           px, py);
+  if (auto* r = std::get_if<ProbeResult>(&result); r && r->hit) shown_ = *r;
+  else clear();
+}
+
+void HoverProbe::draw() const {
+  if (!shown_) return;
+  const ProbeResult& r = *shown_;
+  ImGui::BeginTooltip();
+  ImGui::Text("point  %.5g, %.5g, %.5g", r.point[0], r.point[1], r.point[2]);
+  ImGui::Text("normal %.4f, %.4f, %.4f", r.normal[0], r.normal[1], r.normal[2]);
+  ImGui::Text("|grad F| %.5g", std::hypot(r.gradient[0], r.gradient[1], r.gradient[2]));
+  ImGui::Text("K %.5g   H %.5g", r.gaussian, r.mean);
+  ImGui::Text("k1 %.5g   k2 %.5g", r.k1, r.k2);
+  ImGui::EndTooltip();
+}
+
+}  // namespace zs::app
