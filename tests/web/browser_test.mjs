@@ -239,7 +239,8 @@ cases['bench'] = async () => {
 cases['bad-formulas'] = async () => {
   const page = await openPage(`size=${SIZE[0]}x${SIZE[1]}`);
   await settled(page);
-  const typed = ['', 'x^', '1/0', 'sqrt(-1)', '0', 'x^1000', '(((((x', 'x²+y²-1', '1e400 x',
+  // Unfinished, unparsable, constant (nothing to draw), far above every degree limit, long.
+  const typed = ['', 'x^', '(((((x', 'x²+y²-1', '1/0', 'x^1000',
                  'x^2+y^2+z^2-1'.repeat(12).replace(/1x/g, '1+x')];
   for (const formula of typed) {
     await markBusy(page);
