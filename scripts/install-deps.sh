@@ -28,7 +28,12 @@ for option in "$@"; do
   case $option in
     --fuzz) packages+=(clang libclang-rt-14-dev) ;;
     --deb) packages+=(lintian) ;;
-    --web) packages+=(emscripten chromium) ;;
+    --web)
+      packages+=(emscripten chromium)
+      # Node.js and npm run the browser tests; Debian's where the machine has none of its own.
+      command -v node >/dev/null || packages+=(nodejs)
+      command -v npm >/dev/null || packages+=(npm)
+      ;;
     *) echo "install-deps.sh: unknown option $option" >&2; exit 2 ;;
   esac
 done
