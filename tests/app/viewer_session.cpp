@@ -65,6 +65,12 @@ void ViewerSession::drag(int button, int x0, int y0, int x1, int y1, int steps) 
   pause(100);
 }
 
+void ViewerSession::move(int x, int y) {
+  shell("xdotool mousemove --window " + window_ + " " + std::to_string(x) + " " +
+        std::to_string(y));
+  pause(100);
+}
+
 void ViewerSession::click(int x, int y) {
   shell("xdotool mousemove --window " + window_ + " " + std::to_string(x) + " " +
         std::to_string(y) + " click 1");

@@ -29,6 +29,7 @@ class ViewerSession {
   void drag(int button, int x0, int y0, int x1, int y1, int steps = 8);
   void wheel(int clicks);  // positive: towards the user (zoom in)
   void click(int x, int y);  // left click at window pixels
+  void move(int x, int y);   // the pointer to window pixels, no button
 
   // Waits until the log holds `marker` after everything seen so far by waits; "" if not.
   std::string waitLog(const std::string& marker, double seconds = 60);

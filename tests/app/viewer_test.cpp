@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <variant>
@@ -44,6 +45,25 @@ TEST(Viewer, DragRotatesTheCameraAroundTheTarget) {
   EXPECT_GT(distance(saved.render.camera.eye, {0, 0, 4}), 0.5) << "the eye moved";
   EXPECT_NEAR(distance(saved.render.camera.eye, saved.render.camera.target), 4.0, 1e-9)
       << "an arcball orbit keeps the distance to the target";
+}
+
+TEST(Viewer, HoverShowsTheCurvaturesUnderThePointer) {
+  ViewerSession v("hover", {"x^2 + y^2 + z^2 - 1"});
+  START(v);
+  const std::string log = v.log();
+  int width = 0, height = 0;
+  const std::size_t ready = log.find("ready ");
+  ASSERT_NE(ready, std::string::npos) << log;
+  ASSERT_EQ(std::sscanf(log.c_str() + ready, "ready %dx%d", &width, &height), 2) << log;
+  v.move(width / 2 + 7, height / 2 - 5);  // over the unit sphere, right of the panel
+  const std::string line = v.waitLog("probe: ", 20);
+  double k = 0, h = 0, k1 = 0, k2 = 0;
+  ASSERT_EQ(std::sscanf(line.c_str(), "probe: K %lf H %lf k1 %lf k2 %lf", &k, &h, &k1, &k2), 4)
+      << line;
+  EXPECT_NEAR(k, 1, 1e-4);
+  EXPECT_NEAR(h, 1, 1e-4);
+  EXPECT_NEAR(k1, 1, 1e-4);
+  EXPECT_NEAR(k2, 1, 1e-4);
 }
 
 TEST(Viewer, SilhouetteKeyRemovesTheDarkOutline) {

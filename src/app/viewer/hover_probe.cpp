@@ -3,20 +3,21 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <cstdio>
 #include <variant>
 
 #include "scene/scene_io.hpp"
 
 namespace zs::app {
 
-void HoverProbe::update(const Scene& scene, double x, double y, int width, int height) {
+bool HoverProbe::update(const Scene& scene, double x, double y, int width, int height) {
   const int px = int(std::floor(x)), py = int(std::floor(y));
   if (px < 0 || py < 0 || px >= width || py >= height) {
     clear();
-    return;
+    return false;
   }
   if (px == lastX_ && py == lastY_ && width == lastW_ && height == lastH_ && scene == lastScene_)
-    return;
+    return false;
   lastX_ = px, lastY_ = py, lastW_ = width, lastH_ = height;
   lastScene_ = scene;
   if (scene.formula != formulaText_ || !formula_) {
@@ -27,12 +28,25 @@ void HoverProbe::update(const Scene& scene, double x, double y, int width, int h
   }
   if (!formula_) {
     clear();
-    return;
+    return false;
   }
   auto result = probePixel(*formula_, paramValues(scene, formula_->graph), scene, width, height,
                            px, py);
-  if (auto* r = std::get_if<ProbeResult>(&result); r && r->hit) shown_ = *r;
-  else clear();
+  if (auto* r = std::get_if<ProbeResult>(&result); r && r->hit) {
+    shown_ = *r;
+    return true;
+  }
+  clear();
+  return false;
+}
+
+std::string HoverProbe::logLine() const {
+  if (!shown_) return {};
+  const ProbeResult& r = *shown_;
+  char text[200];
+  std::snprintf(text, sizeof text, "probe: K %.6g H %.6g k1 %.6g k2 %.6g at %.6g, %.6g, %.6g",
+                r.gaussian, r.mean, r.k1, r.k2, r.point[0], r.point[1], r.point[2]);
+  return text;
 }
 
 void HoverProbe::draw() const {

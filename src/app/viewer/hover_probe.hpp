@@ -14,8 +14,11 @@ namespace zs::app {
 
 class HoverProbe {
  public:
-  // Probes the pixel under (x, y) of a width x height window, in window points.
-  void update(const Scene& scene, double x, double y, int width, int height);
+  // Probes the pixel under (x, y) of a width x height window, in window points. True when
+  // that found a new point to show.
+  bool update(const Scene& scene, double x, double y, int width, int height);
+  // "probe: K k H h k1 a k2 b at x, y, z" for the viewer's --log; "" when nothing is shown.
+  std::string logLine() const;
   // Nothing to show (no surface yet, the cursor left the picture, a drag).
   void clear() { shown_.reset(); }
   // The tooltip, inside an ImGui frame.

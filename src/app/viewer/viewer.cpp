@@ -179,7 +179,10 @@ void Viewer::frame() {
       built_.formula == scene_.formula && !buildAt_) {
     int windowWidth = 0, windowHeight = 0;
     glfwGetWindowSize(window_->window(), &windowWidth, &windowHeight);
-    hover_.update(scene_, cursorX_, cursorY_, windowWidth, windowHeight);
+    if (hover_.update(scene_, cursorX_, cursorY_, windowWidth, windowHeight) && options_.log) {
+      std::printf("%s\n", hover_.logLine().c_str());
+      std::fflush(stdout);
+    }
     hover_.draw();
   } else {
     hover_.clear();
