@@ -197,6 +197,7 @@ function buildParams() {
 }
 
 const GROUPS = [
+  ['Surface', /^surface/],
   ['Tracing', /^(tracing|samples|opacity)/],
   ['Domain', /^(domain|octree)/],
   ['Camera', /^camera/],

@@ -37,7 +37,7 @@ int runOctree(const OctreeArgs& args) {
       scene->domain.max[axis] = args.domain[2 * axis + 1];
     }
   }
-  ParseResult parsed = parseFormula(scene->formula);
+  ParseResult parsed = parseSceneFormula(*scene);
   if (auto* err = std::get_if<ParseError>(&parsed)) {
     std::cerr << formatError(scene->formula, *err);
     return 1;

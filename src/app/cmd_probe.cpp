@@ -43,7 +43,7 @@ int runProbe(const ProbeArgs& args) {
               << "hint: e.g. --pixel 400,300, counted from the top-left pixel (0,0)\n";
     return 1;
   }
-  ParseResult parsed = parseFormula(scene->formula);
+  ParseResult parsed = parseSceneFormula(*scene);
   if (auto* err = std::get_if<ParseError>(&parsed)) {
     std::cerr << formatError(scene->formula, *err);
     return 1;

@@ -25,7 +25,7 @@ struct SingularArgs {
 int runSingular(const SingularArgs& args) {
   std::optional<Scene> scene = loadSceneArgs(args.scene);
   if (!scene) return 1;
-  ParseResult parsed = parseFormula(scene->formula);
+  ParseResult parsed = parseSceneFormula(*scene);
   if (auto* err = std::get_if<ParseError>(&parsed)) {
     std::cerr << formatError(scene->formula, *err);
     return 1;

@@ -7,6 +7,7 @@
 
 #include "expr/degree.hpp"
 #include "parser/parser.hpp"
+#include "scene/scene_io.hpp"
 #include "scene/description.hpp"
 
 namespace zs::app {
@@ -45,7 +46,7 @@ GalleryEntry describeExample(const Example& example) {
   auto loaded = loadExample(example);
   entry.degree = "?";
   if (const Scene* scene = std::get_if<Scene>(&loaded)) {
-    ParseResult parsed = parseFormula(scene->formula);
+    ParseResult parsed = parseSceneFormula(*scene);
     if (const Formula* f = std::get_if<Formula>(&parsed)) {
       const auto degree = polynomialDegree(f->graph, f->root);
       entry.degree = degree ? std::to_string(*degree) : "-";

@@ -28,7 +28,7 @@ std::string exportMesh(const Scene& scene, const MeshExport& request, MeshExport
   if (!format)
     return "error: cannot tell the mesh format from '" + request.output +
            "'\nhint: name the output .stl (binary STL), .ply or .obj\n";
-  ParseResult parsed = parseFormula(scene.formula);
+  ParseResult parsed = parseSceneFormula(scene);
   if (auto* err = std::get_if<ParseError>(&parsed)) return formatError(scene.formula, *err);
   const Formula& formula = std::get<Formula>(parsed);
   auto built = buildMesh(formula, paramValues(scene, formula.graph), toBox(scene.domain),

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "expr/degree.hpp"
+#include "expr/number_text.hpp"
 #include "expr/printer.hpp"
 #include "jsurf/read_surfer.hpp"
 #include "jsurf/scene_mapping.hpp"
@@ -92,7 +93,14 @@ SurferFormula surferFormula(const std::string& formula, std::vector<std::string>
 
 std::variant<Exported, std::string> exportJsurf(const Scene& scene) {
   Exported out;
-  const SurferFormula formula = surferFormula(scene.formula, out.warnings);
+  // SURFER draws F = 0: a level c is exported as the formula (F) - (c).
+  std::string text = scene.formula;
+  if (scene.level != 0) {
+    text = "(" + scene.formula + ") - (" + shortestText(scene.level) + ")";
+    out.warnings.push_back("surface.level " + shortestText(scene.level) +
+                           " is written into the formula: SURFER has no level");
+  }
+  const SurferFormula formula = surferFormula(text, out.warnings);
   if (!formula.error.empty()) return "error: cannot export to SURFER:\n" + formula.error;
   SurferScene s = toSurferScene(scene, out.warnings);
   s.formula = formula.text;

@@ -116,7 +116,7 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
                                                           const PrepareOptions& options) {
   PreparedSurface s;
   auto t = std::chrono::steady_clock::now();
-  ParseResult parsed = parseFormula(scene.formula);
+  ParseResult parsed = parseSceneFormula(scene);
   if (auto* err = std::get_if<ParseError>(&parsed)) return formatError(scene.formula, *err);
   s.formula = std::get<Formula>(std::move(parsed));
   s.gradient = gradient(s.formula.graph, s.formula.root);

@@ -81,6 +81,15 @@ SceneResult loadSceneOrFormula(std::string_view arg) {
   return scene;
 }
 
+ParseResult parseSceneFormula(const Scene& scene) {
+  ParseResult parsed = parseFormula(scene.formula);
+  if (scene.level == 0) return parsed;
+  if (auto* f = std::get_if<Formula>(&parsed)) {
+    f->root = f->graph.binary(Op::Sub, f->root, f->graph.constant(scene.level));
+  }
+  return parsed;
+}
+
 std::vector<double> paramValues(const Scene& scene, const Graph& graph) {
   std::vector<double> values;
   values.reserve(graph.params().size());

@@ -12,6 +12,7 @@ namespace zs {
 struct Scene {
   std::string formula = "x^2 + y^2 + z^2 - 1";
   std::vector<std::pair<std::string, double>> params;  // in file order
+  double level = 0;  // surface.level: the surface drawn is F = level (parseSceneFormula)
   Domain domain;
   OctreeSettings octree;
   RenderSettings render;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "expr/graph.hpp"
+#include "parser/parser.hpp"
 #include "scene/scene.hpp"
 
 namespace zs {
@@ -62,6 +63,10 @@ std::string saveScene(const Scene& scene);
 //                  ^
 //     hint: ...
 std::string formatSceneError(const SceneError& error);
+
+// The scene's formula, parsed, as the function whose zero set is drawn: F - surface.level
+// (F itself at level 0). Errors point into scene.formula, as parseFormula's do.
+ParseResult parseSceneFormula(const Scene& scene);
 
 // The values of the formula's parameters in graph.params() order: the scene's value where
 // it has one, kDefaultParamValue otherwise.

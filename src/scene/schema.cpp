@@ -53,6 +53,7 @@ const KeySpec kKeys[] = {
     {"opacity", ZS_FIELD(render.opacity), {0, 1, true}},
     {"samples", ZS_FIELD(render.samples), {1, 8}},
     {"background", ZS_FIELD(render.background), kUnit},
+    {"surface.level", ZS_FIELD(level), kAny},
     {"image.width", ZS_FIELD(width), {1, 16384}},
     {"image.height", ZS_FIELD(height), {1, 16384}},
     {"domain.min", ZS_FIELD(domain.min), kAny},

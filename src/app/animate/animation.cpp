@@ -14,7 +14,7 @@ namespace zs::app {
 namespace {
 
 const char* const kHowTo =
-    "hint: write KEY=FROM:TO with KEY params.NAME or camera.orbit (degrees), e.g. "
+    "hint: write KEY=FROM:TO with KEY params.NAME, surface.level or camera.orbit (degrees), e.g. "
     "--animate params.a=0:1 or --animate camera.orbit=0:360\n";
 
 // The whole of `text` as a finite number.
@@ -53,6 +53,8 @@ std::optional<Animation> parseAnimation(const std::string& text, int frames, std
   anim.to = *to;
   if (key == "camera.orbit") {
     anim.kind = Animation::Kind::Orbit;
+  } else if (key == "surface.level") {
+    anim.kind = Animation::Kind::Level;
   } else if (key.rfind("params.", 0) == 0 && key.size() > 7) {
     anim.param = key.substr(7);
   } else {
@@ -89,13 +91,14 @@ std::string frameScene(const Animation& anim, const Scene& base, int i, Scene& o
   // Through the --set path, so a name the scene format refuses is refused the same way.
   char text[64];
   std::snprintf(text, sizeof text, "%.17g", value);
-  if (auto err = applyOverride(out, "params." + anim.param + "=" + text)) {
+  if (auto err = applyOverride(out, anim.key() + "=" + text)) {
     return formatSceneError(*err);
   }
   return {};
 }
 
 bool changesOctree(const Animation& anim, const Scene& base) {
+  if (anim.kind == Animation::Kind::Level) return true;  // another surface each frame
   if (anim.kind != Animation::Kind::Param) return false;
   ParseResult parsed = parseFormula(base.formula);
   const Formula* f = std::get_if<Formula>(&parsed);

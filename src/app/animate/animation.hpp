@@ -20,19 +20,23 @@
 namespace zs::app {
 
 struct Animation {
-  enum class Kind { Param, Orbit };
+  enum class Kind { Param, Orbit, Level };
   Kind kind = Kind::Param;
   std::string param;  // Kind::Param: the parameter's name
   double from = 0, to = 1;
   int frames = 60;
 
-  std::string key() const { return kind == Kind::Orbit ? "camera.orbit" : "params." + param; }
+  std::string key() const {
+    return kind == Kind::Orbit   ? "camera.orbit"
+           : kind == Kind::Level ? "surface.level"
+                                 : "params." + param;
+  }
   // The animated value of frame `i` in [0, frames): from at 0, to at frames - 1.
   double valueAt(int i) const;
 };
 
-// Reads "params.NAME=FROM:TO" or "camera.orbit=FROM:TO"; on failure `error` says what is
-// wrong and how to write it.
+// Reads "params.NAME=FROM:TO", "surface.level=FROM:TO" or "camera.orbit=FROM:TO"; on failure
+// `error` says what is wrong and how to write it.
 std::optional<Animation> parseAnimation(const std::string& text, int frames, std::string& error);
 
 // The scene of frame `i`: `base` with the animated key set. "" on success, else the
@@ -40,7 +44,7 @@ std::optional<Animation> parseAnimation(const std::string& text, int frames, std
 std::string frameScene(const Animation& anim, const Scene& base, int i, Scene& out);
 
 // Whether a frame needs its own octree and box hierarchy (see above): the animated
-// parameter appears in `formula`.
+// parameter appears in `formula`, or the level moves.
 bool changesOctree(const Animation& anim, const Scene& base);
 
 // The eye of `camera` turned by `degrees` about the axis through its target along its up.

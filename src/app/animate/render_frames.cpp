@@ -149,8 +149,10 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   std::printf("wrote %d frames (%dx%d) to %s in %.0f ms, %s; %s\n", anim->frames, scene.width,
               scene.height, opt.outDir.c_str(), totalMs,
-              perFrameOctree ? "octree rebuilt per frame (the parameter is in F)"
-                             : "octree built once (F does not change)",
+              !perFrameOctree ? "octree built once (F does not change)"
+              : anim->kind == Animation::Kind::Level
+                  ? "octree rebuilt per frame (the level moves)"
+                  : "octree rebuilt per frame (the parameter is in F)",
               gl.context->backendName().c_str());
   if (ffmpeg) {
     const std::string pattern = (dir / frameFilePattern(anim->frames)).string();

@@ -20,9 +20,10 @@ bool HoverProbe::update(const Scene& scene, double x, double y, int width, int h
     return false;
   lastX_ = px, lastY_ = py, lastW_ = width, lastH_ = height;
   lastScene_ = scene;
-  if (scene.formula != formulaText_ || !formula_) {
+  if (scene.formula != formulaText_ || scene.level != level_ || !formula_) {
     formulaText_ = scene.formula;
-    ParseResult parsed = parseFormula(scene.formula);
+    level_ = scene.level;
+    ParseResult parsed = parseSceneFormula(scene);
     formula_.reset();
     if (auto* f = std::get_if<Formula>(&parsed)) formula_ = std::move(*f);
   }

@@ -25,7 +25,8 @@ class HoverProbe {
   void draw() const;
 
  private:
-  std::string formulaText_;
+  std::string formulaText_;  // what formula_ was parsed from, with level_
+  double level_ = 0;
   std::optional<Formula> formula_;
   Scene lastScene_;
   int lastX_ = -1, lastY_ = -1, lastW_ = 0, lastH_ = 0;

@@ -13,7 +13,8 @@ namespace zs::app {
 namespace {
 
 bool needsBuild(const Scene& a, const Scene& b) {
-  return a.formula != b.formula || a.params != b.params || a.domain != b.domain ||
+  return a.formula != b.formula || a.level != b.level || a.params != b.params ||
+         a.domain != b.domain ||
          a.octree != b.octree || a.render.tracing.method != b.render.tracing.method ||
          a.render.singular != b.render.singular ||  // the markers are part of the shader
          // so are the second derivatives that the curvature colorings need
