@@ -63,6 +63,7 @@ let uploadedGeneration = -1;
 // Compiles and uploads what the prepared surface needs; '' or the message to show.
 function loadSurfaceIntoRenderer() {
   const log = renderer.use(session.vertexShader(), session.fragmentShader());
+  if (log === Renderer.LOST) return Renderer.LOST;
   if (log) {
     return 'internal error: the browser\'s WebGL2 rejected the shader zeroset generated for ' +
            'this formula. This is a bug in zeroset, not a problem with your input.\n' + log;
@@ -82,6 +83,7 @@ function redraw() {
   resizeCanvas();
   const full = scale === 1;
   const error = loadSurfaceIntoRenderer();
+  if (error === Renderer.LOST) return;  // the restored context draws again
   if (error) { showError(error); return; }
   const bg = session.frame(1, 1).background;
   const startedAt = performance.now();
@@ -96,6 +98,9 @@ function redraw() {
       else root.dataset.zeroset = 'error';
     }
     return ms;
+  }).catch((e) => {
+    pending = null;
+    showError('zeroset could not draw: ' + (e && e.message ? e.message : e));
   });
   void startedAt;
 }
@@ -134,6 +139,7 @@ let typingTimer = 0;
 formulaInput.addEventListener('input', () => {
   clearTimeout(typingTimer);
   typingTimer = setTimeout(() => {
+    if (!session) return;
     setState('busy');
     const error = session.setFormula(formulaInput.value);
     if (error) { showError(error); return; }
@@ -261,7 +267,10 @@ function settingRow(s) {
       n.setAttribute('aria-label', `${s.key} ${'xyz'[i]}`);
       return n;
     });
-    parts.forEach((n) => n.addEventListener('change', () => applySetting(s.key, tomlOf(s, parts.map((p) => p.value)))));
+    parts.forEach((n, i) => {
+      n.addEventListener('change', () => applySetting(s.key, tomlOf(s, parts.map((p) => p.value))));
+      n.dataset.key = `${s.key}.${'xyz'[i]}`;
+    });
     input.append(...parts);
     parts[0].id = id;
   } else {
@@ -273,8 +282,10 @@ function settingRow(s) {
     input.value = s.value[0];
     input.addEventListener('change', () => applySetting(s.key, tomlOf(s, input.value)));
   }
-  if (!input.id) input.id = id;
-  input.dataset.key = s.key;
+  if (s.type !== 'vec3' || /color/.test(s.key)) {
+    input.id = id;
+    input.dataset.key = s.key;
+  }
   row.append(input);
   return row;
 }
@@ -323,6 +334,7 @@ function cssSize() {
 }
 
 canvas.addEventListener('pointerdown', (e) => {
+  if (!session) return;
   canvas.setPointerCapture(e.pointerId);
   pointers.set(e.pointerId, [e.offsetX, e.offsetY]);
   if (pointers.size === 1) {
@@ -358,6 +370,7 @@ function showProbe(e) {
 }
 
 canvas.addEventListener('pointermove', (e) => {
+  if (!session) return;
   if (!pointers.has(e.pointerId)) {
     if (e.pointerType === 'mouse') showProbe(e);
     return;
@@ -401,6 +414,7 @@ canvas.addEventListener('pointercancel', endPointer);
 let wheelTimer = 0;
 canvas.addEventListener('wheel', (e) => {
   e.preventDefault();
+  if (!session) return;
   const steps = -e.deltaY / (e.deltaMode === 1 ? 3 : 100);
   session.zoom(steps);
   scale = DRAG_SCALE;
@@ -413,8 +427,11 @@ canvas.addEventListener('wheel', (e) => {
 document.addEventListener('keydown', (e) => {
   const t = e.target;
   if (t instanceof HTMLInputElement || t instanceof HTMLSelectElement || t instanceof HTMLTextAreaElement) return;
-  if (e.altKey || e.metaKey || e.key.length !== 1) return;
-  const code = e.key.toUpperCase().charCodeAt(0);
+  if (!session || e.altKey || e.metaKey) return;
+  // GLFW's key codes: the upper-case letters, and 262 / 263 for the right and left arrows.
+  const arrows = { ArrowRight: 262, ArrowLeft: 263 };
+  if (e.key.length !== 1 && !(e.key in arrows)) return;
+  const code = arrows[e.key] || e.key.toUpperCase().charCodeAt(0);
   const mods = (e.shiftKey ? 1 : 0) | (e.ctrlKey ? 2 : 0);
   const result = session.key(code, mods);
   if (!result.action && result.effect === 0) return;
@@ -452,6 +469,7 @@ function loadText(text, name) {
 }
 
 async function loadFile(file) {
+  if (!session) return;
   if (!/\.(surf|jsurf|pic)$/i.test(file.name)) {
     showError(`${file.name}: zeroset opens .surf and .jsurf files`);
     return;
@@ -481,11 +499,19 @@ function saveBlob(blob, name) {
   a.click();
   setTimeout(() => URL.revokeObjectURL(a.href), 1000);
 }
-function downloadPng() { canvas.toBlob((b) => b && saveBlob(b, 'zeroset.png'), 'image/png'); }
-function saveSurf() { saveBlob(new Blob([session.sceneText()], { type: 'text/plain' }), 'scene.surf'); }
+function downloadPng() {
+  if (!session) return; canvas.toBlob((b) => b && saveBlob(b, 'zeroset.png'), 'image/png'); }
+function saveSurf() {
+  if (session) saveBlob(new Blob([session.sceneText()], { type: 'text/plain' }), 'scene.surf');
+}
 $('download').addEventListener('click', downloadPng);
 $('save').addEventListener('click', saveSurf);
-$('reset').addEventListener('click', () => { session.resetView(); buildSettings(); redraw(); });
+$('reset').addEventListener('click', () => {
+  if (!session) return;
+  session.resetView();
+  buildSettings();
+  redraw();
+});
 
 // Share links hold the whole scene: its .surf text, deflated and base64url-encoded.
 async function encodeScene(text) {
@@ -503,6 +529,7 @@ async function decodeScene(code) {
   return await new Response(stream).text();
 }
 $('share').addEventListener('click', async () => {
+  if (!session) return;
   const url = new URL(location.href);
   url.search = '';
   url.searchParams.set('scene', await encodeScene(session.sceneText()));
@@ -513,11 +540,14 @@ $('share').addEventListener('click', async () => {
   navigator.clipboard?.writeText(url.href).catch(() => {});
 });
 
+let exampleRequest = 0;
 async function loadExampleAt(i) {
-  if (examples.length === 0) return;
+  if (examples.length === 0 || !session) return;
   currentExample = ((i % examples.length) + examples.length) % examples.length;
   const ex = examples[currentExample];
+  const request = ++exampleRequest;
   const text = await fetchText(`examples/${ex.name}.surf`);
+  if (request !== exampleRequest) return;  // a later pick won
   if (text === null) { showError(`example ${ex.name}: not found`); return; }
   loadText(text, ex.name + '.surf');
 }
@@ -565,7 +595,8 @@ async function start() {
   if (params.get('embed') === '1') document.body.classList.add('embed');
   const size = /^(\d+)x(\d+)$/.exec(params.get('size') || '');
   if (size) {
-    fixedSize = [Number(size[1]), Number(size[2])];
+    // Within what every browser's drawing buffer holds.
+    fixedSize = [Math.min(Math.max(Number(size[1]), 1), 4096), Math.min(Math.max(Number(size[2]), 1), 4096)];
     canvas.style.width = `${fixedSize[0]}px`;
     canvas.style.height = `${fixedSize[1]}px`;
   }

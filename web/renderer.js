@@ -8,6 +8,8 @@ const NODE_ROW = 1024;  // texels per row of the hierarchy texture (raytrace_sam
 const TILE_BUDGET_MS = 40;  // a frame slower than this is drawn in tiles over several tasks
 
 export class Renderer {
+  static LOST = 'lost';  // use()'s answer while the context is lost: not an error
+
   constructor(canvas, { onRestored } = {}) {
     this.canvas = canvas;
     this.onRestored = onRestored;
@@ -47,6 +49,7 @@ export class Renderer {
 
   // Compiles (or reuses) the program for these sources; returns '' or the driver's log.
   use(vertex, fragment) {
+    if (this.gl.isContextLost()) return Renderer.LOST;  // restored later: onRestored draws
     const key = vertex + '\u0000' + fragment;
     let entry = this.programs.get(key);
     if (!entry) {

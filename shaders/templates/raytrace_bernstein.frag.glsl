@@ -58,8 +58,9 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     // arithmetic and the conversion in zs_Wide (a priori, from the absolute-value bound), the
     // one rounding to zs_Real, and the de Casteljau steps (convex combinations: a few
     // roundings of the largest coefficient each).
-    zs_Real noise = zs_Real(zs_ROUNDINGS * zs_WIDE_EPS * bound) +
-                    zs_EPS * zs_Real(8 * zs_DEGREE + 2) * zs_maxAbs(b0);
+    zs_Real noise = max(zs_Real(zs_ROUNDINGS * zs_WIDE_EPS * bound) +
+                            zs_EPS * zs_Real(8 * zs_DEGREE + 2) * zs_maxAbs(b0),
+                        zs_NOISE_FLOOR);
     float tolerance = rt.tangentTolerance / len;  // in units of s
     bool mayZoom = windows + 1 < RT_MAX_WINDOWS && len > 4.0 * rt.tangentTolerance;
     bool zoom = false;

@@ -332,9 +332,12 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision, bool fp64) {
   // Twice the unit roundoff (2^-23 of float, 2^-52 of double): the noise band of the
   // isolation is a first-order bound; the factor 2 covers the rest and its own rounding.
   s += std::string("const zs_Real zs_EPS = ") + (doublePrecision ? "2.23e-16lf" : "1.2e-7") + ";\n";
-  // Double-float: 2^-44, four times its operations' error bound, which also covers the bound's
-  // own rounding in float.
+  // Double-float: 2^-44, over twice its operations' error bounds (about 3u^2 for an addition
+  // and 7u^2 for a product, u = 2^-24), which also covers the bound's own rounding in float.
   s += std::string("const zs_Bound zs_WIDE_EPS = ") + (fp64 ? "2.23e-16lf" : "5.7e-14") + ";\n";
+  // Double-float's low parts flush to zero below float's normal range, where its error is
+  // no longer relative: an absolute floor on the noise band (0 with double).
+  s += std::string("const zs_Real zs_NOISE_FLOOR = ") + (fp64 ? "0.0" : "1e-36") + ";\n";
   if (!fp64) s += kDoubleFloatGlsl;
   s += "const int zs_DEGREE = " + std::to_string(d) + ";\n";
   s += "const int zs_N = " + std::to_string(d + 1) + ";\n";

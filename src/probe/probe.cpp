@@ -138,6 +138,7 @@ std::variant<ProbeResult, std::string> probeRay(const Formula& formula,
         }
       }
     }
+    if (flo == 0) hi = lo;  // F exactly 0 at the segment's start: that is the root
     tHit = 0.5 * (lo + hi);
     break;
   }

@@ -91,7 +91,16 @@ std::string WebSession::prepare() {
   } catch (const std::exception& e) {  // a bug in zeroset: said, and the page goes on
     return std::string("internal error in zeroset: ") + e.what() + "\n";
   }
-  if (auto* err = std::get_if<std::string>(&result)) return *err;
+  if (auto* err = std::get_if<std::string>(&result)) {
+    // The edit that led here is undone: the scene goes back to the one on screen (its view
+    // kept), so the panels, frames and later edits never pair it with another surface.
+    if (surface_) {
+      const Camera view = scene_.render.camera;
+      scene_ = preparedScene_;
+      scene_.render.camera = view;
+    }
+    return *err;
+  }
   PreparedSurface surface = std::get<PreparedSurface>(std::move(result));
   GpuHierarchy gpu;
   if (std::string error = toGpuHierarchy(surface.hierarchy.packed(), gpu); !error.empty())
@@ -99,6 +108,7 @@ std::string WebSession::prepare() {
   gpu_ = std::move(gpu);
   params_ = surface.paramsAsFloats();
   surface_ = std::move(surface);
+  preparedScene_ = scene_;
   ++generation_;
   return {};
 }

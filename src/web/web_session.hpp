@@ -53,7 +53,8 @@ class WebSession {
 
   // The CPU half of a frame for WebGL2 (pipeline.hpp with ShaderDialect::Es300): octree,
   // hierarchy, method, shaders. Needed after every edit above; a drag or a wheel step
-  // needs none.
+  // needs none. When it fails, the scene goes back to that of the surface on screen (the
+  // view kept), so the failed edit is undone as a whole.
   std::string prepare();
   bool prepared() const { return surface_.has_value(); }
   // Counts successful prepare() calls: the page uploads the hierarchy when it changes.
@@ -106,6 +107,7 @@ class WebSession {
   Camera loadedCamera_;
   Camera dragStart_;
   std::optional<PreparedSurface> surface_;
+  Scene preparedScene_;  // the scene surface_ was prepared from
   GpuHierarchy gpu_;
   std::vector<float> params_;
   std::string importNotes_;

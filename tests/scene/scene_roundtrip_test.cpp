@@ -20,6 +20,7 @@ Scene everyKeyChanged() {
   Scene s;
   s.formula = "a*x^2 + b*y^2 +\tz^2 - 1";
   s.params = {{"b", 1.0 / 3.0}, {"a", 0.1 + 0.2}, {"unused", -7.25}};
+  s.level = -0.1 - 0.2;
   s.domain = {{-2.5, -1e-300, -3}, {2.5, 5e-324, 1.7976931348623157e308}, DomainShape::Sphere,
               {0.5, -1e-300, 2}, 0.75};
   s.octree = {7, Criteria::Uniform, 123'456};

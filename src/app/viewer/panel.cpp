@@ -175,11 +175,11 @@ PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats) 
   ImGui::SetNextWindowBgAlpha(0.85f);
   if (ImGui::Begin("zeroset", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     drawFormula(state, result);
+    drawParams(scene, state, result);
     // surface.level: the surface drawn is F = level (a level set of F).
     ImGui::DragScalar("level", ImGuiDataType_Double, &scene.level, 0.01f, nullptr, nullptr,
                       "%.4g");
     result.sliderActive = result.sliderActive || ImGui::IsItemActive();
-    drawParams(scene, state, result);
     drawStats(stats);
     drawLegend(stats);
     drawMeshExport(state, result);
