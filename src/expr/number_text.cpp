@@ -1,5 +1,6 @@
 #include "expr/number_text.hpp"
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -17,21 +18,45 @@ std::string portable(T v) {
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
   if (v == 0) return std::signbit(v) ? "-0" : "0";
   const int maxDigits = std::numeric_limits<T>::max_digits10;
+  const bool negative = std::signbit(v);
+  const double magnitude = std::fabs(double(v));
+  auto readsBack = [&](const std::string& digits, int exponent) {
+    std::string text =
+        digits.substr(0, 1) + "." + digits.substr(1) + "e" + std::to_string(exponent);
+    const T back = sizeof(T) == sizeof(float) ? T(std::strtof(text.c_str(), nullptr))
+                                              : T(std::strtod(text.c_str(), nullptr));
+    return back == T(magnitude);
+  };
+  // The shortest digits that read back. printf gives the nearest p-digit decimal; at a power
+  // of two the rounding interval below is half as wide as above, so the nearest can miss
+  // where its neighbour above (or below) reads back: to_chars finds that one.
   char buf[64];
-  for (int p = 1; p <= maxDigits; ++p) {
-    std::snprintf(buf, sizeof buf, "%.*e", p - 1, double(v));
-    const T back =
-        sizeof(T) == sizeof(float) ? T(std::strtof(buf, nullptr)) : T(std::strtod(buf, nullptr));
-    if (back == v) break;
-  }
-  std::string text = buf;
-  const bool negative = text[0] == '-';
-  if (negative) text.erase(0, 1);
-  const std::size_t e = text.find('e');
-  const int exponent = std::atoi(text.c_str() + e + 1);
   std::string digits;
-  for (std::size_t i = 0; i < e; ++i)
-    if (text[i] != '.') digits += text[i];
+  int exponent = 0;
+  for (int p = 1; p <= maxDigits; ++p) {
+    std::snprintf(buf, sizeof buf, "%.*e", p - 1, magnitude);
+    const std::string text = buf;
+    const std::size_t e = text.find('e');
+    exponent = std::atoi(text.c_str() + e + 1);
+    digits.clear();
+    for (std::size_t i = 0; i < e; ++i)
+      if (text[i] != '.') digits += text[i];
+    if (readsBack(digits, exponent) || p == maxDigits) break;
+    const long long m = std::atoll(digits.c_str());
+    bool found = false;
+    for (const long long next : {m + 1, m - 1}) {
+      std::string d = std::to_string(next);
+      int x = exponent + int(d.size()) - p;  // 10^p - 1 + 1 gains a digit, 10^(p-1) - 1 loses one
+      if (next <= 0) continue;
+      if (readsBack(d, x)) {
+        digits = d;
+        exponent = x;
+        found = true;
+        break;
+      }
+    }
+    if (found) break;
+  }
   while (digits.size() > 1 && digits.back() == '0') digits.pop_back();
   const int n = int(digits.size());
   std::string scientific = digits.substr(0, 1);
@@ -100,8 +125,10 @@ std::optional<double> parseDecimal(std::string_view text) {
   if (text[0] == '+') return std::nullopt;
   const std::string copy(text);
   char* end = nullptr;
+  errno = 0;
   const double x = std::strtod(copy.c_str(), &end);
-  if (end != copy.c_str() + copy.size()) return std::nullopt;
+  // Out of double's range either way is no number, as from_chars says.
+  if (end != copy.c_str() + copy.size() || errno == ERANGE) return std::nullopt;
   return x;
 #endif
 }

@@ -59,6 +59,15 @@ TEST(NumberText, PortableWritesWhatToCharsWrites) {
     const float f = float(std::ldexp(double(random() % 100000) - 50000, int(random() % 60) - 30));
     ASSERT_EQ(shortestTextPortable(f), toChars(f)) << f;
   }
+  // Powers of two, where the rounding interval below is half as wide as above.
+  for (int e = -1074; e <= 1023; ++e) {
+    const double v = std::ldexp(1.0, e);
+    ASSERT_EQ(shortestTextPortable(v), toChars(v)) << "2^" << e;
+  }
+  for (int e = -149; e <= 127; ++e) {
+    const float f = std::ldexp(1.0f, e);
+    ASSERT_EQ(shortestTextPortable(f), toChars(f)) << "2^" << e << " as float";
+  }
   EXPECT_EQ(shortestTextPortable(std::numeric_limits<double>::infinity()), "inf");
   EXPECT_EQ(shortestTextPortable(-std::numeric_limits<double>::infinity()), "-inf");
 }
