@@ -86,7 +86,6 @@ function redraw() {
   if (error === Renderer.LOST) return;  // the restored context draws again
   if (error) { showError(error); return; }
   const bg = session.frame(1, 1).background;
-  const startedAt = performance.now();
   pending = renderer.draw((w, h) => session.frame(w, h), bg).then((ms) => {
     pending = null;
     if (redrawQueued) { redrawQueued = false; redraw(); return; }
@@ -102,7 +101,6 @@ function redraw() {
     pending = null;
     showError('zeroset could not draw: ' + (e && e.message ? e.message : e));
   });
-  void startedAt;
 }
 
 // prepare() (octree, hierarchy, shaders) and draw; '' or the error shown.
@@ -120,11 +118,9 @@ function prepareAndDraw() {
 // ---- scene edits -------------------------------------------------------------------------
 
 function afterSceneLoaded() {
-  formulaInput.value = currentFormula();
+  formulaInput.value = session.formula();
   return prepareAndDraw();
 }
-
-function currentFormula() { return session.formula(); }
 
 function applySetting(key, tomlValue) {
   setState('busy');
@@ -643,7 +639,7 @@ async function start() {
     const sets = params.getAll('set');
     if (sets.length) error = session.applyOverrides(sets);
   }
-  formulaInput.value = currentFormula();
+  formulaInput.value = session.formula();
   if (error) {
     const prepareError = session.prepare();
     if (prepareError) { session.loadFormula('x^2 + y^2 + z^2 - 1'); session.prepare(); }
@@ -656,7 +652,7 @@ async function start() {
     const shown = prepareError;
     session.loadFormula('x^2 + y^2 + z^2 - 1');
     session.prepare();
-    formulaInput.value = currentFormula();
+    formulaInput.value = session.formula();
     showNotes(); buildParams(); buildSettings(); redraw();
     showError(shown);
     return;

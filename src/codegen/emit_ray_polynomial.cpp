@@ -14,15 +14,13 @@ using Coeffs = std::vector<std::string>;  // GLSL names of c_0 .. c_k
 
 std::string idx(const std::string& array, int i) { return array + "[" + std::to_string(i) + "]"; }
 
-// A literal of the wide type with every digit a double has (the conversion matrix's
-// entries; "lf" marks double, GLSL ES has no suffix and no double); a negative one is
-// parenthesized: "a * -2.0" is fine, "a - -2.0" lexes as a decrement.
-std::string wideLiteral(double v, bool fp64) {
+// A double literal with every digit a double has (the conversion matrix's entries); a
+// negative one is parenthesized: "a * -2.0" is fine, "a - -2.0" lexes as a decrement.
+std::string doubleLiteral(double v) {
   char text[40];
-  std::snprintf(text, sizeof text, "%.17g", v);
+  std::snprintf(text, sizeof text, "%.17glf", v);
   std::string t = text;
-  if (t.find_first_of(".e") == std::string::npos) t += ".0";
-  if (fp64) t += "lf";
+  if (t.find_first_of(".e") == std::string::npos) t.insert(t.size() - 2, ".0");
   return v < 0 ? "(" + t + ")" : t;
 }
 
@@ -94,8 +92,7 @@ std::string dfLiteral(double v) {
   const float lo = float(v - double(hi));
   char text[80];
   std::snprintf(text, sizeof text, "vec2(%.9g, %.9g)", double(hi), double(lo));
-  std::string t = text;
-  return t;
+  return text;
 }
 
 double binomial(int n, int k) {
@@ -359,7 +356,7 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision, bool fp64) {
       m /= binomial(d, i);
       if (m == 0) continue;
       if (fp64) {
-        const std::string term = m == 1.0 ? idx("c", j) : wideLiteral(m, fp64) + " * " + idx("c", j);
+        const std::string term = m == 1.0 ? idx("c", j) : doubleLiteral(m) + " * " + idx("c", j);
         sum += (sum.empty() ? "" : " + ") + term;
       } else {
         const std::string term = m == 1.0 ? idx("c", j) : "zs_dfMul(" + dfLiteral(m) + ", " + idx("c", j) + ")";

@@ -11,6 +11,27 @@ using emscripten::val;
 namespace zs::web {
 namespace {
 
+// A JS typed array holding a copy of `values` (a view into wasm memory would be invalidated
+// when the heap grows): Uint32Array or Float32Array after the element type.
+template <class T>
+val typedArrayCopy(const char* type, const std::vector<T>& values) {
+  val array = val::global(type).new_(values.size());
+  array.call<void>("set", val(emscripten::typed_memory_view(values.size(), values.data())));
+  return array;
+}
+
+// A plain JS array of `items`, each converted by `convert` (the values themselves by default).
+template <class Range, class Convert>
+val arrayOf(const Range& items, Convert convert) {
+  val out = val::array();
+  for (const auto& item : items) out.call<void>("push", convert(item));
+  return out;
+}
+template <class Range>
+val arrayOf(const Range& items) {
+  return arrayOf(items, [](const auto& item) { return item; });
+}
+
 std::string applyOverridesJs(WebSession& s, val assignments) {
   std::vector<std::string> list;
   const int n = assignments["length"].as<int>();
@@ -21,10 +42,7 @@ std::string applyOverridesJs(WebSession& s, val assignments) {
 val hierarchyJs(const WebSession& s) {
   const GpuHierarchy& h = s.hierarchy();
   val out = val::object();
-  // A copy: the view into wasm memory would be invalidated when the heap grows.
-  val texels = val::global("Uint32Array").new_(h.texels.size());
-  texels.call<void>("set", val(emscripten::typed_memory_view(h.texels.size(), h.texels.data())));
-  out.set("texels", texels);
+  out.set("texels", typedArrayCopy("Uint32Array", h.texels));
   out.set("count", h.count);
   return out;
 }
@@ -51,40 +69,29 @@ const char* kindName(UniformValue::Kind kind) {
 
 val frameJs(const WebSession& s, int width, int height) {
   const FrameUniforms frame = s.frame(width, height);
-  val uniforms = val::array();
-  for (const UniformValue& u : frame.values) {
-    val entry = val::object();
-    entry.set("name", u.name);
-    entry.set("kind", std::string(kindName(u.kind)));
-    if (u.kind == UniformValue::Kind::Int) {
-      entry.set("value", u.integer);
-    } else {
-      val values = val::global("Float32Array").new_(u.values.size());
-      values.call<void>("set",
-                        val(emscripten::typed_memory_view(u.values.size(), u.values.data())));
-      entry.set("value", values);
-    }
-    uniforms.call<void>("push", entry);
-  }
   val out = val::object();
-  out.set("uniforms", uniforms);
+  out.set("uniforms", arrayOf(frame.values, [](const UniformValue& u) {
+            val entry = val::object();
+            entry.set("name", u.name);
+            entry.set("kind", std::string(kindName(u.kind)));
+            if (u.kind == UniformValue::Kind::Int)
+              entry.set("value", u.integer);
+            else
+              entry.set("value", typedArrayCopy("Float32Array", u.values));
+            return entry;
+          }));
   out.set("vertices", frame.vertices);
-  const RenderSettings& r = s.scene().render;
-  val background = val::array();
-  for (double c : r.background) background.call<void>("push", c);
-  out.set("background", background);
+  out.set("background", arrayOf(s.scene().render.background));
   return out;
 }
 
 val paramsJs(const WebSession& s) {
-  val out = val::array();
-  for (const auto& [name, value] : s.params()) {
+  return arrayOf(s.params(), [](const std::pair<std::string, double>& param) {
     val p = val::object();
-    p.set("name", name);
-    p.set("value", value);
-    out.call<void>("push", p);
-  }
-  return out;
+    p.set("name", param.first);
+    p.set("value", param.second);
+    return p;
+  });
 }
 
 // The viewer's actions that are the page's own (not scene edits), by the name app.js
@@ -129,9 +136,7 @@ val keyJs(WebSession& s, int keyCode, int mods) {
 val keysJs() {
   val out = val::array();
   for (const interact::KeyBinding& b : interact::keyBindings()) {
-    const bool edit = interact::Action(b.action) != interact::Action::ExportMesh &&
-                      b.action != interact::Action::Quit;
-    if (!edit) continue;
+    if (b.action == interact::Action::ExportMesh || b.action == interact::Action::Quit) continue;
     val k = val::object();
     k.set("key", std::string(b.keyName));
     k.set("description", std::string(b.description));
@@ -148,30 +153,19 @@ val settingJs(const Setting& setting) {
   e.set("hi", setting.hi);
   e.set("loOpen", setting.loOpen);
   e.set("hiOpen", setting.hiOpen);
-  val choices = val::array();
-  for (const std::string& c : setting.choices) choices.call<void>("push", c);
-  e.set("choices", choices);
-  val value = val::array();
-  for (double v : setting.value) value.call<void>("push", v);
-  e.set("value", value);
+  e.set("choices", arrayOf(setting.choices));
+  e.set("value", arrayOf(setting.value));
   e.set("choice", setting.choice);
   return e;
 }
 
 val settingsJs(const WebSession& s) {
-  val out = val::array();
-  for (const Setting& setting : s.settings()) out.call<void>("push", settingJs(setting));
-  return out;
+  return arrayOf(s.settings(), settingJs);
 }
 
 val lightsJs(const WebSession& s) {
-  val out = val::array();
-  for (const std::vector<Setting>& light : s.lights()) {
-    val keys = val::array();
-    for (const Setting& setting : light) keys.call<void>("push", settingJs(setting));
-    out.call<void>("push", keys);
-  }
-  return out;
+  return arrayOf(s.lights(),
+                 [](const std::vector<Setting>& light) { return arrayOf(light, settingJs); });
 }
 
 val probeJs(const WebSession& s, int x, int y, int width, int height) {
@@ -184,15 +178,10 @@ val probeJs(const WebSession& s, int x, int y, int width, int height) {
   const ProbeResult& r = std::get<ProbeResult>(result);
   out.set("hit", r.hit);
   if (!r.hit) return out;
-  auto vec = [](const Vec3& v) {
-    val a = val::array();
-    for (double c : v) a.call<void>("push", c);
-    return a;
-  };
-  out.set("point", vec(r.point));
+  out.set("point", arrayOf(r.point));
   out.set("F", r.value);
-  out.set("gradient", vec(r.gradient));
-  out.set("normal", vec(r.normal));
+  out.set("gradient", arrayOf(r.gradient));
+  out.set("normal", arrayOf(r.normal));
   out.set("K", r.gaussian);
   out.set("H", r.mean);
   out.set("k1", r.k1);
@@ -202,13 +191,6 @@ val probeJs(const WebSession& s, int x, int y, int width, int height) {
 
 std::string formulaJs(const WebSession& s) {
   return s.scene().formula;
-}
-
-val sizeJs(const WebSession& s) {
-  val out = val::object();
-  out.set("width", s.scene().width);
-  out.set("height", s.scene().height);
-  return out;
 }
 
 }  // namespace
@@ -253,8 +235,7 @@ EMSCRIPTEN_BINDINGS(zeroset) {
       .function("settings", &settingsJs)
       .function("lights", &lightsJs)
       .function("notes", &WebSession::notes)
-      .function("method", &WebSession::method)
-      .function("sceneSize", &sizeJs);
+      .function("method", &WebSession::method);
 }
 
 }  // namespace zs::web
