@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -58,9 +59,14 @@ double diagonal(const Domain& domain) {
 
 }  // namespace
 
-std::variant<ProbeResult, std::string> probeRay(const Formula& formula,
-                                                std::span<const double> params,
-                                                const Domain& domain, const Ray& ray) {
+namespace {
+
+// The tapes the probe runs, compiled from F with its gradient and Hessian added.
+struct Tapes {
+  Tape value, slope, all;
+};
+
+Tapes compileProbeTapes(const Formula& formula) {
   Graph g = formula.graph;
   const NodeId f = formula.root;
   const std::array<NodeId, 3> grad = gradient(g, f);
@@ -69,12 +75,38 @@ std::variant<ProbeResult, std::string> probeRay(const Formula& formula,
     const std::array<NodeId, 3> row = gradient(g, grad[std::size_t(i)]);
     outputs.insert(outputs.end(), row.begin(), row.end());
   }
-  const Tape valueTape = compileTape(g, {f});
-  IntervalEvaluator intervals(valueTape);
-  PointEvaluator values(valueTape);
-  // F and grad F together, for the slope along the ray on the last, smallest segments.
-  const Tape slopeTape = compileTape(g, {f, grad[0], grad[1], grad[2]});
-  IntervalEvaluator slopes(slopeTape);
+  // F alone; F and grad F, for the slope along the ray on the last, smallest segments; and
+  // F, grad F and the Hessian at the point found.
+  return {compileTape(g, {f}), compileTape(g, {f, grad[0], grad[1], grad[2]}),
+          compileTape(g, outputs)};
+}
+
+}  // namespace
+
+struct SurfaceProbe::Evaluators {
+  explicit Evaluators(Tapes t)
+      : tapes(std::move(t)),
+        intervals(tapes.value),
+        values(tapes.value),
+        slopes(tapes.slope),
+        all(tapes.all) {}
+  Tapes tapes;  // before the evaluators: the interval ones hold references into it
+  IntervalEvaluator intervals;
+  PointEvaluator values;
+  IntervalEvaluator slopes;
+  PointEvaluator all;
+};
+
+SurfaceProbe::SurfaceProbe(const Formula& formula)
+    : eval_(std::make_unique<Evaluators>(compileProbeTapes(formula))) {}
+
+SurfaceProbe::~SurfaceProbe() = default;
+
+std::variant<ProbeResult, std::string> SurfaceProbe::ray(std::span<const double> params,
+                                                         const Domain& domain, const Ray& ray) {
+  IntervalEvaluator& intervals = eval_->intervals;
+  PointEvaluator& values = eval_->values;
+  IntervalEvaluator& slopes = eval_->slopes;
   std::array<Interval, 4> withGradient;
   auto valueAt = [&](double t) {
     const Vec3 p = at(ray, t);
@@ -147,9 +179,8 @@ std::variant<ProbeResult, std::string> probeRay(const Formula& formula,
   result.hit = true;
   result.t = tHit;
   result.point = at(ray, tHit);
-  PointEvaluator all(compileTape(g, outputs));
-  std::vector<double> v(outputs.size());
-  all.eval(result.point[0], result.point[1], result.point[2], params, v);
+  std::vector<double> v(eval_->tapes.all.outputs.size());
+  eval_->all.eval(result.point[0], result.point[1], result.point[2], params, v);
   result.value = v[0];
   const Vec3 gr{v[1], v[2], v[3]};
   result.gradient = gr;
@@ -189,16 +220,27 @@ std::variant<ProbeResult, std::string> probeRay(const Formula& formula,
   return result;
 }
 
-std::variant<ProbeResult, std::string> probePixel(const Formula& formula,
-                                                  std::span<const double> params,
-                                                  const Scene& scene, int width, int height, int x,
-                                                  int y) {
+std::variant<ProbeResult, std::string> SurfaceProbe::pixel(std::span<const double> params,
+                                                           const Scene& scene, int width,
+                                                           int height, int x, int y) {
   if (width <= 0 || height <= 0 || x < 0 || y < 0 || x >= width || y >= height) {
     return "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
            std::to_string(width) + "x" + std::to_string(height) + " picture";
   }
-  return probeRay(formula, params, scene.domain,
-                  primaryRay(scene.render.camera, width, height, x, y));
+  return ray(params, scene.domain, primaryRay(scene.render.camera, width, height, x, y));
+}
+
+std::variant<ProbeResult, std::string> probeRay(const Formula& formula,
+                                                std::span<const double> params,
+                                                const Domain& domain, const Ray& ray) {
+  return SurfaceProbe(formula).ray(params, domain, ray);
+}
+
+std::variant<ProbeResult, std::string> probePixel(const Formula& formula,
+                                                  std::span<const double> params,
+                                                  const Scene& scene, int width, int height,
+                                                  int x, int y) {
+  return SurfaceProbe(formula).pixel(params, scene, width, height, x, y);
 }
 
 namespace {

@@ -7,6 +7,7 @@
 // first root is isolated with interval arithmetic on the CPU (src/interval), with the
 // tangent tolerance of the tracer (docs/renderer.md), so no GPU is needed: the command line
 // (`zeroset probe`), the viewer and the web page share it.
+#include <memory>
 #include <span>
 #include <string>
 #include <variant>
@@ -26,6 +27,28 @@ struct ProbeResult {
   // grad F / |grad F| and the curvatures; NaN where grad F = 0 (a singular point).
   Vec3 normal{};
   double gaussian = 0, mean = 0, k1 = 0, k2 = 0;
+};
+
+// One formula prepared for probing: its gradient and Hessian and the tapes that evaluate
+// them, made once, so each pixel costs only the search (the hover readouts keep one per
+// surface on screen). Not thread-safe: the evaluators reuse their buffers.
+class SurfaceProbe {
+ public:
+  explicit SurfaceProbe(const Formula& formula);
+  ~SurfaceProbe();
+  SurfaceProbe(const SurfaceProbe&) = delete;
+  SurfaceProbe& operator=(const SurfaceProbe&) = delete;
+
+  // probeRay and probePixel below, for this formula.
+  std::variant<ProbeResult, std::string> ray(std::span<const double> params,
+                                             const Domain& domain, const Ray& ray);
+  std::variant<ProbeResult, std::string> pixel(std::span<const double> params,
+                                               const Scene& scene, int width, int height, int x,
+                                               int y);
+
+ private:
+  struct Evaluators;
+  std::unique_ptr<Evaluators> eval_;
 };
 
 // The first root along `ray` inside the domain (box, or ball), or hit = false. An error

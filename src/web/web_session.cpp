@@ -108,6 +108,7 @@ std::string WebSession::prepare() {
   gpu_ = std::move(gpu);
   params_ = surface.paramsAsFloats();
   surface_ = std::move(surface);
+  probe_.reset();
   preparedScene_ = scene_;
   ++generation_;
   return {};
@@ -141,7 +142,9 @@ FrameUniforms WebSession::frame(int width, int height) const {
 std::variant<ProbeResult, std::string> WebSession::probe(int x, int y, int width,
                                                          int height) const {
   if (!surface_) return std::string("nothing is drawn yet");
-  return probePixel(surface_->formula, surface_->params, scene_, width, height, x, y);
+  // Made at the first probe of a surface: a page that never hovers never pays for it.
+  if (!probe_) probe_ = std::make_unique<SurfaceProbe>(surface_->formula);
+  return probe_->pixel(surface_->params, scene_, width, height, x, y);
 }
 
 void WebSession::beginDrag() {

@@ -8,6 +8,7 @@
 // directly. Every edit that fails leaves the scene and the prepared surface as they were and
 // returns the positioned message ("" on success).
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -108,6 +109,7 @@ class WebSession {
   Camera dragStart_;
   std::optional<PreparedSurface> surface_;
   Scene preparedScene_;  // the scene surface_ was prepared from
+  mutable std::unique_ptr<SurfaceProbe> probe_;  // surface_'s, made at its first probe
   GpuHierarchy gpu_;
   std::vector<float> params_;
   std::string importNotes_;

@@ -25,14 +25,17 @@ bool HoverProbe::update(const Scene& scene, double x, double y, int width, int h
     level_ = scene.level;
     ParseResult parsed = parseSceneFormula(scene);
     formula_.reset();
-    if (auto* f = std::get_if<Formula>(&parsed)) formula_ = std::move(*f);
+    probe_.reset();
+    if (auto* f = std::get_if<Formula>(&parsed)) {
+      formula_ = std::move(*f);
+      probe_ = std::make_unique<SurfaceProbe>(*formula_);
+    }
   }
-  if (!formula_) {
+  if (!probe_) {
     clear();
     return false;
   }
-  auto result = probePixel(*formula_, paramValues(scene, formula_->graph), scene, width, height,
-                           px, py);
+  auto result = probe_->pixel(paramValues(scene, formula_->graph), scene, width, height, px, py);
   if (auto* r = std::get_if<ProbeResult>(&result); r && r->hit) {
     shown_ = *r;
     return true;

@@ -3,6 +3,7 @@
 // puts out a tooltip with the point the cursor's ray first meets, F's normal there and the
 // curvatures K, H, k1, k2 (src/probe, the numbers `zeroset probe` prints). Probes again only
 // when the cursor moves to another pixel or the scene changes.
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -28,6 +29,7 @@ class HoverProbe {
   std::string formulaText_;  // what formula_ was parsed from, with level_
   double level_ = 0;
   std::optional<Formula> formula_;
+  std::unique_ptr<SurfaceProbe> probe_;  // formula_'s, made when it changes
   Scene lastScene_;
   int lastX_ = -1, lastY_ = -1, lastW_ = 0, lastH_ = 0;
   std::optional<ProbeResult> shown_;
