@@ -165,10 +165,7 @@ function buildParams() {
   box.dataset.names = names;
   box.replaceChildren();
   for (const p of params) {
-    if (!paramRanges.has(p.name)) {
-      const half = Math.max(1, Math.abs(p.value));  // as the desktop viewer's sliders
-      paramRanges.set(p.name, [p.value - half, p.value + half]);
-    }
+    if (!paramRanges.has(p.name)) paramRanges.set(p.name, [p.lo, p.hi]);  // src/interact
     const [lo, hi] = paramRanges.get(p.name);
     const row = document.createElement('div');
     row.className = 'param';

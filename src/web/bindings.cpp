@@ -4,6 +4,7 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include "interact/parameter_range.hpp"
 #include "web/web_session.hpp"
 
 using emscripten::val;
@@ -90,6 +91,9 @@ val paramsJs(const WebSession& s) {
     val p = val::object();
     p.set("name", param.first);
     p.set("value", param.second);
+    const auto [lo, hi] = interact::paramRange(param.second);
+    p.set("lo", lo);
+    p.set("hi", hi);
     return p;
   });
 }

@@ -15,6 +15,7 @@
 #include "interact/key_bindings.hpp"
 #include "parser/parser.hpp"
 #include "scene/scene_io.hpp"
+#include "interact/parameter_range.hpp"
 
 namespace zs::app {
 // The camera motions and key actions are the interact stage's, shared with the web page.
@@ -151,11 +152,6 @@ double sweepStep(double value, double lo, double hi, double dt, double seconds, 
     direction = 1;
   }
   return v;
-}
-
-std::pair<double, double> paramRange(double value) {
-  const double half = std::max(1.0, std::abs(value));
-  return {value - half, value + half};
 }
 
 void checkFormulaText(PanelState& state) {

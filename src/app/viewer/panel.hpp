@@ -56,9 +56,6 @@ PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats);
 // Re-parses `state.formula` and fills state.formulaError ("" when it parses).
 void checkFormulaText(PanelState& state);
 
-// Slider bounds for a parameter's value: value ± max(1, |value|).
-std::pair<double, double> paramRange(double value);
-
 // One step of a play button's sweep: `value` moves by `dt / seconds` of the range [lo, hi]
 // in `direction` (+1 or -1) and turns back at either end, so a full sweep up and down takes
 // 2 * seconds. Returns the new value; `direction` is flipped at a bound.

@@ -8,6 +8,7 @@
 #include "app/repl/scene_edit.hpp"
 #include "app/viewer/viewer.hpp"
 #include "parser/parser.hpp"
+#include "interact/parameter_range.hpp"
 
 namespace zs::app {
 namespace {
@@ -94,7 +95,7 @@ void Viewer::takeBuild() {
         panel_.paramNames = names;
         panel_.paramRanges.clear();
         panel_.playing.clear();  // a new surface's parameters start at rest
-        for (double v : surface.params) panel_.paramRanges.push_back(paramRange(v));
+        for (double v : surface.params) panel_.paramRanges.push_back(interact::paramRange(v));
       }
       // Every parameter gets an entry, so the sliders edit it and a save records it.
       for (std::size_t i = 0; i < names.size(); ++i) {
