@@ -2,6 +2,8 @@
 
 #include <iostream>
 
+#include "interpreter/interpreter_glsl.hpp"
+
 namespace zs {
 
 std::string loadSurface(RayTracer& tracer, const PreparedSurface& surface) {
@@ -11,6 +13,22 @@ std::string loadSurface(RayTracer& tracer, const PreparedSurface& surface) {
     return "error: " + err + "\n";
   }
   tracer.setParams(surface.paramsAsFloats());
+  return {};
+}
+
+std::string buildInterpreter(RayTracer& tracer, bool sampling) {
+  std::string log;
+  if (!tracer.build(vertexShaderSource(ShaderDialect::Gl330), interpreterFragmentShader(sampling),
+                    log))
+    return log;
+  return {};
+}
+
+std::string loadQuickSurface(RayTracer& tracer, const QuickSurface& surface) {
+  if (std::string err = tracer.setTape(surface.tape.texels); !err.empty()) return "error: " + err + "\n";
+  if (std::string err = tracer.setHierarchy(surface.hierarchy.packed()); !err.empty())
+    return "error: " + err + "\n";
+  tracer.setParams(std::vector<float>(surface.params.begin(), surface.params.end()));
   return {};
 }
 

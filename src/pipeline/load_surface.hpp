@@ -6,6 +6,7 @@
 #include <string>
 
 #include "pipeline/pipeline.hpp"
+#include "pipeline/quick_surface.hpp"
 #include "render/gl_context.hpp"
 #include "render/ray_tracer.hpp"
 
@@ -13,6 +14,13 @@ namespace zs {
 
 // "" on success; otherwise text ready to print (the driver's log, or "error: ...").
 std::string loadSurface(RayTracer& tracer, const PreparedSurface& surface);
+
+// A tracer running the tape interpreter's program for `sampling` (compiled on the first call,
+// then kept: every formula after it draws without a compile). "" on success.
+std::string buildInterpreter(RayTracer& tracer, bool sampling);
+// Puts a quick surface's tape, hierarchy and parameter values into a tracer built by
+// buildInterpreter. "" on success.
+std::string loadQuickSurface(RayTracer& tracer, const QuickSurface& surface);
 
 // A headless context, current, and a tracer made on it with a surface loaded: what the
 // commands that write pictures start from. The tracer is declared last, so it goes first,

@@ -85,6 +85,7 @@ FrameUniforms frameUniforms(const RenderSettings& s, const Domain& clip, const F
   u.integer("rtHierarchy", 0);
   u.integer("rtBeam", 1);    // its own unit: never aliases the hierarchy's
   u.integer("rtBeamOn", 0);  // the tracer turns it on after a beam pass
+  u.integer("zs_tape", 2);   // a tape interpreter's program (interpreter/gpu_tape.hpp)
   u.integer("rtNodeCount", hierarchy.count);
   u.integer("rtFirstNode", hierarchy.rootIsLeaf ? 0 : 1);
   u.vec3("rtRootMin", hierarchy.rootMin);

@@ -22,6 +22,8 @@ RayTracer::RayTracer() : preferred_(ProgramVariant::of(RenderSettings{})) {
 RayTracer::~RayTracer() {
   if (nodeTexture_) glDeleteTextures(1, &nodeTexture_);
   if (nodeBuffer_) glDeleteBuffers(1, &nodeBuffer_);
+  if (tapeTexture_) glDeleteTextures(1, &tapeTexture_);
+  if (tapeBuffer_) glDeleteBuffers(1, &tapeBuffer_);
   glDeleteVertexArrays(1, &vao_);
 }
 
@@ -56,6 +58,21 @@ std::string RayTracer::setHierarchy(std::span<const float> packed) {
   glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32UI, nodeBuffer_);
   glBindBuffer(GL_TEXTURE_BUFFER, 0);
   hierarchy_ = std::move(gpu);
+  return {};
+}
+
+std::string RayTracer::setTape(std::span<const std::uint32_t> texels) {
+  GLint maxTexels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+  if (texels.empty() || texels.size() % 4 != 0 || GLint(texels.size() / 4) > maxTexels)
+    return "tape: " + std::to_string(texels.size() / 4) + " texels do not fit a buffer texture";
+  if (!tapeBuffer_) glGenBuffers(1, &tapeBuffer_);
+  if (!tapeTexture_) glGenTextures(1, &tapeTexture_);
+  glBindBuffer(GL_TEXTURE_BUFFER, tapeBuffer_);
+  glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(texels.size() * 4), texels.data(), GL_STATIC_DRAW);
+  glBindTexture(GL_TEXTURE_BUFFER, tapeTexture_);
+  glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32UI, tapeBuffer_);
+  glBindBuffer(GL_TEXTURE_BUFFER, 0);
   return {};
 }
 
@@ -126,6 +143,10 @@ std::string RayTracer::prepare(const RenderSettings& settings, const Domain& dom
 }
 
 void RayTracer::setDrawState(int width, int height) {
+  if (tapeTexture_) {
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_BUFFER, tapeTexture_);
+  }
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_BUFFER, nodeTexture_);
   glBindVertexArray(vao_);

@@ -10,6 +10,7 @@
 // found it: programs (program_cache.hpp), offscreen target (offscreen_target.hpp), beam pass
 // and tile skipping (beam_pass.hpp), curvature probe and read-back (frame_readback.hpp),
 // uniform values (frame_uniforms.hpp).
+#include <cstdint>
 #include <functional>
 #include <span>
 #include <string>
@@ -55,6 +56,9 @@ class RayTracer {
   // The 12-float-per-node hierarchy; "" on success, else why it was rejected (the previous
   // hierarchy stays). Nothing is hit until a hierarchy is set.
   std::string setHierarchy(std::span<const float> packed);
+  // The tape a tape interpreter's shader runs (interpreter/gpu_tape.hpp): its texels, read
+  // as `zs_tape` on texture unit 2; "" on success. Ignored by a formula's own shader.
+  std::string setTape(std::span<const std::uint32_t> texels);
   // Values of `uniform float zs_params[K]`, in declaration order; ignored when the formula
   // has no parameters (the driver then reports no such uniform).
   void setParams(std::span<const float> params);
@@ -111,6 +115,7 @@ class RayTracer {
   ProgramCache programs_;
   unsigned program_ = 0, vao_ = 0;  // program_: the frame's, in use while a frame is drawn
   unsigned nodeBuffer_ = 0, nodeTexture_ = 0;
+  unsigned tapeBuffer_ = 0, tapeTexture_ = 0;
   ProgramVariant preferred_;  // what build() compiles first: the variant of the last frame
   double curvatureRange_ = 0;
   OffscreenTarget target_;
