@@ -37,10 +37,12 @@ void zs_FAffine(vec3 o, vec3 d, float tm, float h, out vec3 F, out vec2 D, out b
       r = zsa_scale(a, d[k]);
     } else if (code == ZS_TAPE_MULK) {
       r = zsa_mulk(a, b);
+#ifdef ZS_TAPE_EVERY_OPERATION
     } else if (code == ZS_TAPE_SINCOS) {
       vec4 cosine;
       zsa_sincos(a, r, cosine);
       zs_affine[k] = cosine;
+#endif
     } else {  // ZS_TAPE_SETTLE
       r = zsa_settle(a, float(k));
     }

@@ -7,11 +7,13 @@
 // failed, so CI notices a benchmark that no longer runs.
 // `zeroset bench INPUT [--set KEY=VALUE]... [--size WxH] [--frames N]`: one formula or
 // scene, both methods side by side, a Markdown table on stdout.
+// `zeroset bench --typing FORMULA [INPUT] [--size WxH]`: typing latency (typing_bench.hpp).
 #include <filesystem>
 #include <iostream>
 
 #include "app/bench/bench_report.hpp"
 #include "app/bench/fps_plot.hpp"
+#include "app/bench/typing_bench.hpp"
 #include "app/commands.hpp"
 #include "app/text_output.hpp"
 #include "app/scene_args.hpp"
@@ -29,6 +31,7 @@ struct BenchArgs {
   std::string plan = "full";
   std::string out = "bench-results";
   std::string backend = "egl";
+  std::string typing;  // --typing FORMULA
 };
 
 int runInput(const BenchArgs& args, const bench::BenchOptions& options) {
@@ -66,6 +69,21 @@ int runBench(const BenchArgs& args) {
   if (!parseBackend(args.backend, options.backend)) {
     std::cerr << "error: unknown backend '" << args.backend << "'\nhint: egl or osmesa\n";
     return 1;
+  }
+  if (!args.typing.empty()) {
+    // The scene's settings (INPUT, or the defaults) with the formula typed into it.
+    std::optional<Scene> scene = Scene{};
+    if (!args.scene.input.empty()) scene = loadSceneArgs(args.scene);
+    if (!scene) return 1;
+    scene->width = options.width;
+    scene->height = options.height;
+    const bench::TypingResults results = bench::runTypingBench(*scene, args.typing, options);
+    if (!results.error.empty()) {
+      std::cerr << "error: " << results.error << "\n";
+      return 1;
+    }
+    std::cout << bench::typingReport(results);
+    return 0;
   }
   if (!args.scene.input.empty()) return runInput(args, options);
   options.outDir = args.out;
@@ -126,6 +144,10 @@ void addBenchCommand(CLI::App& app) {
   cmd->add_option("--out", args->out,
                   "directory for the thesis plan's reports (default bench-results); with INPUT "
                   "the table goes to stdout");
+  cmd->add_option("--typing", args->typing,
+                  "replay typing FORMULA one character at a time: per keystroke, the time to "
+                  "the first picture (tape interpreter) and to the final one (the formula's own "
+                  "shader); INPUT, if given, supplies the scene's other settings");
   cmd->add_option("--backend", args->backend, "egl (default) or osmesa")
       ->check(CLI::IsMember({"egl", "osmesa"}));
   cmd->callback([args] { std::exit(runBench(*args)); });

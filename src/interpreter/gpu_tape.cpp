@@ -197,6 +197,16 @@ bool emitAffineProgram(const AffineProgram& ap, std::vector<std::uint32_t>& texe
 
 }  // namespace
 
+bool isPolynomialOp(Op op) {
+  switch (op) {
+    case Op::Const: case Op::VarX: case Op::VarY: case Op::VarZ: case Op::Param: case Op::Neg:
+    case Op::Add: case Op::Sub: case Op::Mul: case Op::PowI:
+      return true;
+    default:
+      return false;
+  }
+}
+
 std::variant<GpuTape, std::string> encodeGpuTape(const Graph& g, NodeId f,
                                                  const std::array<NodeId, 3>& grad) {
   if (g.params().size() > std::size_t(kTapeMaxParams))
@@ -209,6 +219,8 @@ std::variant<GpuTape, std::string> encodeGpuTape(const Graph& g, NodeId f,
   const char* tooMany = "more values are live at once than the tape interpreter has registers";
 
   std::vector<std::uint32_t> fOut, gradOut, affineOut;
+  for (NodeId id : reachable(g, {f, grad[0], grad[1], grad[2]}))
+    tape.polynomialOnly = tape.polynomialOnly && isPolynomialOp(g[id].op);
   const std::uint32_t fBegin = here();
   if (!emitPointProgram(g, {f}, f, t, fOut, tape.pointRegisters)) return tooMany;
   const std::uint32_t gradBegin = here();

@@ -38,8 +38,12 @@ inline constexpr std::uint32_t kTapeDerivativeBit = 1u << 31;  // flags go to th
 // after the F program, of F and dF/dt after the affine program, the parameter count.
 inline constexpr int kTapeHeaderTexels = 4;
 
+// The operations of polynomials: constants, x, y, z, parameters, -, +, *, integer powers.
+bool isPolynomialOp(Op op);
+
 struct GpuTape {
   std::vector<std::uint32_t> texels;  // 4 words per texel
+  bool polynomialOnly = true;  // every operation isPolynomialOp (interpreter_glsl.hpp)
   int pointRegisters = 0, affineRegisters = 0;  // the most live at once
   int instructions() const { return int(texels.size() / 4) - kTapeHeaderTexels; }
 };

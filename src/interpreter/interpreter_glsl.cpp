@@ -35,7 +35,7 @@ std::string tapeConstants() {
 }
 
 // zs_tapeOp: every opcode's point statement, spelled as the formula block spells it.
-std::string pointDispatch() {
+std::string pointDispatch(bool polynomialOnly) {
   std::string s =
       "// One operation at a point; flag: set where it is undefined (the formula block's "
       "zs_u).\n"
@@ -43,6 +43,7 @@ std::string pointDispatch() {
       "  switch (code) {\n";
   for (int i = 0; i < kOpCount; ++i) {
     const Op op = static_cast<Op>(i);
+    if (polynomialOnly && !isPolynomialOp(op)) continue;
     std::string rhs;
     switch (op) {
       case Op::Const: rhs = "uintBitsToFloat(w)"; break;
@@ -60,7 +61,7 @@ std::string pointDispatch() {
 }
 
 // zs_tapeAffineRule: every non-leaf opcode's affine rule, as the interval block writes it.
-std::string affineDispatch() {
+std::string affineDispatch(bool polynomialOnly) {
   std::string s =
       "// One operation's affine rule (the generated interval block's zsa_* call); k: PowI's "
       "exponent.\n"
@@ -68,7 +69,7 @@ std::string affineDispatch() {
       "  switch (code) {\n";
   for (int i = 0; i < kOpCount; ++i) {
     const Op op = static_cast<Op>(i);
-    if (isLeaf(op)) continue;
+    if (isLeaf(op) || (polynomialOnly && !isPolynomialOp(op))) continue;
     std::string rhs;
     if (op == Op::PowI) {
       // The exponent is data here: both of the emitter's choices, chosen at run time.
@@ -106,15 +107,16 @@ const char* kPowi = R"(float zs_tapePowi(float base, int k, inout bool flag) {
 
 }  // namespace
 
-std::string interpreterFragmentShader(bool sampling, ShaderDialect dialect) {
+std::string interpreterFragmentShader(bool sampling, bool polynomialOnly, ShaderDialect dialect) {
   GlslFormula formula;
   formula.paramCount = kTapeMaxParams;
   formula.source = "// zeroset tape interpreter block (src/interpreter): any formula, from its tape.\n";
   formula.source += "uniform float zs_params[" + std::to_string(kTapeMaxParams) + "];\n";
-  formula.source += tapeConstants() + kPowi + pointDispatch();
+  formula.source += tapeConstants() + kPowi + pointDispatch(polynomialOnly);
+  if (!polynomialOnly) formula.source += "#define ZS_TAPE_EVERY_OPERATION\n";
   formula.source += shaderTemplate(kTapePointTemplate);
   if (sampling) return assembleFragmentShader(formula, {}, dialect);
-  IntervalGlsl interval{affineDispatch() + std::string(shaderTemplate(kTapeAffineTemplate))};
+  IntervalGlsl interval{affineDispatch(polynomialOnly) + std::string(shaderTemplate(kTapeAffineTemplate))};
   return assembleFragmentShader(formula, interval, {}, dialect);
 }
 

@@ -13,9 +13,13 @@
 
 namespace zs {
 
-// The interpreter's fragment shader for `method`: the interval march for the exact methods
-// (Bernstein and interval: the first picture of a polynomial is exact either way), the
-// thesis' sampling march for sampling.
-std::string interpreterFragmentShader(bool sampling, ShaderDialect dialect = ShaderDialect::Gl330);
+// The interpreter's fragment shader: the interval march for the exact methods (Bernstein and
+// interval: the first picture of a polynomial is exact either way), the thesis' sampling
+// march for `sampling`. `polynomialOnly` leaves out every operation but those of polynomials
+// (isPolynomialOp): a software rasterizer such as llvmpipe runs every branch of the
+// dispatch for every instruction, so a dispatch with fewer operations runs a polynomial's
+// tape several times faster; GpuTape::polynomialOnly says which of the two a tape needs.
+std::string interpreterFragmentShader(bool sampling, bool polynomialOnly,
+                                      ShaderDialect dialect = ShaderDialect::Gl330);
 
 }  // namespace zs

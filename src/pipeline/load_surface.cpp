@@ -16,10 +16,10 @@ std::string loadSurface(RayTracer& tracer, const PreparedSurface& surface) {
   return {};
 }
 
-std::string buildInterpreter(RayTracer& tracer, bool sampling) {
+std::string buildInterpreter(RayTracer& tracer, bool sampling, bool polynomialOnly) {
   std::string log;
-  if (!tracer.build(vertexShaderSource(ShaderDialect::Gl330), interpreterFragmentShader(sampling),
-                    log))
+  if (!tracer.build(vertexShaderSource(ShaderDialect::Gl330),
+                    interpreterFragmentShader(sampling, polynomialOnly), log))
     return log;
   return {};
 }

@@ -15,9 +15,10 @@ namespace zs {
 // "" on success; otherwise text ready to print (the driver's log, or "error: ...").
 std::string loadSurface(RayTracer& tracer, const PreparedSurface& surface);
 
-// A tracer running the tape interpreter's program for `sampling` (compiled on the first call,
-// then kept: every formula after it draws without a compile). "" on success.
-std::string buildInterpreter(RayTracer& tracer, bool sampling);
+// A tracer running the tape interpreter's program for `sampling` and `polynomialOnly`
+// (interpreter_glsl.hpp; compiled on the first call, then kept: every formula after it draws
+// without a compile). "" on success.
+std::string buildInterpreter(RayTracer& tracer, bool sampling, bool polynomialOnly);
 // Puts a quick surface's tape, hierarchy and parameter values into a tracer built by
 // buildInterpreter. "" on success.
 std::string loadQuickSurface(RayTracer& tracer, const QuickSurface& surface);

@@ -14,6 +14,22 @@
 #include "render/frame_readback.hpp"
 
 namespace zs {
+namespace {
+
+// Fills the bound GL_TEXTURE_BUFFER with `texels` (4 words each), padded with zeros to a
+// power of two of texels. Software rasterizers key their compiled shaders on whether a
+// texture's size is a power of two (llvmpipe does): a hierarchy or tape of another size
+// would otherwise make the same program compile again, a pause of up to a second. Also
+// never a zero-size store, which is not a valid texture-buffer source.
+void uploadPowerOfTwo(std::span<const std::uint32_t> texels) {
+  std::size_t count = 1;
+  while (count < texels.size() / 4) count *= 2;
+  std::vector<std::uint32_t> padded(count * 4, 0);
+  std::copy(texels.begin(), texels.end(), padded.begin());
+  glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(padded.size() * 4), padded.data(), GL_STATIC_DRAW);
+}
+
+}  // namespace
 
 RayTracer::RayTracer() : preferred_(ProgramVariant::of(RenderSettings{})) {
   glGenVertexArrays(1, &vao_);
@@ -49,11 +65,7 @@ std::string RayTracer::setHierarchy(std::span<const float> packed) {
   if (!nodeBuffer_) glGenBuffers(1, &nodeBuffer_);
   if (!nodeTexture_) glGenTextures(1, &nodeTexture_);
   glBindBuffer(GL_TEXTURE_BUFFER, nodeBuffer_);
-  // A zero-size buffer store is not a valid texture-buffer source: keep one dummy texel.
-  static const std::uint32_t dummy[4] = {};
-  const void* data = gpu.texels.empty() ? static_cast<const void*>(dummy) : gpu.texels.data();
-  glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(std::max<std::size_t>(gpu.texels.size(), 4) * 4),
-               data, GL_STATIC_DRAW);
+  uploadPowerOfTwo(gpu.texels);
   glBindTexture(GL_TEXTURE_BUFFER, nodeTexture_);
   glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32UI, nodeBuffer_);
   glBindBuffer(GL_TEXTURE_BUFFER, 0);
@@ -69,7 +81,7 @@ std::string RayTracer::setTape(std::span<const std::uint32_t> texels) {
   if (!tapeBuffer_) glGenBuffers(1, &tapeBuffer_);
   if (!tapeTexture_) glGenTextures(1, &tapeTexture_);
   glBindBuffer(GL_TEXTURE_BUFFER, tapeBuffer_);
-  glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(texels.size() * 4), texels.data(), GL_STATIC_DRAW);
+  uploadPowerOfTwo(texels);
   glBindTexture(GL_TEXTURE_BUFFER, tapeTexture_);
   glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32UI, tapeBuffer_);
   glBindBuffer(GL_TEXTURE_BUFFER, 0);

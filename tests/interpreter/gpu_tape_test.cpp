@@ -70,13 +70,22 @@ TEST(GpuTape, UndefinedConstantIsFlaggedInBothPrograms) {
 
 TEST(InterpreterShader, EveryMethodAndDialectValidates) {
   for (bool sampling : {false, true}) {
-    for (ShaderDialect dialect : {ShaderDialect::Gl330, ShaderDialect::Es300}) {
-      const ValidationResult r =
-          validateGlsl(interpreterFragmentShader(sampling, dialect), Stage::Fragment);
-      EXPECT_TRUE(r.ok) << (sampling ? "sampling " : "interval ")
-                        << (dialect == ShaderDialect::Es300 ? "ES" : "GL") << "\n" << r.log;
+    for (bool polynomialOnly : {false, true}) {
+      for (ShaderDialect dialect : {ShaderDialect::Gl330, ShaderDialect::Es300}) {
+        const ValidationResult r = validateGlsl(
+            interpreterFragmentShader(sampling, polynomialOnly, dialect), Stage::Fragment);
+        EXPECT_TRUE(r.ok) << (sampling ? "sampling " : "interval ")
+                          << (polynomialOnly ? "polynomial " : "every operation ")
+                          << (dialect == ShaderDialect::Es300 ? "ES" : "GL") << "\n" << r.log;
+      }
     }
   }
+}
+
+TEST(GpuTape, SaysWhetherOnlyPolynomialOperationsOccur) {
+  EXPECT_TRUE(tapeOf("a*x^2-y^-3+z*y").polynomialOnly);
+  EXPECT_FALSE(tapeOf("x^2+y^2-sin(z)").polynomialOnly);
+  EXPECT_FALSE(tapeOf("x/y+z").polynomialOnly);
 }
 
 }  // namespace

@@ -23,6 +23,8 @@ struct Case {
 // mulk), sin/cos pairs, settled chains, interval-only rules, domain errors, negative powers.
 const Case kCases[] = {
     {"sphere", "x^2+y^2+z^2-1"},
+    {"double_plane", "x^2"},
+    {"plane", "x"},
     {"torus", "(x^2+y^2+z^2+0.36-0.25)^2-1.44*(x^2+y^2)"},
     {"gyroid", "sin(3x)cos(3y)+sin(3y)cos(3z)+sin(3z)cos(3x)"},
     {"domains", "sqrt(x^2+y^2)-0.5+0.2*z^3+log(z+1.4)/5"},
@@ -56,11 +58,12 @@ TEST_P(InterpreterPicture, MatchesTheFormulasOwnShader) {
   const Frame expected = own.render(settings, scene.domain, size, size);
   ASSERT_EQ(expected.error, "");
 
-  // One interpreter per method for the whole process, as the viewer keeps it.
-  static RayTracer interpreters[2];
+  // One interpreter per kind for the whole process, as the front ends keep them.
+  static RayTracer interpreters[2][2];
   const bool sampling = std::get<QuickSurface>(quick).sampling;
-  RayTracer& interpreter = interpreters[sampling ? 1 : 0];
-  ASSERT_EQ(buildInterpreter(interpreter, sampling), "");
+  const bool polynomial = std::get<QuickSurface>(quick).tape.polynomialOnly;
+  RayTracer& interpreter = interpreters[sampling][polynomial];
+  ASSERT_EQ(buildInterpreter(interpreter, sampling, polynomial), "");
   ASSERT_EQ(loadQuickSurface(interpreter, std::get<QuickSurface>(quick)), "");
   const Frame actual = interpreter.render(settings, scene.domain, size, size);
   ASSERT_EQ(actual.error, "");

@@ -22,7 +22,7 @@
 #include "app/viewer/panel.hpp"
 #include "app/viewer/hover_probe.hpp"
 #include "app/viewer/surface_view.hpp"
-#include "app/viewer/surface_worker.hpp"
+#include "app/surface_worker.hpp"
 #include "render/glfw_context.hpp"
 
 namespace zs::app {

@@ -1,12 +1,12 @@
 // One long-lived worker thread; prepareSurface itself fans the octree out over every core.
-#include "app/viewer/surface_worker.hpp"
+#include "app/surface_worker.hpp"
 
 #include <chrono>
 
 namespace zs::app {
 
-SurfaceWorker::SurfaceWorker(std::function<void()> wake)
-    : wake_(std::move(wake)), thread_([this] { run(); }) {}
+SurfaceWorker::SurfaceWorker(std::function<void()> wake, WarmUp warmUp)
+    : wake_(std::move(wake)), warmUp_(std::move(warmUp)), thread_([this] { run(); }) {}
 
 SurfaceWorker::~SurfaceWorker() {
   {
@@ -58,6 +58,9 @@ void SurfaceWorker::run() {
     running_ = true;
     lock.unlock();
     auto surface = prepareSurface(scene);
+    if (warmUp_) {
+      if (const auto* built = std::get_if<PreparedSurface>(&surface)) warmUp_(scene, *built);
+    }
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     lock.lock();

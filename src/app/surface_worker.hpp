@@ -2,7 +2,10 @@
 // Builds surfaces off the main thread, so the window never freezes: takes Scenes, runs
 // prepareSurface (parse, octree, box hierarchy, GLSL, glslang: CPU only) on one worker
 // thread, and puts out the finished surface or its error text, tagged with the request's
-// id. Latest wins: a request that has not started yet is replaced by a newer one, so
+// id. An optional warm-up step runs on the same thread after each build: the front ends
+// compile and draw the new shader there in a GL context of the worker's own, so the driver's
+// shader cache holds the compiled program before the main thread asks for it (its compile
+// then takes milliseconds, and the picture drawn meanwhile keeps moving). Latest wins: a request that has not started yet is replaced by a newer one, so
 // dragging a slider queues at most one build behind the running one.
 #include <chrono>
 #include <condition_variable>
@@ -30,7 +33,10 @@ class SurfaceWorker {
 
   // `wake` runs on the worker thread after each result (the viewer posts an empty GLFW
   // event so its event wait returns at once).
-  explicit SurfaceWorker(std::function<void()> wake);
+  // Runs on the worker thread after a build that succeeded, before its result is handed out.
+  using WarmUp = std::function<void(const Scene&, const PreparedSurface&)>;
+
+  explicit SurfaceWorker(std::function<void()> wake, WarmUp warmUp = {});
   ~SurfaceWorker();  // waits for a running build to finish; queued ones are dropped
   SurfaceWorker(const SurfaceWorker&) = delete;
   SurfaceWorker& operator=(const SurfaceWorker&) = delete;
@@ -45,6 +51,7 @@ class SurfaceWorker {
   void run();
 
   std::function<void()> wake_;
+  WarmUp warmUp_;
   mutable std::mutex mutex_;
   std::condition_variable cv_;
   std::optional<std::pair<std::uint64_t, Scene>> queued_;

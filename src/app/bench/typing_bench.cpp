@@ -1,0 +1,176 @@
+#include "app/bench/typing_bench.hpp"
+
+#include <glad/gl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <thread>
+
+#include "app/surface_worker.hpp"
+#include "pipeline/load_surface.hpp"
+#include "pipeline/quick_surface.hpp"
+#include "render/gl_context.hpp"
+#include "render/ray_tracer.hpp"
+
+namespace zs::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// The worker's half: the new formula's shader compiled and drawn once, small, into the same
+// kind of offscreen target the main thread draws to, so the driver's shader cache holds the
+// very program (variant and target formats included) the main thread then asks for.
+class WarmUp {
+ public:
+  explicit WarmUp(Backend backend) : backend_(backend) {}
+  void operator()(const Scene& scene, const PreparedSurface& surface) {
+    if (!context_) {
+      ContextResult ctx = createHeadlessContext(backend_);
+      if (!ctx.context) return;  // no warm-up: the main thread compiles it all
+      context_ = std::move(ctx.context);
+      tracer_ = std::make_unique<RayTracer>();
+    }
+    if (!loadSurface(*tracer_, surface).empty()) return;
+    tracer_->drawOffscreen(scene.render, scene.domain, 16, 16);
+    glFinish();
+  }
+
+ private:
+  Backend backend_;
+  std::unique_ptr<GlContext> context_;
+  std::unique_ptr<RayTracer> tracer_;  // after the context: destroyed first
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+}  // namespace
+
+TypingResults runTypingBench(const Scene& base, const std::string& formula,
+                             const BenchOptions& options) {
+  TypingResults out;
+  out.width = options.width;
+  out.height = options.height;
+  out.firstWidth = std::max(1, options.width / 2);
+  out.firstHeight = std::max(1, options.height / 2);
+  ContextResult ctx = createHeadlessContext(options.backend);
+  if (!ctx.context) {
+    out.error = ctx.error;
+    return out;
+  }
+  // What a front end does once at start: both interpreters of the scene's method (the
+  // polynomial one and the one for every operation) compiled and drawn.
+  const bool sampling = base.render.tracing.method == TracingMethod::Sampling;
+  RayTracer interpreters[2];  // [polynomialOnly]
+  auto start = Clock::now();
+  for (const char* warmFormula : {"x^2+y^2+z^2-1", "x^2", "x^2+y^2+z^2-1+sin(x)/9"}) {
+    Scene warm = base;
+    warm.formula = warmFormula;
+    auto quick = prepareQuickSurface(warm);
+    if (auto* err = std::get_if<std::string>(&quick)) {
+      out.error = "the tape interpreter cannot draw this scene: " + *err;
+      return out;
+    }
+    const QuickSurface& q = std::get<QuickSurface>(quick);
+    RayTracer& interpreter = interpreters[q.tape.polynomialOnly];
+    if (std::string err = buildInterpreter(interpreter, sampling, q.tape.polynomialOnly);
+        !err.empty()) {
+      out.error = err;
+      return out;
+    }
+    loadQuickSurface(interpreter, q);
+    interpreter.drawOffscreen(warm.render, warm.domain, out.firstWidth, out.firstHeight);
+    glFinish();
+  }
+  out.interpreterMs = msSince(start);
+
+  RayTracer own;
+  auto warm = std::make_shared<WarmUp>(options.backend);
+  app::SurfaceWorker worker({}, [warm](const Scene& s, const PreparedSurface& p) { (*warm)(s, p); });
+  ctx.context->makeCurrent();  // the worker's context loads its own entry points
+  Scene scene = base;
+  for (std::size_t n = 1; n <= formula.size(); ++n) {
+    Keystroke key;
+    key.text = formula.substr(0, n);
+    scene.formula = key.text;
+    start = Clock::now();
+    auto quick = prepareQuickSurface(scene);
+    if (auto* err = std::get_if<std::string>(&quick)) {
+      key.note = err->substr(0, err->find('\n'));
+      out.keys.push_back(key);
+      continue;
+    }
+    key.quickCpuMs = std::get<QuickSurface>(quick).prepareMs;
+    RayTracer& interpreter = interpreters[std::get<QuickSurface>(quick).tape.polynomialOnly];
+    std::string error = loadQuickSurface(interpreter, std::get<QuickSurface>(quick));
+    if (error.empty())
+      error = interpreter.drawOffscreen(scene.render, scene.domain, out.firstWidth, out.firstHeight);
+    glFinish();
+    key.firstMs = msSince(start);
+    const std::uint64_t id = worker.submit(scene);
+    std::optional<app::SurfaceWorker::Result> result;
+    while (!(result = worker.take()) || result->id != id)
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    if (auto* err = std::get_if<std::string>(&result->surface)) {
+      key.note = err->substr(0, err->find('\n'));
+      out.keys.push_back(key);
+      continue;
+    }
+    ctx.context->makeCurrent();
+    if (error.empty()) error = loadSurface(own, std::get<PreparedSurface>(result->surface));
+    if (error.empty()) error = own.drawOffscreen(scene.render, scene.domain, out.width, out.height);
+    glFinish();
+    key.finalMs = msSince(start);
+    key.drawn = error.empty();
+    key.note = error.substr(0, error.find('\n'));
+    out.keys.push_back(key);
+  }
+  return out;
+}
+
+std::string typingReport(const TypingResults& r) {
+  std::string s;
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "Typing, one character at a time: first picture by the tape interpreter at %dx%d, "
+                "final picture by the formula's own shader at %dx%d (compiled and warmed on a "
+                "worker thread). The interpreters (polynomial and every operation) were compiled once before typing: %.0f ms.\n\n",
+                r.firstWidth, r.firstHeight, r.width, r.height, r.interpreterMs);
+  s += line;
+  s += "| Typed | First picture ms | of which CPU ms | Final picture ms | Note |\n"
+       "|---|---:|---:|---:|---|\n";
+  std::vector<double> first, final;
+  for (const Keystroke& k : r.keys) {
+    if (k.drawn) {
+      first.push_back(k.firstMs);
+      final.push_back(k.finalMs);
+      std::snprintf(line, sizeof line, "| `%s` | %.1f | %.1f | %.1f | %s |\n", k.text.c_str(),
+                    k.firstMs, k.quickCpuMs, k.finalMs, k.note.c_str());
+    } else {
+      std::snprintf(line, sizeof line, "| `%s` | | | | not drawn: %s |\n", k.text.c_str(),
+                    k.note.c_str());
+    }
+    s += line;
+  }
+  auto maxOf = [](const std::vector<double>& v) {
+    return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
+  };
+  std::snprintf(line, sizeof line,
+                "\n%zu of %zu keystrokes drawn.\n\ntyping: first picture median %.0f ms, max %.0f ms\n"
+                "typing: final picture median %.0f ms, max %.0f ms\n",
+                first.size(), r.keys.size(), median(first), maxOf(first), median(final),
+                maxOf(final));
+  return s + line;
+}
+
+}  // namespace zs::bench
