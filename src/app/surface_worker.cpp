@@ -5,8 +5,13 @@
 
 namespace zs::app {
 
-SurfaceWorker::SurfaceWorker(std::function<void()> wake, WarmUp warmUp)
-    : wake_(std::move(wake)), warmUp_(std::move(warmUp)), thread_([this] { run(); }) {}
+SurfaceWorker::SurfaceWorker(std::function<void()> wake, WarmUp warmUp,
+                             std::function<void()> idle, std::function<void()> stop)
+    : wake_(std::move(wake)),
+      warmUp_(std::move(warmUp)),
+      idleHook_(std::move(idle)),
+      stopHook_(std::move(stop)),
+      thread_([this] { run(); }) {}
 
 SurfaceWorker::~SurfaceWorker() {
   {
@@ -51,7 +56,11 @@ void SurfaceWorker::run() {
   std::unique_lock lock(mutex_);
   for (;;) {
     cv_.wait(lock, [this] { return stop_ || queued_.has_value(); });
-    if (stop_) return;
+    if (stop_) {
+      lock.unlock();
+      if (stopHook_) stopHook_();
+      return;
+    }
     auto [id, scene] = std::move(*queued_);
     queued_.reset();
     const auto start = queuedAt_;
@@ -68,6 +77,7 @@ void SurfaceWorker::run() {
     done_ = Result{id, std::move(scene), std::move(surface), ms};
     lock.unlock();
     if (wake_) wake_();
+    if (idleHook_) idleHook_();
     lock.lock();
   }
 }

@@ -32,6 +32,39 @@ std::string loadQuickSurface(RayTracer& tracer, const QuickSurface& surface) {
   return {};
 }
 
+std::string TapeInterpreters::warm(bool sampling, const Scene& base, const Draw& draw) {
+  // A sphere (polynomial), "x^2" seen edge-on (a view with nothing in it) and a sphere with a
+  // sine in it (every operation).
+  for (const char* formula : {"x^2+y^2+z^2-1", "x^2", "x^2+y^2+z^2-1+sin(x)/9"}) {
+    Scene scene = base;
+    scene.formula = formula;
+    scene.render.tracing.method = sampling ? TracingMethod::Sampling : TracingMethod::Interval;
+    if (needsCurvature(scene.render.shading.color)) scene.render.shading.color = ColorMode::Material;
+    scene.render.singular.enabled = false;
+    auto quick = prepareQuickSurface(scene);
+    if (auto* err = std::get_if<std::string>(&quick)) return *err;
+    const QuickSurface& q = std::get<QuickSurface>(quick);
+    auto& tracer = tracers_[sampling][q.tape.polynomialOnly];
+    if (!tracer) tracer = std::make_unique<RayTracer>();
+    if (std::string err = buildInterpreter(*tracer, sampling, q.tape.polynomialOnly); !err.empty())
+      return err;
+    if (std::string err = loadQuickSurface(*tracer, q); !err.empty()) return err;
+    draw(*tracer, scene);
+  }
+  warmed_[sampling] = true;
+  return {};
+}
+
+RayTracer* TapeInterpreters::load(const QuickSurface& surface, std::string& error) {
+  RayTracer* tracer = tracers_[surface.sampling][surface.tape.polynomialOnly].get();
+  if (!warmed_[surface.sampling] || !tracer) {
+    error = "the tape interpreter is not ready yet";
+    return nullptr;
+  }
+  error = loadQuickSurface(*tracer, surface);
+  return error.empty() ? tracer : nullptr;
+}
+
 HeadlessTracer openHeadlessTracer(Backend backend, const PreparedSurface& surface) {
   ContextResult ctx = createHeadlessContext(backend);
   if (!ctx.context) {

@@ -2,6 +2,8 @@
 // The hand-over from the CPU half to the GPU half: takes a PreparedSurface and a RayTracer
 // on a current context, puts the program (rebuilt only when the shader text changed), the
 // packed box hierarchy and the parameter values into the tracer.
+#include <array>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -22,6 +24,26 @@ std::string buildInterpreter(RayTracer& tracer, bool sampling, bool polynomialOn
 // Puts a quick surface's tape, hierarchy and parameter values into a tracer built by
 // buildInterpreter. "" on success.
 std::string loadQuickSurface(RayTracer& tracer, const QuickSurface& surface);
+
+// The tape interpreters a front end keeps, one per method kind and dispatch, each a tracer
+// on the context current when it was made.
+class TapeInterpreters {
+ public:
+  using Draw = std::function<void(RayTracer&, const Scene&)>;
+  // Compiles both interpreters for `sampling` (a software rasterizer JITs a program at its
+  // first draw) and draws each through `draw` with the pictures that select every program
+  // variant a first picture uses: a surface, and a view that shows none. `base` gives the
+  // settings. What a front end does once, before the first keystroke. "" on success.
+  std::string warm(bool sampling, const Scene& base, const Draw& draw);
+  bool warmed(bool sampling) const { return warmed_[sampling]; }
+  // The warmed interpreter that runs `surface`, loaded with it; null with `error` set when
+  // none is warmed for it or the load failed.
+  RayTracer* load(const QuickSurface& surface, std::string& error);
+
+ private:
+  std::array<std::array<std::unique_ptr<RayTracer>, 2>, 2> tracers_;  // [sampling][polynomial]
+  std::array<bool, 2> warmed_{};
+};
 
 // A headless context, current, and a tracer made on it with a surface loaded: what the
 // commands that write pictures start from. The tracer is declared last, so it goes first,

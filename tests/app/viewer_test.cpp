@@ -149,7 +149,24 @@ TEST(Viewer, FormulaTypedInThePanelReplacesTheSurface) {
   }
   EXPECT_GT(red, 30) << "the parse error is shown under the formula";
   EXPECT_LT(changed(hyperboloid, v.screenshot()), 0.001);
-  EXPECT_EQ(loadSaved(v.save()).formula, "x^2 + y^2 - z^2 - 0.3");
+  EXPECT_EQ(loadSaved(v.save()).formula, "x^2 + y^2 - z^2 - 0.3") << v.log();
+}
+
+TEST(Viewer, TypedFormulaShowsAFirstPictureBeforeItsOwnShader) {
+  ViewerSession v("first_picture", {"x^2 + y^2 + z^2 - 1", "--log"});
+  START(v);
+  // The surface worker compiles the tape interpreters after the first build; typing before
+  // that only waits for the build, so wait for a picture of the first formula first.
+  const Image sphere = v.screenshot();
+  v.key("f");
+  v.key("ctrl+a");
+  v.type("x^2 + y^2 - z^2 - 0.3");
+  // Each prefix that parses is drawn by the interpreter; the last one's own shader follows.
+  ASSERT_FALSE(v.waitLog("first picture x^2 + y^2 - z^2 - 0.3").empty()) << v.log();
+  ASSERT_FALSE(v.waitLog("built x^2 + y^2 - z^2 - 0.3").empty()) << v.log();
+  v.click(200, 16);  // out of the formula box, so C takes a screenshot
+  const Image hyperboloid = v.screenshot();
+  EXPECT_GT(changed(sphere, hyperboloid), 0.05);
 }
 
 TEST(Viewer, SavedViewRendersLikeTheWindow) {

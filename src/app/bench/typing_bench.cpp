@@ -68,29 +68,19 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
     out.error = ctx.error;
     return out;
   }
-  // What a front end does once at start: both interpreters of the scene's method (the
-  // polynomial one and the one for every operation) compiled and drawn.
+  // What a front end does once at start: the interpreters of the scene's method compiled
+  // and drawn.
   const bool sampling = base.render.tracing.method == TracingMethod::Sampling;
-  RayTracer interpreters[2];  // [polynomialOnly]
+  TapeInterpreters interpreters;
   auto start = Clock::now();
-  for (const char* warmFormula : {"x^2+y^2+z^2-1", "x^2", "x^2+y^2+z^2-1+sin(x)/9"}) {
-    Scene warm = base;
-    warm.formula = warmFormula;
-    auto quick = prepareQuickSurface(warm);
-    if (auto* err = std::get_if<std::string>(&quick)) {
-      out.error = "the tape interpreter cannot draw this scene: " + *err;
-      return out;
-    }
-    const QuickSurface& q = std::get<QuickSurface>(quick);
-    RayTracer& interpreter = interpreters[q.tape.polynomialOnly];
-    if (std::string err = buildInterpreter(interpreter, sampling, q.tape.polynomialOnly);
-        !err.empty()) {
-      out.error = err;
-      return out;
-    }
-    loadQuickSurface(interpreter, q);
-    interpreter.drawOffscreen(warm.render, warm.domain, out.firstWidth, out.firstHeight);
-    glFinish();
+  const std::string warmError =
+      interpreters.warm(sampling, base, [&](RayTracer& tracer, const Scene& scene) {
+        tracer.drawOffscreen(scene.render, scene.domain, out.firstWidth, out.firstHeight);
+        glFinish();
+      });
+  if (!warmError.empty()) {
+    out.error = "the tape interpreter cannot draw this scene: " + warmError;
+    return out;
   }
   out.interpreterMs = msSince(start);
 
@@ -111,10 +101,9 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
       continue;
     }
     key.quickCpuMs = std::get<QuickSurface>(quick).prepareMs;
-    RayTracer& interpreter = interpreters[std::get<QuickSurface>(quick).tape.polynomialOnly];
-    std::string error = loadQuickSurface(interpreter, std::get<QuickSurface>(quick));
-    if (error.empty())
-      error = interpreter.drawOffscreen(scene.render, scene.domain, out.firstWidth, out.firstHeight);
+    std::string error;
+    if (RayTracer* interpreter = interpreters.load(std::get<QuickSurface>(quick), error))
+      error = interpreter->drawOffscreen(scene.render, scene.domain, out.firstWidth, out.firstHeight);
     glFinish();
     key.firstMs = msSince(start);
     const std::uint64_t id = worker.submit(scene);

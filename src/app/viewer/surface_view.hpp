@@ -5,28 +5,41 @@
 // window frame just blits it (and the panel draws on top). While the user drags, the trace
 // runs at 1/scale of the window's resolution into a second, smaller target that the blit
 // stretches, so llvmpipe keeps up; when the drag ends the full-resolution image replaces it.
-// Needs the window's GL context current for its whole life.
+// A new formula's first picture comes from the tape interpreter (docs/interpreter.md) until
+// its own surface is uploaded. Needs the window's GL context current for its whole life.
 #include <span>
 #include <string>
 
+#include "pipeline/load_surface.hpp"
 #include "pipeline/pipeline.hpp"
 #include "render/ray_tracer.hpp"
+#include "render/view_target.hpp"
 
 namespace zs::app {
 
 class SurfaceView {
  public:
   SurfaceView() = default;
-  ~SurfaceView();
   SurfaceView(const SurfaceView&) = delete;
   SurfaceView& operator=(const SurfaceView&) = delete;
 
   // Compiles the shaders (skipped when their text equals the current program's: a new
   // parameter value or octree level changes only the hierarchy), then sets the hierarchy
   // and the parameters. "" on success; on failure the previous surface stays.
-  std::string upload(const PreparedSurface& surface);
-  void setParams(std::span<const float> params) { tracer_.setParams(params); }
-  bool ready() const { return tracer_.ready(); }
+  // The surface's own program replaces a first picture only when `endsQuick`.
+  std::string upload(const PreparedSurface& surface, bool endsQuick = true);
+  void setParams(std::span<const float> params);
+  bool ready() const { return tracer_.ready() || quick_; }
+
+  // The interpreters compiled for this kind of method (fast once the surface worker's
+  // ShaderWarmer has compiled them: the driver's cache holds them).
+  void warmInterpreters(const Scene& scene);
+  bool interpretersWarm(bool sampling) const { return interpreters_.warmed(sampling); }
+  // Draws `surface` with the tape interpreter from the next trace on, until an upload that
+  // ends it; false (nothing changes) when no interpreter is ready for it.
+  bool showQuick(const QuickSurface& surface);
+  void endQuick() { quick_ = nullptr; }
+  bool showingQuick() const { return quick_ != nullptr; }
 
   // Traces into the target for `scale` (1 = full resolution) of a width x height window
   // framebuffer and waits for it; returns the time the trace took in milliseconds.
@@ -36,23 +49,20 @@ class SurfaceView {
   void present(int width, int height);
   int presentedScale() const { return lastScale_; }
   // The curvature coloring's range in the latest trace (0 for the other colorings).
-  double curvatureRange() const { return tracer_.curvatureRange(); }
+  double curvatureRange() const { return current().curvatureRange(); }
   bool hasImage() const { return lastScale_ > 0; }
 
   // A clean full-resolution frame (no panel), for screenshots.
   Frame screenshot(const RenderSettings& settings, const Domain& domain, int width, int height);
 
  private:
-  struct Target {
-    unsigned fbo = 0, color = 0;
-    unsigned stencil = 0;  // the tracer's tile skipping marks tiles off in it
-    int width = 0, height = 0;
-  };
-  bool ensure(Target& target, int width, int height);
-  static void release(Target& target);
+  RayTracer& current() { return quick_ ? *quick_ : tracer_; }
+  const RayTracer& current() const { return quick_ ? *quick_ : tracer_; }
 
   RayTracer tracer_;
-  Target full_, reduced_;
+  TapeInterpreters interpreters_;
+  RayTracer* quick_ = nullptr;  // the interpreter drawing a first picture, or none
+  ViewTarget full_, reduced_, warmTarget_;
   int lastScale_ = 0;  // which target holds the latest image; 0 = none yet
 };
 

@@ -52,7 +52,12 @@ std::unique_ptr<Viewer> Viewer::open(const ViewerOptions& options, std::string& 
   v->imguiReady_ = true;
 
   v->examples_ = listExamples(findExamplesDir());
-  v->worker_ = std::make_unique<SurfaceWorker>([] { glfwPostEmptyEvent(); });
+  v->warmer_ = std::make_shared<ShaderWarmer>();
+  v->worker_ = std::make_unique<SurfaceWorker>(
+      [] { glfwPostEmptyEvent(); },
+      [warmer = v->warmer_](const Scene& s, const PreparedSurface& p) { warmer->warm(s, p); },
+      [warmer = v->warmer_] { warmer->warmInterpreters(); },
+      [warmer = v->warmer_] { warmer->stop(); });
   v->setScene(options.scene, {});
   v->sceneFile_ = options.sceneFile;
   if (options.exampleIndex >= 0 && std::size_t(options.exampleIndex) < v->examples_.size()) {
@@ -118,15 +123,18 @@ void Viewer::traceIfNeeded(int width, int height) {
   stats_.width = width;
   stats_.height = height;
   const bool moving = interacting();
+  // A first picture (tape interpreter) is drawn at half resolution and not refined: the
+  // formula's own shader follows and draws the full one.
+  const bool quick = view_->showingQuick();
   int scale = 0;
-  if (dirty_) scale = moving ? reducedScale(width, height) : 1;
-  else if (refine_ && !moving) scale = 1;
+  if (dirty_) scale = moving ? reducedScale(width, height) : quick ? 2 : 1;
+  else if (refine_ && !moving && !quick) scale = 1;
   if (scale == 0) return;
   RenderSettings settings = scene_.render;
   if (scale > 1) settings.samples = 1;  // a moving preview needs no supersampling
   const double ms = view_->trace(settings, scene_.domain, width, height, scale);
   const double samples = double(settings.samples) * settings.samples;
-  msPerPixel_ = ms / (double(width / scale) * double(height / scale) * samples);
+  if (!quick) msPerPixel_ = ms / (double(width / scale) * double(height / scale) * samples);
   stats_.traceMs = ms;
   stats_.traceScale = scale;
   stats_.curvatureRange = view_->curvatureRange();
@@ -145,6 +153,7 @@ void Viewer::frame() {
   // Waiting for the worker is done in glfwWaitEvents: it posts an event when it finishes.
   const bool outputReady = !waiting_.empty() && !worker_->busy() && !buildAt_;
   const bool busy = dirty_ || uiFrames_ > 0 || outputReady;
+  releaseHeldKeys();
   if (busy) {
     glfwPollEvents();
   } else if (refine_ || buildAt_) {
@@ -152,8 +161,13 @@ void Viewer::frame() {
   } else {
     glfwWaitEventsTimeout(0.5);
   }
+  holdQuickKeys();
   runPending();
   takeBuild();
+  // Once the worker has compiled the interpreters, the window's compile of them is quick.
+  const bool sampling = scene_.render.tracing.method == TracingMethod::Sampling;
+  if (!view_->interpretersWarm(sampling) && warmer_->interpretersWarm(sampling))
+    view_->warmInterpreters(scene_);
   if (buildAt_ && Clock::now() >= *buildAt_) applyTypedFormula();
 
   int width = 0, height = 0;
@@ -193,8 +207,9 @@ void Viewer::frame() {
   if (scene_ != before) onSceneEdited(before);
   if ((panel.formulaEdited || panel.formulaSubmitted) && panel_.formulaError.empty() &&
       panel_.formula != scene_.formula) {
-    // Enter builds at once; while typing, a pause of 350 ms does (each valid prefix would
-    // otherwise queue a build and a shader compile).
+    // Every valid prefix shows at once through the tape interpreter. Enter builds at once;
+    // while typing, a pause of 150 ms does (the worker builds the latest request only).
+    showFirstPicture();
     if (panel.formulaSubmitted) applyTypedFormula();
     else buildAt_ = Clock::now() + std::chrono::milliseconds(350);
   }

@@ -21,6 +21,7 @@
 #include "interact/key_bindings.hpp"
 #include "app/viewer/panel.hpp"
 #include "app/viewer/hover_probe.hpp"
+#include "app/viewer/shader_warmer.hpp"
 #include "app/viewer/surface_view.hpp"
 #include "app/surface_worker.hpp"
 #include "render/glfw_context.hpp"
@@ -81,11 +82,19 @@ class Viewer {
   // starts a build or marks a redraw. "" or the refusal.
   std::string onSceneEdited(const Scene& before);
   void applyTypedFormula();
+  // The typed formula's first picture by the tape interpreter, while its build runs.
+  void showFirstPicture();
   void setScene(const Scene& scene, const std::string& exampleName);
 
   // viewer_input.cpp: GLFW callbacks and key actions
   void installCallbacks();
   void onKey(int key, int mods);
+  // Dear ImGui (1.86) reads each key as held or not at the start of a frame, so a key pressed
+  // and released within one event poll (a slow frame: a first picture, a big trace) would
+  // never reach the panel: Enter and Ctrl+A in the formula box were lost. Such keys are held
+  // down for one frame.
+  void holdQuickKeys();    // after polling events
+  void releaseHeldKeys();  // before the next poll
   void onMouseButton(int button, int action);
   void onCursor(double x, double y);
   void onScroll(double dy);
@@ -109,6 +118,7 @@ class Viewer {
   ViewerOptions options_;
   std::unique_ptr<GlfwWindowContext> window_;
   std::unique_ptr<SurfaceView> view_;
+  std::shared_ptr<ShaderWarmer> warmer_;  // the worker's second job (shader_warmer.hpp)
   std::unique_ptr<SurfaceWorker> worker_;
   bool imguiReady_ = false;
 
@@ -129,6 +139,8 @@ class Viewer {
   bool dirty_ = true, refine_ = false;
   int uiFrames_ = 3;  // frames still to draw for ImGui to settle after an event
   std::optional<std::chrono::steady_clock::time_point> buildAt_;  // debounced formula build
+  std::string quickFormula_;
+  std::vector<int> pressedSincePoll_, heldKeys_;  // holdQuickKeys  // the formula of the first picture on screen, "" if none
   std::chrono::steady_clock::time_point lastWheel_{};
   double msPerPixel_ = 0;  // from the latest trace, to pick the reduced scale
   bool sliderActive_ = false, readyPrinted_ = false;

@@ -8,6 +8,7 @@
 #include "app/repl/scene_edit.hpp"
 #include "app/viewer/viewer.hpp"
 #include "parser/parser.hpp"
+#include "pipeline/quick_surface.hpp"
 #include "interact/parameter_range.hpp"
 
 namespace zs::app {
@@ -25,6 +26,8 @@ bool needsBuild(const Scene& a, const Scene& b) {
 }  // namespace
 
 void Viewer::setScene(const Scene& scene, const std::string& exampleName) {
+  view_->endQuick();
+  quickFormula_.clear();
   scene_ = scene;
   loaded_ = scene;
   panel_.formula = scene.formula;
@@ -40,6 +43,21 @@ void Viewer::applyTypedFormula() {
   const Scene prior = scene_;
   scene_.formula = panel_.formula;
   onSceneEdited(prior);
+}
+
+void Viewer::showFirstPicture() {
+  Scene typed = scene_;
+  typed.formula = panel_.formula;
+  auto quick = prepareQuickSurface(typed);
+  const auto* surface = std::get_if<QuickSurface>(&quick);
+  if (!surface || !view_->showQuick(*surface)) return;  // the build will show it
+  quickFormula_ = typed.formula;
+  dirty_ = true;
+  uncounted_ = true;
+  if (options_.log) {
+    std::printf("first picture %s\n", typed.formula.c_str());
+    std::fflush(stdout);
+  }
 }
 
 void Viewer::requestBuild() {
@@ -84,7 +102,10 @@ void Viewer::takeBuild() {
     error = *err;
   } else {
     const PreparedSurface& surface = std::get<PreparedSurface>(result->surface);
-    error = view_->upload(surface);
+    // A first picture of a newer formula stays until that formula's own build arrives.
+    const bool endsQuick = quickFormula_.empty() || result->scene.formula == quickFormula_;
+    error = view_->upload(surface, endsQuick);
+    if (error.empty() && endsQuick) quickFormula_.clear();
     if (error.empty()) {
       built_ = result->scene;
       hasSurface_ = true;
@@ -114,6 +135,8 @@ void Viewer::takeBuild() {
   }
   if (latest) lastBuildError_ = error;
   if (!error.empty() && latest) {
+    view_->endQuick();
+    quickFormula_.clear();
     // The last good surface stays on screen, and the scene goes back to it.
     scene_.formula = built_.formula;
     scene_.params = built_.params;

@@ -20,6 +20,7 @@ Viewer* self(GLFWwindow* window) { return static_cast<Viewer*>(glfwGetWindowUser
 void Viewer::installCallbacks() {
   GLFWwindow* w = window_->window();
   glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int mods) {
+    if (action == GLFW_PRESS && key >= 0 && key < 512) self(win)->pressedSincePoll_.push_back(key);
     if (action == GLFW_PRESS || action == GLFW_REPEAT) self(win)->onKey(key, mods);
     self(win)->uiFrames_ = 3;
   });
@@ -31,6 +32,34 @@ void Viewer::installCallbacks() {
   glfwSetCharCallback(w, [](GLFWwindow* win, unsigned) { self(win)->uiFrames_ = 3; });
   glfwSetWindowRefreshCallback(w, [](GLFWwindow* win) { self(win)->uiFrames_ = 3; });
   glfwSetFramebufferSizeCallback(w, [](GLFWwindow* win, int, int) { self(win)->dirty_ = true; });
+}
+
+void Viewer::holdQuickKeys() {
+  ImGuiIO& io = ImGui::GetIO();
+  for (int key : pressedSincePoll_) {
+    if (!io.KeysDown[key]) {
+      io.KeysDown[key] = true;
+      heldKeys_.push_back(key);
+    }
+  }
+  pressedSincePoll_.clear();
+  if (heldKeys_.empty()) return;
+  io.KeyCtrl = io.KeysDown[GLFW_KEY_LEFT_CONTROL] || io.KeysDown[GLFW_KEY_RIGHT_CONTROL];
+  io.KeyShift = io.KeysDown[GLFW_KEY_LEFT_SHIFT] || io.KeysDown[GLFW_KEY_RIGHT_SHIFT];
+  io.KeyAlt = io.KeysDown[GLFW_KEY_LEFT_ALT] || io.KeysDown[GLFW_KEY_RIGHT_ALT];
+  io.KeySuper = io.KeysDown[GLFW_KEY_LEFT_SUPER] || io.KeysDown[GLFW_KEY_RIGHT_SUPER];
+}
+
+void Viewer::releaseHeldKeys() {
+  if (heldKeys_.empty()) return;
+  ImGuiIO& io = ImGui::GetIO();
+  GLFWwindow* w = window_->window();
+  for (int key : heldKeys_) io.KeysDown[key] = glfwGetKey(w, key) == GLFW_PRESS;
+  heldKeys_.clear();
+  io.KeyCtrl = io.KeysDown[GLFW_KEY_LEFT_CONTROL] || io.KeysDown[GLFW_KEY_RIGHT_CONTROL];
+  io.KeyShift = io.KeysDown[GLFW_KEY_LEFT_SHIFT] || io.KeysDown[GLFW_KEY_RIGHT_SHIFT];
+  io.KeyAlt = io.KeysDown[GLFW_KEY_LEFT_ALT] || io.KeysDown[GLFW_KEY_RIGHT_ALT];
+  io.KeySuper = io.KeysDown[GLFW_KEY_LEFT_SUPER] || io.KeysDown[GLFW_KEY_RIGHT_SUPER];
 }
 
 void Viewer::onKey(int key, int mods) {

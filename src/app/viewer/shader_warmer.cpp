@@ -1,0 +1,62 @@
+#include "app/viewer/shader_warmer.hpp"
+
+#include <glad/gl.h>
+
+namespace zs::app {
+
+void drawWarmUp(RayTracer& tracer, ViewTarget& target, const Scene& scene) {
+  if (!target.ensure(16, 16)) return;
+  glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());
+  tracer.draw(scene.render, scene.domain, 16, 16);
+  // The reduced-resolution picture of a drag or a first picture draws without
+  // supersampling (viewer.cpp): that variant too, where it differs.
+  if (scene.render.samples > 1) {
+    RenderSettings single = scene.render;
+    single.samples = 1;
+    tracer.draw(single, scene.domain, 16, 16);
+  }
+  glFinish();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+bool ShaderWarmer::ensureContext() {
+  if (context_) return true;
+  if (failed_) return false;
+  ContextResult ctx = createHeadlessContext(Backend::Egl);
+  if (!ctx.context) {
+    failed_ = true;
+    return false;
+  }
+  context_ = std::move(ctx.context);
+  tracer_ = std::make_unique<RayTracer>();
+  target_ = std::make_unique<ViewTarget>();
+  interpreters_ = std::make_unique<TapeInterpreters>();
+  return true;
+}
+
+void ShaderWarmer::warm(const Scene& scene, const PreparedSurface& surface) {
+  if (!ensureContext()) return;
+  last_ = scene;
+  if (loadSurface(*tracer_, surface).empty()) drawWarmUp(*tracer_, *target_, scene);
+}
+
+void ShaderWarmer::warmInterpreters() {
+  if (!context_) return;  // no surface warmed yet, or no headless context
+  const bool sampling = last_.render.tracing.method == TracingMethod::Sampling;
+  if (interpreters_->warmed(sampling)) return;
+  Scene single = last_;
+  single.render.samples = 1;  // first pictures draw without supersampling
+  const std::string error = interpreters_->warm(
+      sampling, single, [&](RayTracer& t, const Scene& s) { drawWarmUp(t, *target_, s); });
+  interpretersWarm_[sampling] = error.empty();
+}
+
+void ShaderWarmer::stop() {
+  if (!context_) return;
+  interpreters_.reset();
+  target_.reset();
+  tracer_.reset();
+  context_.reset();
+}
+
+}  // namespace zs::app
