@@ -59,10 +59,16 @@ function resizeCanvas() {
 }
 
 let uploadedGeneration = -1;
+let quickOnScreen = false;  // the picture shown is a first picture (the tape interpreter's)
+const LINKING = 'linking';  // the formula's own program is still linking in the background
 
-// Compiles and uploads what the prepared surface needs; '' or the message to show.
+// Compiles and uploads what the prepared surface needs; '' or the message to show, or
+// LINKING while a first picture stands in for it.
 function loadSurfaceIntoRenderer() {
-  const log = renderer.use(session.vertexShader(), session.fragmentShader());
+  const entry = renderer.request(session.vertexShader(), session.fragmentShader());
+  if (entry === Renderer.LOST) return Renderer.LOST;
+  if (quickOnScreen && !renderer.ready(entry)) return LINKING;
+  const log = renderer.finish(entry);
   if (log === Renderer.LOST) return Renderer.LOST;
   if (log) {
     return 'internal error: the browser\'s WebGL2 rejected the shader zeroset generated for ' +
@@ -73,7 +79,48 @@ function loadSurfaceIntoRenderer() {
     renderer.uploadHierarchy(h.texels, h.count);
     uploadedGeneration = session.generation();
   }
+  quickOnScreen = false;
   return '';
+}
+
+// The polynomial interpreter links in the background once the first picture is up, so
+// that typing finds it ready (docs/interpreter.md).
+let interpretersRequested = false;
+function requestInterpreters() {
+  if (interpretersRequested) return;
+  interpretersRequested = true;
+  const entry = renderer.request(session.vertexShader(), session.interpreterShaders()[0]);
+  const linked = () => {
+    if (entry === Renderer.LOST) return;
+    if (renderer.ready(entry)) root.dataset.interpreter = 'linked';
+    else setTimeout(linked, 50);
+  };
+  linked();
+}
+
+// The typed formula's first picture by the tape interpreter, drawn at once when its program
+// has linked; the formula's own shader replaces it (redraw).
+function showFirstPicture() {
+  if (!session.prepared() || session.setFormula(formulaInput.value)) return;
+  // The interpreter with every operation is not used here: SwiftShader, the browsers'
+  // software renderer, takes seconds to JIT it.
+  if (session.prepareQuick() || !session.quickPolynomialOnly()) return;  // the build will show it
+  const entry = renderer.request(session.vertexShader(), session.quickFragmentShader());
+  if (entry === Renderer.LOST || !renderer.ready(entry) || renderer.finish(entry)) return;
+  const h = session.quickHierarchy();
+  renderer.uploadHierarchy(h.texels, h.count, 'quick');
+  renderer.uploadTape(session.quickTape());
+  resizeCanvas();
+  quickOnScreen = true;
+  const formula = formulaInput.value;
+  renderer.draw((w, h) => session.quickFrame(w, h), session.frame(1, 1).background, { quick: true })
+    .then((ms) => {
+      if (ms === null) return;
+      statusLine.textContent = `first picture · ${canvas.width}×${canvas.height} · ${ms.toFixed(1)} ms`;
+      root.dataset.firstPicture = formula;
+      root.dataset.firstPictures = String(Number(root.dataset.firstPictures || 0) + 1);
+      root.dataset.firstPictureMs = ms.toFixed(0);
+    });
 }
 
 // Draws the current state; sets "ready" once a full-resolution picture is complete.
@@ -84,6 +131,7 @@ function redraw() {
   const full = scale === 1;
   const error = loadSurfaceIntoRenderer();
   if (error === Renderer.LOST) return;  // the restored context draws again
+  if (error === LINKING) { setTimeout(redraw, 25); return; }  // the first picture stays meanwhile
   if (error) { showError(error); return; }
   const bg = session.frame(1, 1).background;
   pending = renderer.draw((w, h) => session.frame(w, h), bg).then((ms) => {
@@ -93,6 +141,7 @@ function redraw() {
     statusLine.textContent = `${session.method()} · ${canvas.width}×${canvas.height} · ${ms.toFixed(1)} ms`;
     if (full) {
       if (firstPictureMs === null) firstPictureMs = performance.now();
+      requestInterpreters();
       if (errorBox.hidden) setState('ready');
       else root.dataset.zeroset = 'error';
     }
@@ -134,6 +183,7 @@ function applySetting(key, tomlValue) {
 let typingTimer = 0;
 formulaInput.addEventListener('input', () => {
   clearTimeout(typingTimer);
+  if (session) showFirstPicture();
   typingTimer = setTimeout(() => {
     if (!session) return;
     setState('busy');

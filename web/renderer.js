@@ -1,10 +1,13 @@
 // WebGL2 side of the page: compiles the shaders the core assembled (GLSL ES 3.00 from the
 // same templates as the desktop), holds the hierarchy texture, sets the uniforms the core
 // computed for a frame and draws it, in tiles when a frame is slow, so that no single
-// draw runs long enough to trip the browser's GPU watchdog. Recovers a lost context. No
-// scene logic here: every number comes from the core (src/web/web_session.hpp).
+// draw runs long enough to trip the browser's GPU watchdog. Recovers a lost context. Links
+// programs in the background where the browser can (KHR_parallel_shader_compile), so the
+// page keeps drawing a formula's first picture (the tape interpreter's, with its tape and
+// hierarchy in textures of their own) while the formula's own shader compiles. No scene
+// logic here: every number comes from the core (src/web/web_session.hpp).
 
-const NODE_ROW = 1024;  // texels per row of the hierarchy texture (raytrace_sampling.frag.glsl)
+const NODE_ROW = 1024;  // texels per row of the hierarchy and tape textures (the templates' rows)
 const TILE_BUDGET_MS = 40;  // a frame slower than this is drawn in tiles over several tasks
 
 export class Renderer {
@@ -16,6 +19,7 @@ export class Renderer {
     this.programs = new Map();  // vertex + fragment text -> { program, locations }
     this.lost = false;
     this.hierarchy = null;      // the last texels uploaded, to upload again after a loss
+    this.textures = {};         // 'own' and 'quick' hierarchies, 'tape': texture objects
     this.hierarchyGeneration = -1;
     this.lastFrameMs = 0;
     this.drawId = 0;
@@ -43,62 +47,95 @@ export class Renderer {
     this.gl = gl;
     this.programs.clear();
     this.vao = gl.createVertexArray();
-    this.texture = null;
+    this.textures = {};
     this.hierarchyGeneration = -1;
+    this.parallel = gl.getExtension('KHR_parallel_shader_compile');
   }
 
-  // Compiles (or reuses) the program for these sources; returns '' or the driver's log.
-  use(vertex, fragment) {
+  // Starts linking the program for these sources, or finds it; returns its entry, or
+  // Renderer.LOST. The link may still run (ready() says when it is done); finish() waits.
+  request(vertex, fragment) {
     if (this.gl.isContextLost()) return Renderer.LOST;  // restored later: onRestored draws
     const key = vertex + '\u0000' + fragment;
     let entry = this.programs.get(key);
-    if (!entry) {
-      const gl = this.gl;
-      const compile = (type, source) => {
-        const s = gl.createShader(type);
-        gl.shaderSource(s, source);
-        gl.compileShader(s);
-        return s;
-      };
-      const vs = compile(gl.VERTEX_SHADER, vertex);
-      const fs = compile(gl.FRAGMENT_SHADER, fragment);
-      const program = gl.createProgram();
-      gl.attachShader(program, vs);
-      gl.attachShader(program, fs);
-      gl.linkProgram(program);
-      if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
-        if (gl.isContextLost()) return 'the WebGL context was lost';
-        const log = (gl.getShaderInfoLog(vs) || '') + (gl.getShaderInfoLog(fs) || '') +
-                    (gl.getProgramInfoLog(program) || '');
-        gl.deleteProgram(program);
-        gl.deleteShader(vs);
-        gl.deleteShader(fs);
-        return log || 'the shader did not link';
-      }
-      gl.deleteShader(vs);
-      gl.deleteShader(fs);
-      // Keep a few: parameter edits and view changes reuse the program; a new formula or a
-      // new lighting variant makes another.
-      if (this.programs.size >= 6) {
-        const [oldKey, old] = this.programs.entries().next().value;
-        gl.deleteProgram(old.program);
-        this.programs.delete(oldKey);
-      }
-      entry = { program, locations: new Map() };
+    if (entry) {  // most recently used last: the oldest is dropped first
+      this.programs.delete(key);
       this.programs.set(key, entry);
+      return entry;
     }
+    const gl = this.gl;
+    const compile = (type, source) => {
+      const s = gl.createShader(type);
+      gl.shaderSource(s, source);
+      gl.compileShader(s);
+      return s;
+    };
+    const vs = compile(gl.VERTEX_SHADER, vertex);
+    const fs = compile(gl.FRAGMENT_SHADER, fragment);
+    const program = gl.createProgram();
+    gl.attachShader(program, vs);
+    gl.attachShader(program, fs);
+    gl.linkProgram(program);
+    // Keep a few: parameter edits and view changes reuse the program; a new formula or a
+    // new lighting variant makes another; the interpreters' stay in use while typing.
+    if (this.programs.size >= 8) {
+      const [oldKey, old] = this.programs.entries().next().value;
+      gl.deleteProgram(old.program);
+      this.programs.delete(oldKey);
+    }
+    entry = { program, vs, fs, locations: new Map(), log: null };
+    this.programs.set(key, entry);
+    return entry;
+  }
+
+  // Whether the entry's link has finished (always, without the extension).
+  ready(entry) {
+    if (entry === Renderer.LOST || entry.log !== null || !this.parallel) return true;
+    return this.gl.getProgramParameter(entry.program, this.parallel.COMPLETION_STATUS_KHR);
+  }
+
+  // Waits for the link and makes the program current; '' or the driver's log.
+  finish(entry) {
+    if (entry === Renderer.LOST) return Renderer.LOST;
+    const gl = this.gl;
+    if (entry.log === null) {
+      entry.log = '';
+      if (!gl.getProgramParameter(entry.program, gl.LINK_STATUS)) {
+        if (gl.isContextLost()) return 'the WebGL context was lost';
+        entry.log = (gl.getShaderInfoLog(entry.vs) || '') + (gl.getShaderInfoLog(entry.fs) || '') +
+                    (gl.getProgramInfoLog(entry.program) || '') || 'the shader did not link';
+      }
+      gl.deleteShader(entry.vs);
+      gl.deleteShader(entry.fs);
+    }
+    if (entry.log) return entry.log;
     this.current = entry;
     return '';
   }
 
-  uploadHierarchy(texels, count) {
+  // Compiles (or reuses) the program for these sources, waiting for it; '' or the log.
+  use(vertex, fragment) {
+    return this.finish(this.request(vertex, fragment));
+  }
+
+  // The formula's own hierarchy ('own', kept to upload again after a context loss), the
+  // first picture's ('quick') or the interpreter's tape ('tape'): texels in rows.
+  uploadHierarchy(texels, count, which = 'own') {
+    if (which === 'own') this.hierarchy = { texels, count };
+    this.uploadRows(which, texels, count);
+  }
+
+  uploadTape(texels) {
+    this.uploadRows('tape', texels, texels.length / 4);
+  }
+
+  uploadRows(which, texels, count) {
     const gl = this.gl;
-    this.hierarchy = { texels, count };
     const rows = Math.max(1, Math.ceil(count / NODE_ROW));
     const data = new Uint32Array(NODE_ROW * rows * 4);
     data.set(texels.subarray(0, Math.min(texels.length, data.length)));
-    if (!this.texture) this.texture = gl.createTexture();
-    gl.bindTexture(gl.TEXTURE_2D, this.texture);
+    if (!this.textures[which]) this.textures[which] = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, this.textures[which]);
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
@@ -131,21 +168,31 @@ export class Renderer {
     }
   }
 
+  bindTextures(quick) {
+    const gl = this.gl;
+    if (quick) {
+      gl.activeTexture(gl.TEXTURE2);  // zs_tape (render/frame_uniforms.cpp)
+      gl.bindTexture(gl.TEXTURE_2D, this.textures.tape || null);
+    }
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, this.textures[quick ? 'quick' : 'own'] || null);
+  }
+
   // Draws a frame: `frameAt(w, h)` gives the core's uniforms for the drawing-buffer size.
   // Resolves with the milliseconds it took, or null when a newer draw or a lost context
   // superseded it. Slow frames go in horizontal bands, one band per task; `whole` draws one
-  // band (frame-time measurements).
-  async draw(frameAt, background, { whole = false } = {}) {
+  // band (frame-time measurements); `quick` draws with the first picture's textures.
+  async draw(frameAt, background, { whole = false, quick = false } = {}) {
     const id = ++this.drawId;
     if (this.lost) return null;
     const gl = this.gl;
     const w = this.canvas.width, h = this.canvas.height;
     const frame = frameAt(w, h);
     const start = performance.now();
-    gl.useProgram(this.current.program);
+    const program = this.current;
+    gl.useProgram(program.program);
     this.setUniforms(frame.uniforms);
-    gl.activeTexture(gl.TEXTURE0);
-    gl.bindTexture(gl.TEXTURE_2D, this.texture);
+    this.bindTextures(quick);
     gl.bindVertexArray(this.vao);
     gl.disable(gl.DEPTH_TEST);
     gl.disable(gl.BLEND);
@@ -170,10 +217,9 @@ export class Renderer {
         gl.disable(gl.SCISSOR_TEST);
         return null;
       }
-      gl.useProgram(this.current.program);
+      gl.useProgram(program.program);
       gl.bindVertexArray(this.vao);
-      gl.activeTexture(gl.TEXTURE0);
-      gl.bindTexture(gl.TEXTURE_2D, this.texture);
+      this.bindTextures(quick);
       gl.scissor(0, b * bandHeight, w, bandHeight);
       gl.drawArrays(gl.TRIANGLES, 0, frame.vertices);
       // A pixel read waits for the band (finish() need not), so the next band starts only

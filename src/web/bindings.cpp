@@ -40,13 +40,17 @@ std::string applyOverridesJs(WebSession& s, val assignments) {
   return s.applyOverrides(list);
 }
 
-val hierarchyJs(const WebSession& s) {
-  const GpuHierarchy& h = s.hierarchy();
+val hierarchyOf(const GpuHierarchy& h) {
   val out = val::object();
   out.set("texels", typedArrayCopy("Uint32Array", h.texels));
   out.set("count", h.count);
   return out;
 }
+
+val hierarchyJs(const WebSession& s) { return hierarchyOf(s.hierarchy()); }
+val quickHierarchyJs(const WebSession& s) { return hierarchyOf(s.quickHierarchy()); }
+val interpreterShadersJs(const WebSession& s) { return arrayOf(s.interpreterShaders()); }
+val quickTapeJs(const WebSession& s) { return typedArrayCopy("Uint32Array", s.quickTape()); }
 
 const char* kindName(UniformValue::Kind kind) {
   switch (kind) {
@@ -68,8 +72,7 @@ const char* kindName(UniformValue::Kind kind) {
   return "float";
 }
 
-val frameJs(const WebSession& s, int width, int height) {
-  const FrameUniforms frame = s.frame(width, height);
+val frameOf(const WebSession& s, const FrameUniforms& frame) {
   val out = val::object();
   out.set("uniforms", arrayOf(frame.values, [](const UniformValue& u) {
             val entry = val::object();
@@ -84,6 +87,13 @@ val frameJs(const WebSession& s, int width, int height) {
   out.set("vertices", frame.vertices);
   out.set("background", arrayOf(s.scene().render.background));
   return out;
+}
+
+val frameJs(const WebSession& s, int width, int height) {
+  return frameOf(s, s.frame(width, height));
+}
+val quickFrameJs(const WebSession& s, int width, int height) {
+  return frameOf(s, s.quickFrame(width, height));
 }
 
 val paramsJs(const WebSession& s) {
@@ -227,6 +237,14 @@ EMSCRIPTEN_BINDINGS(zeroset) {
       .function("fragmentShader", &WebSession::fragmentShader)
       .function("hierarchy", &hierarchyJs)
       .function("frame", &frameJs)
+      .function("prepareQuick", &WebSession::prepareQuick)
+      .function("quickPrepared", &WebSession::quickPrepared)
+      .function("quickPolynomialOnly", &WebSession::quickPolynomialOnly)
+      .function("quickFragmentShader", &WebSession::quickFragmentShader)
+      .function("quickTape", &quickTapeJs)
+      .function("interpreterShaders", &interpreterShadersJs)
+      .function("quickHierarchy", &quickHierarchyJs)
+      .function("quickFrame", &quickFrameJs)
       .function("beginDrag", &WebSession::beginDrag)
       .function("drag", &WebSession::drag)
       .function("zoom", &WebSession::zoom)

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "interact/arcball.hpp"
+#include "interpreter/interpreter_glsl.hpp"
 #include "jsurf/jsurf.hpp"
 #include "parser/parser.hpp"
 #include "render/program_variant.hpp"
@@ -117,6 +118,60 @@ std::string WebSession::prepare() {
 const std::string& WebSession::vertexShader() const {
   static const std::string none;
   return surface_ ? surface_->vertexShader : none;
+}
+
+std::string WebSession::prepareQuick() {
+  quick_.reset();
+  std::variant<QuickSurface, std::string> result;
+  try {
+    result = prepareQuickSurface(scene_);
+  } catch (const std::exception& e) {
+    return std::string("internal error in zeroset: ") + e.what() + "\n";
+  }
+  if (auto* err = std::get_if<std::string>(&result)) return *err;
+  QuickSurface quick = std::get<QuickSurface>(std::move(result));
+  if (std::string error = toGpuHierarchy(quick.hierarchy.packed(), quickGpu_); !error.empty())
+    return error;
+  quick_ = std::move(quick);
+  return {};
+}
+
+std::string WebSession::quickFragmentShader() const {
+  if (!quick_) return {};
+  return withVariantDefines(
+      interpreterFragmentShader(quick_->sampling, quick_->tape.polynomialOnly, ShaderDialect::Es300),
+      ProgramVariant::of(scene_.render));
+}
+
+std::vector<std::string> WebSession::interpreterShaders() const {
+  const bool sampling = scene_.render.tracing.method == TracingMethod::Sampling;
+  std::vector<std::string> out;
+  for (bool polynomialOnly : {true, false}) {
+    out.push_back(withVariantDefines(
+        interpreterFragmentShader(sampling, polynomialOnly, ShaderDialect::Es300),
+        ProgramVariant::of(scene_.render)));
+  }
+  return out;
+}
+
+const std::vector<std::uint32_t>& WebSession::quickTape() const {
+  static const std::vector<std::uint32_t> none;
+  return quick_ ? quick_->tape.texels : none;
+}
+
+FrameUniforms WebSession::quickFrame(int width, int height) const {
+  FrameInputs in;
+  in.hierarchy = &quickGpu_;
+  std::vector<float> params;
+  if (quick_) params.assign(quick_->params.begin(), quick_->params.end());
+  in.params = params;
+  in.width = width;
+  in.height = height;
+  in.proxy = Proxy::Box;
+  in.curvatureRange = scene_.render.shading.curvatureRange;
+  FrameUniforms frame = frameUniforms(scene_.render, scene_.domain, in);
+  if (!quick_) frame.vertices = 0;
+  return frame;
 }
 
 std::string WebSession::fragmentShader() const {

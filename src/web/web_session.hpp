@@ -17,6 +17,7 @@
 
 #include "interact/key_bindings.hpp"
 #include "pipeline/pipeline.hpp"
+#include "pipeline/quick_surface.hpp"
 #include "probe/probe.hpp"
 #include "render/frame_uniforms.hpp"
 #include "render/hierarchy_gpu.hpp"
@@ -60,6 +61,26 @@ class WebSession {
   bool prepared() const { return surface_.has_value(); }
   // Counts successful prepare() calls: the page uploads the hierarchy when it changes.
   int generation() const { return generation_; }
+
+  // The first picture of the scene's formula by the tape interpreter (docs/interpreter.md),
+  // for the page to show while prepare()'s own shader compiles: "" when it was made, else
+  // why not (the page then waits for prepare()). It changes nothing prepare() made.
+  std::string prepareQuick();
+  bool quickPrepared() const { return quick_.has_value(); }
+  // The quick surface's tape has only polynomial operations (the interpreter with the short
+  // dispatch runs it: interpreterShaders()[0]).
+  bool quickPolynomialOnly() const { return quick_ && quick_->tape.polynomialOnly; }
+  // The interpreter's fragment shader for the quick surface (the same for every formula of
+  // one method kind and dispatch, so the page compiles it once), with the scene's variant.
+  std::string quickFragmentShader() const;
+  // Every interpreter shader the scene's method can use (polynomial dispatch, every
+  // operation), with the scene's variant: what the page compiles in the background ahead of
+  // the first keystroke.
+  std::vector<std::string> interpreterShaders() const;
+  const std::vector<std::uint32_t>& quickTape() const;
+  const GpuHierarchy& quickHierarchy() const { return quickGpu_; }
+  // frame()'s uniforms for the quick surface.
+  FrameUniforms quickFrame(int width, int height) const;
 
   const std::string& vertexShader() const;
   // The fragment shader with the #define lines of the scene's variant (lights, coloring,
@@ -112,6 +133,8 @@ class WebSession {
   mutable std::unique_ptr<SurfaceProbe> probe_;  // surface_'s, made at its first probe
   GpuHierarchy gpu_;
   std::vector<float> params_;
+  std::optional<QuickSurface> quick_;
+  GpuHierarchy quickGpu_;
   std::string importNotes_;
   int generation_ = 0;
 };

@@ -255,6 +255,29 @@ cases['bad-formulas'] = async () => {
   }
 };
 
+// Typing: each keystroke whose text parses shows a first picture (the tape interpreter's)
+// before the formula's own shader, and the last one ends in the formula's own picture.
+cases['typing'] = async () => {
+  const page = await openPage(`formula=${encodeURIComponent('x^2 + y^2 + z^2 - 1')}&size=${SIZE[0]}x${SIZE[1]}`);
+  await settled(page);
+  await snapshot(page, 'sphere');
+  // The interpreter links in the background after the first picture: typing starts after it.
+  await page.waitForFunction(() => document.documentElement.dataset.interpreter === 'linked',
+                             null, { timeout: 30000 });
+  await markBusy(page);
+  await page.fill('#formula', '');
+  await page.type('#formula', 'x^2-z^2-0.3', { delay: 40 });
+  await settled(page);
+  const { count, last, ms } = await page.evaluate(() => ({
+    count: Number(document.documentElement.dataset.firstPictures || 0),
+    last: document.documentElement.dataset.firstPicture,
+    ms: document.documentElement.dataset.firstPictureMs }));
+  console.log(`${count} first pictures, the last of "${last}" in ${ms} ms`);
+  check(count >= 1, 'typing showed no first picture');
+  check((await compareWith(page, { snapshotName: 'sphere' })).differing > 0.1,
+        'the final picture is still the sphere');
+};
+
 cases['bad-file'] = async () => {
   const page = await openPage(`size=${SIZE[0]}x${SIZE[1]}`);
   await settled(page);
