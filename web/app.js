@@ -110,10 +110,14 @@ function showFirstPicture() {
   const h = session.quickHierarchy();
   renderer.uploadHierarchy(h.texels, h.count, 'quick');
   renderer.uploadTape(session.quickTape());
+  // At the drag's reduced size and in one piece: a keystroke's picture is small and done
+  // before the next key, so typing never cancels it half drawn.
+  scale = DRAG_SCALE;
   resizeCanvas();
   quickOnScreen = true;
   const formula = formulaInput.value;
-  renderer.draw((w, h) => session.quickFrame(w, h), session.frame(1, 1).background, { quick: true })
+  renderer.draw((w, h) => session.quickFrame(w, h), session.frame(1, 1).background,
+                { quick: true, whole: true })
     .then((ms) => {
       if (ms === null) return;
       statusLine.textContent = `first picture · ${canvas.width}×${canvas.height} · ${ms.toFixed(1)} ms`;
@@ -189,6 +193,7 @@ formulaInput.addEventListener('input', () => {
     setState('busy');
     const error = session.setFormula(formulaInput.value);
     if (error) { showError(error); return; }
+    scale = 1;  // after a first picture at the reduced size
     prepareAndDraw();
   }, 120);
 });
