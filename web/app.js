@@ -83,11 +83,12 @@ function loadSurfaceIntoRenderer() {
   return '';
 }
 
-// The polynomial interpreter links in the background once the first picture is up, so
-// that typing finds it ready (docs/interpreter.md).
+// The polynomial interpreter links in the background once the formula field gets the focus,
+// so that typing finds it ready (docs/interpreter.md); a visit that never edits the formula
+// never pays for it.
 let interpretersRequested = false;
 function requestInterpreters() {
-  if (interpretersRequested) return;
+  if (interpretersRequested || !session || !session.prepared()) return;
   interpretersRequested = true;
   const entry = renderer.request(session.vertexShader(), session.interpreterShaders()[0]);
   const linked = () => {
@@ -145,7 +146,6 @@ function redraw() {
     statusLine.textContent = `${session.method()} · ${canvas.width}×${canvas.height} · ${ms.toFixed(1)} ms`;
     if (full) {
       if (firstPictureMs === null) firstPictureMs = performance.now();
-      requestInterpreters();
       if (errorBox.hidden) setState('ready');
       else root.dataset.zeroset = 'error';
     }
@@ -185,6 +185,7 @@ function applySetting(key, tomlValue) {
 }
 
 let typingTimer = 0;
+formulaInput.addEventListener('focus', requestInterpreters);
 formulaInput.addEventListener('input', () => {
   clearTimeout(typingTimer);
   if (session) showFirstPicture();

@@ -6,10 +6,9 @@
 namespace zs::app {
 
 SurfaceWorker::SurfaceWorker(std::function<void()> wake, WarmUp warmUp,
-                             std::function<void()> idle, std::function<void()> stop)
+                             std::function<void()> stop)
     : wake_(std::move(wake)),
       warmUp_(std::move(warmUp)),
-      idleHook_(std::move(idle)),
       stopHook_(std::move(stop)),
       thread_([this] { run(); }) {}
 
@@ -77,7 +76,6 @@ void SurfaceWorker::run() {
     done_ = Result{id, std::move(scene), std::move(surface), ms};
     lock.unlock();
     if (wake_) wake_();
-    if (idleHook_) idleHook_();
     lock.lock();
   }
 }

@@ -36,12 +36,10 @@ class SurfaceWorker {
   // Runs on the worker thread after a build that succeeded, before its result is handed out.
   using WarmUp = std::function<void(const Scene&, const PreparedSurface&)>;
 
-  // `idle` runs on the worker thread after a result was handed out, while nothing is queued
-  // (busy() is false meanwhile; a request submitted then waits for it to return). `stop` runs
-  // on the worker thread as it ends (the warm-up's GL objects and context are released on
-  // the thread they are current on).
+  // `stop` runs on the worker thread as it ends (the warm-up's GL objects and context are
+  // released on the thread they are current on).
   explicit SurfaceWorker(std::function<void()> wake, WarmUp warmUp = {},
-                         std::function<void()> idle = {}, std::function<void()> stop = {});
+                         std::function<void()> stop = {});
   ~SurfaceWorker();  // waits for a running build to finish; queued ones are dropped
   SurfaceWorker(const SurfaceWorker&) = delete;
   SurfaceWorker& operator=(const SurfaceWorker&) = delete;
@@ -57,7 +55,7 @@ class SurfaceWorker {
 
   std::function<void()> wake_;
   WarmUp warmUp_;
-  std::function<void()> idleHook_, stopHook_;
+  std::function<void()> stopHook_;
   mutable std::mutex mutex_;
   std::condition_variable cv_;
   std::optional<std::pair<std::uint64_t, Scene>> queued_;

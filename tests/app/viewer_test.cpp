@@ -155,10 +155,11 @@ TEST(Viewer, FormulaTypedInThePanelReplacesTheSurface) {
 TEST(Viewer, TypedFormulaShowsAFirstPictureBeforeItsOwnShader) {
   ViewerSession v("first_picture", {"x^2 + y^2 + z^2 - 1", "--log"});
   START(v);
-  // The surface worker compiles the tape interpreters after the first build; typing before
-  // that only waits for the build, so wait for a picture of the first formula first.
   const Image sphere = v.screenshot();
+  // The formula box's focus has the surface worker compile the tape interpreters; typing
+  // before they are ready only waits for the build.
   v.key("f");
+  ASSERT_FALSE(v.waitLog("first pictures ready").empty()) << v.log();
   v.key("ctrl+a");
   v.type("x^2 + y^2 - z^2 - 0.3");
   // Each prefix that parses is drawn by the interpreter; the last one's own shader follows.

@@ -261,7 +261,8 @@ cases['typing'] = async () => {
   const page = await openPage(`formula=${encodeURIComponent('x^2 + y^2 + z^2 - 1')}&size=${SIZE[0]}x${SIZE[1]}`);
   await settled(page);
   await snapshot(page, 'sphere');
-  // The interpreter links in the background after the first picture: typing starts after it.
+  // The formula field's focus links the interpreter in the background: typing starts after.
+  await page.focus('#formula');
   await page.waitForFunction(() => document.documentElement.dataset.interpreter === 'linked',
                              null, { timeout: 30000 });
   await markBusy(page);

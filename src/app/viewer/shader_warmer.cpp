@@ -30,33 +30,40 @@ bool ShaderWarmer::ensureContext() {
   context_ = std::move(ctx.context);
   tracer_ = std::make_unique<RayTracer>();
   target_ = std::make_unique<ViewTarget>();
-  interpreters_ = std::make_unique<TapeInterpreters>();
   return true;
 }
 
 void ShaderWarmer::warm(const Scene& scene, const PreparedSurface& surface) {
   if (!ensureContext()) return;
-  last_ = scene;
   if (loadSurface(*tracer_, surface).empty()) drawWarmUp(*tracer_, *target_, scene);
 }
 
-void ShaderWarmer::warmInterpreters() {
-  if (!context_) return;  // no surface warmed yet, or no headless context
-  const bool sampling = last_.render.tracing.method == TracingMethod::Sampling;
-  if (interpreters_->warmed(sampling)) return;
-  Scene single = last_;
-  single.render.samples = 1;  // first pictures draw without supersampling
-  const std::string error = interpreters_->warm(
-      sampling, single, [&](RayTracer& t, const Scene& s) { drawWarmUp(t, *target_, s); });
-  interpretersWarm_[sampling] = error.empty();
-}
-
 void ShaderWarmer::stop() {
-  if (!context_) return;
-  interpreters_.reset();
   target_.reset();
   tracer_.reset();
   context_.reset();
+}
+
+void ShaderWarmer::wantInterpreters(const Scene& scene) {
+  if (interpretersThread_.joinable()) return;
+  interpretersThread_ = std::thread([this, scene] {
+    ContextResult ctx = createHeadlessContext(Backend::Egl);
+    if (!ctx.context) return;
+    const bool sampling = scene.render.tracing.method == TracingMethod::Sampling;
+    Scene single = scene;
+    single.render.samples = 1;  // first pictures draw without supersampling
+    {
+      TapeInterpreters interpreters;  // its GL objects go before the context
+      ViewTarget target;
+      const std::string error = interpreters.warm(
+          sampling, single, [&](RayTracer& t, const Scene& s) { drawWarmUp(t, target, s); });
+      interpretersWarm_[sampling] = error.empty();
+    }
+  });
+}
+
+ShaderWarmer::~ShaderWarmer() {
+  if (interpretersThread_.joinable()) interpretersThread_.join();
 }
 
 }  // namespace zs::app

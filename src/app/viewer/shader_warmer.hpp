@@ -3,13 +3,16 @@
 // headless GL context of its own, compile each new surface's program and draw it once, small,
 // into a target of the window's formats (render/view_target.hpp), so the driver's shader
 // cache holds the very program the window asks for next, and the window's compile of it
-// takes milliseconds instead of stopping the picture. At its first surface it warms the
-// tape interpreters (pipeline/load_surface.hpp) the same way, which the window then draws
-// every new formula's first picture with. Without a headless context (no EGL) it does
-// nothing and the window compiles as before.
+// takes milliseconds instead of stopping the picture. When the formula box first gets the
+// focus it warms the tape interpreters (pipeline/load_surface.hpp) the same way, on a thread
+// and context of their own (seconds of JIT on llvmpipe that no build waits for, paid only by
+// a session that edits a formula); the window then draws every new formula's first picture
+// with them. Without a headless context (no EGL) it does nothing and the window compiles as
+// before.
 #include <array>
 #include <atomic>
 #include <memory>
+#include <thread>
 
 #include "pipeline/load_surface.hpp"
 #include "render/gl_context.hpp"
@@ -19,15 +22,21 @@ namespace zs::app {
 
 class ShaderWarmer {
  public:
-  // All on the worker thread. warm: a new surface's program; warmInterpreters: the tape
-  // interpreters for the method of the last surface warmed, once (while the worker is idle:
-  // several seconds of JIT on llvmpipe that no build waits for).
+  ShaderWarmer() = default;
+  ~ShaderWarmer();  // waits for the interpreters' thread
+  ShaderWarmer(const ShaderWarmer&) = delete;
+  ShaderWarmer& operator=(const ShaderWarmer&) = delete;
+
+  // On the surface worker's thread: a new surface's program; the release of every GL object
+  // and the context as the worker ends.
   void warm(const Scene& scene, const PreparedSurface& surface);
-  void warmInterpreters();
-  void stop();  // releases every GL object and the context
+  void stop();
 
   // Whether the interpreters for this kind of method have been warmed (any thread).
   bool interpretersWarm(bool sampling) const { return interpretersWarm_[sampling].load(); }
+  // The user is about to type a formula (the box got the focus): the interpreters for
+  // `scene`'s method are warmed on their own thread, once.
+  void wantInterpreters(const Scene& scene);
 
  private:
   bool ensureContext();
@@ -36,9 +45,9 @@ class ShaderWarmer {
   bool failed_ = false;
   std::unique_ptr<RayTracer> tracer_;
   std::unique_ptr<ViewTarget> target_;
-  std::unique_ptr<TapeInterpreters> interpreters_;
-  Scene last_;  // the scene of the last surface warmed
+  std::thread interpretersThread_;
   std::array<std::atomic<bool>, 2> interpretersWarm_{};
+
 };
 
 // The window's variant of a picture in a ViewTarget of 16 x 16 pixels (the size does not

@@ -56,7 +56,6 @@ std::unique_ptr<Viewer> Viewer::open(const ViewerOptions& options, std::string& 
   v->worker_ = std::make_unique<SurfaceWorker>(
       [] { glfwPostEmptyEvent(); },
       [warmer = v->warmer_](const Scene& s, const PreparedSurface& p) { warmer->warm(s, p); },
-      [warmer = v->warmer_] { warmer->warmInterpreters(); },
       [warmer = v->warmer_] { warmer->stop(); });
   v->setScene(options.scene, {});
   v->sceneFile_ = options.sceneFile;
@@ -166,8 +165,13 @@ void Viewer::frame() {
   takeBuild();
   // Once the worker has compiled the interpreters, the window's compile of them is quick.
   const bool sampling = scene_.render.tracing.method == TracingMethod::Sampling;
-  if (!view_->interpretersWarm(sampling) && warmer_->interpretersWarm(sampling))
+  if (!view_->interpretersWarm(sampling) && warmer_->interpretersWarm(sampling)) {
     view_->warmInterpreters(scene_);
+    if (options_.log) {
+      std::printf("first pictures ready\n");
+      std::fflush(stdout);
+    }
+  }
   if (buildAt_ && Clock::now() >= *buildAt_) applyTypedFormula();
 
   int width = 0, height = 0;
@@ -204,6 +208,11 @@ void Viewer::frame() {
   // A sweeping play button counts as a drag: reduced-resolution traces keep it fluid.
   sliderActive_ = panel.sliderActive || panel.animating;
   if (panel.exportMesh) startMeshExport();
+  // The formula box has the focus: the interpreters for first pictures are wanted now.
+  if (!interpretersAsked_ && ImGui::GetIO().WantTextInput) {
+    interpretersAsked_ = true;
+    warmer_->wantInterpreters(scene_);
+  }
   if (scene_ != before) onSceneEdited(before);
   if ((panel.formulaEdited || panel.formulaSubmitted) && panel_.formulaError.empty() &&
       panel_.formula != scene_.formula) {

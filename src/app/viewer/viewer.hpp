@@ -140,6 +140,7 @@ class Viewer {
   int uiFrames_ = 3;  // frames still to draw for ImGui to settle after an event
   std::optional<std::chrono::steady_clock::time_point> buildAt_;  // debounced formula build
   std::string quickFormula_;
+  bool interpretersAsked_ = false;  // the worker was asked to warm the interpreters
   std::vector<int> pressedSincePoll_, heldKeys_;  // holdQuickKeys  // the formula of the first picture on screen, "" if none
   std::chrono::steady_clock::time_point lastWheel_{};
   double msPerPixel_ = 0;  // from the latest trace, to pick the reduced scale

@@ -59,6 +59,8 @@ void Viewer::runPending() {
           }
           panel_.formula = scene_.formula;
           panel_.formulaError.clear();
+          // The window shows the formula at once while its build runs, as when typed.
+          if (c.kind == PromptCommand::Kind::Formula) showFirstPicture();
         }
         waiting_.push_back({c, std::move(p.reply)});
         break;
