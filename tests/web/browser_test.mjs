@@ -469,9 +469,8 @@ cases['drop-surf-loads'] = async () => {
 // Cases that share one browser in test.sh (a browser's start is a second of a short case).
 const GROUPS = {
   errors: ['bad-formula-keeps-picture', 'bad-url-shows-error-above-default'],
-  files: ['drop-surf-loads', 'bad-file'],
+  'files-and-layouts': ['drop-surf-loads', 'bad-file', 'embed-and-size', 'phone-layout'],
   pointer: ['hover-shows-curvature', 'touch-drag-turns'],
-  layouts: ['embed-and-size', 'phone-layout'],
   panels: ['light-edit-redraws', 'lost-context-recovers'],
 };
 for (const [group, members] of Object.entries(GROUPS)) {
