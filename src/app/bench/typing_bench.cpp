@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "app/surface_worker.hpp"
+#include "interact/trace_budget.hpp"
 #include "pipeline/load_surface.hpp"
 #include "pipeline/quick_surface.hpp"
 #include "render/gl_context.hpp"
@@ -61,8 +62,6 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
   TypingResults out;
   out.width = options.width;
   out.height = options.height;
-  out.firstWidth = std::max(1, options.width / 2);
-  out.firstHeight = std::max(1, options.height / 2);
   ContextResult ctx = createHeadlessContext(options.backend);
   if (!ctx.context) {
     out.error = ctx.error;
@@ -75,7 +74,8 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
   auto start = Clock::now();
   const std::string warmError =
       interpreters.warm(sampling, base, [&](RayTracer& tracer, const Scene& scene) {
-        tracer.drawOffscreen(scene.render, scene.domain, out.firstWidth, out.firstHeight);
+        tracer.drawOffscreen(scene.render, scene.domain, std::max(1, out.width / 2),
+                             std::max(1, out.height / 2));
         glFinish();
       });
   if (!warmError.empty()) {
@@ -89,6 +89,7 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
   app::SurfaceWorker worker({}, [warm](const Scene& s, const PreparedSurface& p) { (*warm)(s, p); });
   ctx.context->makeCurrent();  // the worker's context loads its own entry points
   Scene scene = base;
+  double msPerPixel = 0;  // of the last first picture: picks the next one's size
   for (std::size_t n = 1; n <= formula.size(); ++n) {
     Keystroke key;
     key.text = formula.substr(0, n);
@@ -101,10 +102,17 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
       continue;
     }
     key.quickCpuMs = std::get<QuickSurface>(quick).prepareMs;
+    const int scale = interact::scaleForBudget(
+        msPerPixel, out.width, out.height, interact::kFirstPictureBudgetMs,
+        interact::kFirstPictureMinScale, interact::kFirstPictureMaxScale);
+    key.firstWidth = std::max(1, out.width / scale);
+    key.firstHeight = std::max(1, out.height / scale);
     std::string error;
+    const auto drawStart = Clock::now();
     if (RayTracer* interpreter = interpreters.load(std::get<QuickSurface>(quick), error))
-      error = interpreter->drawOffscreen(scene.render, scene.domain, out.firstWidth, out.firstHeight);
+      error = interpreter->drawOffscreen(scene.render, scene.domain, key.firstWidth, key.firstHeight);
     glFinish();
+    msPerPixel = msSince(drawStart) / (double(key.firstWidth) * key.firstHeight);
     key.firstMs = msSince(start);
     const std::uint64_t id = worker.submit(scene);
     std::optional<app::SurfaceWorker::Result> result;
@@ -131,22 +139,25 @@ std::string typingReport(const TypingResults& r) {
   std::string s;
   char line[512];
   std::snprintf(line, sizeof line,
-                "Typing, one character at a time: first picture by the tape interpreter at %dx%d, "
-                "final picture by the formula's own shader at %dx%d (compiled and warmed on a "
-                "worker thread). The interpreters (polynomial and every operation) were compiled once before typing: %.0f ms.\n\n",
-                r.firstWidth, r.firstHeight, r.width, r.height, r.interpreterMs);
+                "Typing, one character at a time: first picture by the tape interpreter at half "
+                "to a quarter of the size each way (as the viewer picks it from the last first "
+                "picture's cost), final picture by the formula's own shader at %dx%d (compiled "
+                "and warmed on a worker thread). The interpreters (polynomial and every "
+                "operation) were compiled once before typing: %.0f ms.\n\n",
+                r.width, r.height, r.interpreterMs);
   s += line;
-  s += "| Typed | First picture ms | of which CPU ms | Final picture ms | Note |\n"
-       "|---|---:|---:|---:|---|\n";
+  s += "| Typed | First picture ms | its size | of which CPU ms | Final picture ms | Note |\n"
+       "|---|---:|---:|---:|---:|---|\n";
   std::vector<double> first, final;
   for (const Keystroke& k : r.keys) {
     if (k.drawn) {
       first.push_back(k.firstMs);
       final.push_back(k.finalMs);
-      std::snprintf(line, sizeof line, "| `%s` | %.1f | %.1f | %.1f | %s |\n", k.text.c_str(),
-                    k.firstMs, k.quickCpuMs, k.finalMs, k.note.c_str());
+      std::snprintf(line, sizeof line, "| `%s` | %.1f | %dx%d | %.1f | %.1f | %s |\n",
+                    k.text.c_str(), k.firstMs, k.firstWidth, k.firstHeight, k.quickCpuMs,
+                    k.finalMs, k.note.c_str());
     } else {
-      std::snprintf(line, sizeof line, "| `%s` | | | | not drawn: %s |\n", k.text.c_str(),
+      std::snprintf(line, sizeof line, "| `%s` | | | | | not drawn: %s |\n", k.text.c_str(),
                     k.note.c_str());
     }
     s += line;

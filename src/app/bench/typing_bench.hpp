@@ -1,7 +1,8 @@
 #pragma once
 // `zeroset bench --typing FORMULA`: replays typing FORMULA one character at a time, as the
 // viewer handles a keystroke, and times each keystroke to its first picture (the tape
-// interpreter's, src/interpreter, at half the size each way) and to its final picture (the
+// interpreter's, src/interpreter, at half to a quarter of the size each way as the viewer
+// picks it: interact/trace_budget.hpp) and to its final picture (the
 // formula's own shader, compiled and warmed on a worker thread with a context of its own,
 // then drawn at full size). The next key is typed after the final picture, so each
 // keystroke's numbers are its own. Headless, on the backend of the options.
@@ -18,12 +19,13 @@ struct Keystroke {
   bool drawn = false;  // false: the text does not parse yet (the viewer keeps its picture)
   double firstMs = 0, finalMs = 0;
   double quickCpuMs = 0;  // of firstMs: the tape and the shallow hierarchy on the CPU
+  int firstWidth = 0, firstHeight = 0;  // the first picture's size
   std::string note;  // why it was not drawn, or what went wrong
 };
 
 struct TypingResults {
   std::vector<Keystroke> keys;
-  int firstWidth = 0, firstHeight = 0, width = 0, height = 0;
+  int width = 0, height = 0;
   double interpreterMs = 0;  // compiling and warming the interpreter once, before typing
   std::string error;         // non-empty: nothing was measured
 };

@@ -14,6 +14,7 @@
 #include <cstdio>
 
 #include "app/viewer/fonts.hpp"
+#include "interact/trace_budget.hpp"
 
 namespace zs::app {
 namespace {
@@ -110,10 +111,7 @@ int Viewer::reducedScale(int width, int height) const {
   if (options_.dragScale > 0) return options_.dragScale;
   if (msPerPixel_ <= 0) return 2;
   // The smallest divisor whose estimated trace fits a 30 fps budget.
-  for (int s = 1; s < 4; ++s) {
-    if (msPerPixel_ * double(width / s) * double(height / s) <= 33.0) return s;
-  }
-  return 4;
+  return interact::scaleForBudget(msPerPixel_, width, height, 33.0, 1, 4);
 }
 
 void Viewer::traceIfNeeded(int width, int height) {
@@ -126,14 +124,22 @@ void Viewer::traceIfNeeded(int width, int height) {
   // formula's own shader follows and draws the full one.
   const bool quick = view_->showingQuick();
   int scale = 0;
-  if (dirty_) scale = moving ? reducedScale(width, height) : quick ? 2 : 1;
+  if (dirty_) {
+    scale = moving ? reducedScale(width, height)
+            : quick ? interact::scaleForBudget(quickMsPerPixel_, width, height,
+                                               interact::kFirstPictureBudgetMs,
+                                               interact::kFirstPictureMinScale,
+                                               interact::kFirstPictureMaxScale)
+                    : 1;
+  }
   else if (refine_ && !moving && !quick) scale = 1;
   if (scale == 0) return;
   RenderSettings settings = scene_.render;
   if (scale > 1) settings.samples = 1;  // a moving preview needs no supersampling
   const double ms = view_->trace(settings, scene_.domain, width, height, scale);
   const double samples = double(settings.samples) * settings.samples;
-  if (!quick) msPerPixel_ = ms / (double(width / scale) * double(height / scale) * samples);
+  const double perPixel = ms / (double(width / scale) * double(height / scale) * samples);
+  (quick ? quickMsPerPixel_ : msPerPixel_) = perPixel;
   stats_.traceMs = ms;
   stats_.traceScale = scale;
   stats_.curvatureRange = view_->curvatureRange();

@@ -144,6 +144,7 @@ class Viewer {
   std::vector<int> pressedSincePoll_, heldKeys_;  // holdQuickKeys  // the formula of the first picture on screen, "" if none
   std::chrono::steady_clock::time_point lastWheel_{};
   double msPerPixel_ = 0;  // from the latest trace, to pick the reduced scale
+  double quickMsPerPixel_ = 0;  // the same for the latest first picture
   bool sliderActive_ = false, readyPrinted_ = false;
 
   // Mouse drags: which button, where it started, and the camera/light at the start.

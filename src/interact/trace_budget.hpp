@@ -1,0 +1,26 @@
+#pragma once
+// How much to reduce a picture's resolution to keep a trace within a time budget: takes the
+// cost per pixel measured on the last trace and the full size, puts out the divisor of each
+// side. The viewer's drags (33 ms, 30 fps) and first pictures while typing (40 ms) use it,
+// and `zeroset bench --typing` uses the same rule to report what the viewer shows.
+#include <algorithm>
+
+namespace zs::interact {
+
+// The smallest divisor in [lo, hi] whose estimated trace (msPerPixel times the pixels left)
+// fits `budgetMs`, or hi; lo when nothing was measured yet (msPerPixel <= 0).
+inline int scaleForBudget(double msPerPixel, int width, int height, double budgetMs, int lo,
+                          int hi) {
+  if (msPerPixel <= 0) return lo;
+  for (int s = lo; s < hi; ++s) {
+    if (msPerPixel * double(std::max(1, width / s)) * double(std::max(1, height / s)) <= budgetMs)
+      return s;
+  }
+  return hi;
+}
+
+// A first picture while typing: at least half the size each way, at most a quarter.
+inline constexpr double kFirstPictureBudgetMs = 40;
+inline constexpr int kFirstPictureMinScale = 2, kFirstPictureMaxScale = 4;
+
+}  // namespace zs::interact
