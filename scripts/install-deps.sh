@@ -23,6 +23,8 @@ packages=(
   admesh
   # the install tests (tests/install): man -l on the installed page
   man-db
+  # the batch recipes of docs/batch.md (tests/app: shards run by GNU parallel)
+  parallel
 )
 for option in "$@"; do
   case $option in

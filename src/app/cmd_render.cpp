@@ -1,7 +1,7 @@
 // `zeroset render SCENE|FORMULA -o out.png [--size WxH] [--depth out.pfm]
 // [--backend egl|osmesa] [--set KEY=VALUE]...`: one picture, headless. With
-// `--animate KEY=FROM:TO [--frames N] [--video out.mp4]`, -o is a folder of numbered
-// frames (animate/render_frames.hpp).
+// `--animate KEY=FROM:TO [--frames N] [--video out.mp4] [--shard K/N]`, -o is a folder of
+// numbered frames (animate/render_frames.hpp).
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -27,6 +27,7 @@ struct RenderArgs {
   std::string depth;
   std::string backend = "egl";
   AnimateOptions animate;  // used when animate.spec is set
+  std::string shard;       // --shard K/N
 };
 
 bool parseSize(const std::string& text, int& w, int& h) {
@@ -52,6 +53,13 @@ int runRender(const RenderArgs& args) {
   if (!args.animate.spec.empty()) {
     AnimateOptions animate = args.animate;
     animate.outDir = args.output;
+    if (!args.shard.empty()) {
+      std::string error;
+      if (!parseShard(args.shard, animate.shard, animate.shards, error)) {
+        std::cerr << error;
+        return 1;
+      }
+    }
     return renderAnimation(*scene, animate, backend);
   }
   // Everything that can fail on the user's input fails here, before any GL context exists.
@@ -139,6 +147,10 @@ void addRenderCommand(CLI::App& app) {
       ->needs(animate);
   cmd->add_option("--fps", args->animate.fps, "frames per second of --video (default 30)")
       ->check(CLI::Range(1, 240))
+      ->needs(animate);
+  cmd->add_option("--shard", args->shard,
+                  "K/N: render only frames K, K+N, K+2N, ... of --animate (0 <= K < N), under "
+                  "their numbers in the whole animation, so N jobs fill one folder (docs/batch.md)")
       ->needs(animate);
   cmd->callback([args] { std::exit(runRender(*args)); });
 }

@@ -50,6 +50,20 @@ std::string rebuildAll(PreparedSurface& s, const Scene& scene, RayTracer& tracer
 
 }  // namespace
 
+bool parseShard(const std::string& text, int& shard, int& shards, std::string& error) {
+  int k = 0, n = 0;
+  char slash = 0, rest = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &k, &slash, &n, &rest) != 3 || slash != '/' ||
+      n < 1 || k < 0 || k >= n) {
+    error = "error: --shard '" + text + "' is not K/N with 0 <= K < N\n"
+            "hint: --shard 0/4 renders frames 0, 4, 8, ...; --shard 3/4 frames 3, 7, 11, ...\n";
+    return false;
+  }
+  shard = k;
+  shards = n;
+  return true;
+}
+
 std::string frameFileName(int i, int frames) {
   char name[64];
   std::snprintf(name, sizeof name, "frame-%0*d.png", digitsFor(frames), i);
@@ -74,13 +88,26 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
               << opt.outDir << "')\nhint: e.g. -o frames/ writes frames/frame-0000.png, ...\n";
     return 1;
   }
+  if (opt.shards > 1 && !opt.video.empty()) {
+    std::cerr << "error: --video needs every frame, and --shard renders only some\n"
+              << "hint: once every shard is done, join the frames with ffmpeg -framerate "
+              << opt.fps << " -i " << (dir / frameFilePattern(anim->frames)).string()
+              << " OUT.mp4 (docs/batch.md)\n";
+    return 1;
+  }
+  const int first = opt.shard;  // this shard's frames: first, first + shards, ...
+  if (first >= anim->frames) {
+    std::printf("shard %d/%d has no frames: the animation has %d\n", opt.shard, opt.shards,
+                anim->frames);
+    return 0;
+  }
   std::optional<std::string> ffmpeg;
   if (!opt.video.empty() && !(ffmpeg = findFfmpeg())) {
     std::cerr << missingFfmpegMessage(opt.outDir);
     return 1;
   }
   Scene scene;
-  if (std::string err = frameScene(*anim, base, 0, scene); !err.empty()) {
+  if (std::string err = frameScene(*anim, base, first, scene); !err.empty()) {
     std::cerr << err;
     return 1;
   }
@@ -111,9 +138,10 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
 
   const bool markers = base.render.singular.enabled;
   const auto start = std::chrono::steady_clock::now();
-  for (int i = 0; i < anim->frames; ++i) {
+  int written = 0;
+  for (int i = first; i < anim->frames; i += opt.shards) {
     const auto frameStart = std::chrono::steady_clock::now();
-    if (i > 0) {
+    if (i > first) {
       if (std::string err = frameScene(*anim, base, i, scene); !err.empty()) {
         std::cerr << err;
         return 1;
@@ -142,13 +170,19 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
             .count();
     std::printf("wrote %s: %s = %.6g, %zu octree leaves%s, %.0f ms\n", path.c_str(),
                 anim->key().c_str(), anim->valueAt(i), surface.octree.leaves.size(),
-                perFrameOctree && i > 0 ? " (rebuilt)" : "", ms);
+                perFrameOctree && i > first ? " (rebuilt)" : "", ms);
     std::fflush(stdout);
+    ++written;
   }
   const double totalMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  std::printf("wrote %d frames (%dx%d) to %s in %.0f ms, %s; %s\n", anim->frames, scene.width,
-              scene.height, opt.outDir.c_str(), totalMs,
+  const std::string shard = opt.shards > 1 ? " of " + std::to_string(anim->frames) + " (shard " +
+                                                   std::to_string(opt.shard) + "/" +
+                                                   std::to_string(opt.shards) + ")"
+                                             : std::string();
+  std::printf("wrote %d frame%s%s (%dx%d) to %s in %.0f ms, %s; %s\n", written,
+              written == 1 ? "" : "s", shard.c_str(),
+              scene.width, scene.height, opt.outDir.c_str(), totalMs,
               !perFrameOctree ? "octree built once (F does not change)"
               : anim->kind == Animation::Kind::Level
                   ? "octree rebuilt per frame (the level moves)"
