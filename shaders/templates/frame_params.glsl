@@ -16,6 +16,7 @@ RT_FRAME_STORAGE RtFrame {
   flat vec3 rootMax;
   flat float pad;  // widens the root box by the float slack of the hierarchy
   flat vec2 resolution;  // full image size in pixels (tiles only restrict the scissor)
+  flat vec2 pixelOrigin;  // where the target's pixel (0, 0) lies in the full image, counted bottom-up like gl_FragCoord: (0, 0) but for a band of a taller picture (render/ray_tracer.hpp renderBand)
   flat vec3 eye;
   flat vec3 forward;
   flat vec3 right;

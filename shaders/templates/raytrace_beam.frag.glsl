@@ -26,7 +26,7 @@ void main() {
   // The tile's rectangle in image points (pixels from the top-left of the full image); one
   // fragment per tile, counted bottom-up like gl_FragCoord.
   const float T = float(RT_BEAM_TILE);
-  vec2 tile = floor(gl_FragCoord.xy);
+  vec2 tile = floor(gl_FragCoord.xy) + rt.pixelOrigin / T;  // a band starts on a tile row
   vec2 corner = vec2(tile.x * T, rt.resolution.y - (tile.y + 1.0) * T);
   vec3 oc, dc;
   cameraRay(corner + 0.5 * T, oc, dc);

@@ -119,7 +119,8 @@ uniform int rtBeamOn;
 void main() {
   RT_FRAME_BEGIN  // GLSL ES: the frame's uniforms into `rt` (shader_assembly.cpp)
   // Pixel (i, j) from the top-left of the full image (docs/camera.md).
-  vec2 pixel = vec2(gl_FragCoord.x - 0.5, rt.resolution.y - gl_FragCoord.y - 0.5);
+  vec2 fragment = gl_FragCoord.xy + rt.pixelOrigin;
+  vec2 pixel = vec2(fragment.x - 0.5, rt.resolution.y - fragment.y - 0.5);
   const int n = RT_SAMPLES, grid = n * n;
   // Depth comes from the pixel-center ray; an even N x N grid has none, so one more ray
   // (depth only) is traced there.

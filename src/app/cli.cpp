@@ -25,6 +25,7 @@ void addCommands(CLI::App& app) {
   addImportCommand(app);
   addExportCommand(app);
   addGalleryCommand(app);
+  addAssembleCommand(app);
   // After the subcommands, so they do not inherit the top-level footer.
   app.footer(
       "Run `zeroset SUBCOMMAND --help` for a subcommand's options, or `man zeroset`. "

@@ -17,6 +17,7 @@ void addImportCommand(CLI::App& app);
 void addExportCommand(CLI::App& app);
 void addGalleryCommand(CLI::App& app);
 void addProbeCommand(CLI::App& app);
+void addAssembleCommand(CLI::App& app);
 
 // `zeroset` with no arguments: the formula prompt (repl/prompt.hpp).
 int runPrompt();

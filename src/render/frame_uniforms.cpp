@@ -68,7 +68,17 @@ int proxyUniforms(UniformList& u, const Camera& camera, const Domain& domain,
   u.vec3("rtBoxMin", lo);
   u.vec3("rtBoxMax", hi);
   const double farDist = 2 * farthest + 1;
-  u.mat4("rtViewProj", viewProjection(camera, in.width, in.height, farDist * 1e-7, farDist));
+  std::array<float, 16> viewProj = viewProjection(camera, in.width, in.height, farDist * 1e-7, farDist);
+  if (in.bandHeight > 0) {
+    // The band's rows fill the target: clip y' = (y - c w) / k, column-major rows 1 and 3.
+    const double k = double(in.bandHeight) / in.height;
+    const double c = 1.0 - (2.0 * in.bandTop + in.bandHeight) / in.height;
+    for (int col = 0; col < 4; ++col) {
+      float& y = viewProj[std::size_t(col * 4 + 1)];
+      y = float((y - c * viewProj[std::size_t(col * 4 + 3)]) / k);
+    }
+  }
+  u.mat4("rtViewProj", viewProj);
   return 36;
 }
 
@@ -95,6 +105,7 @@ FrameUniforms frameUniforms(const RenderSettings& s, const Domain& clip, const F
   u.vec3("rtDomainMin", domain.min);
   u.vec3("rtDomainMax", domain.max);
   u.vec2("rtResolution", in.width, in.height);
+  u.vec2("rtPixelOrigin", 0, in.bandHeight > 0 ? in.height - in.bandTop - in.bandHeight : 0);
 
   const CameraBasis basis = cameraBasis(s.camera);
   u.vec3("rtEye", basis.eye);

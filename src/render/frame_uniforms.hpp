@@ -31,6 +31,11 @@ struct FrameInputs {
   const GpuHierarchy* hierarchy = nullptr;  // required
   std::span<const float> params;            // zs_params, in declaration order
   int width = 1, height = 1;                // the full picture, in pixels
+  // A band of rows [bandTop, bandTop + bandHeight) of the full picture drawn into a target of
+  // bandHeight rows (bandHeight 0: the whole picture). Its bottom edge must lie on the beam
+  // pass's tile grid, counted from the picture's bottom: (height - bandTop - bandHeight) a
+  // multiple of kBeamTile (program_variant.hpp), so every ray is the whole picture's.
+  int bandTop = 0, bandHeight = 0;
   Proxy proxy = Proxy::Box;
   bool tangentRoots = true;   // sampling: look for tangent roots
   double curvatureRange = 0;  // the curvature colorings' range; <= 0: 1

@@ -56,6 +56,53 @@ std::string readPng(const std::string& path, Image& out) {
   return {};
 }
 
+std::string stackPngs(const std::vector<std::string>& parts, const std::string& path) {
+  if (parts.empty()) return "nothing to stack: no PNG given";
+  // The sizes first, from the headers: the output's header holds the total height.
+  std::uint32_t width = 0, height = 0;
+  for (const std::string& part : parts) {
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&png, part.c_str()))
+      return "cannot read " + part + ": " + png.message;
+    const std::uint32_t w = png.width, h = png.height;
+    png_image_free(&png);
+    if (width != 0 && w != width)
+      return part + " is " + std::to_string(w) + " pixels wide, the parts before it " +
+             std::to_string(width) + ": the parts of one picture have one width";
+    width = w;
+    if (height + std::uint64_t(h) > 0x7fffffffu) return "the stacked picture would be too tall";
+    height += h;
+  }
+  FilePtr file = open(path, "wb");
+  if (!file) return "cannot open " + path + " for writing: " + std::strerror(errno);
+  png_structp writer = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = writer ? png_create_info_struct(writer) : nullptr;
+  if (!info) {
+    png_destroy_write_struct(&writer, nullptr);
+    return "cannot write " + path + ": libpng could not start";
+  }
+  if (setjmp(png_jmpbuf(writer))) {  // libpng's errors land here
+    png_destroy_write_struct(&writer, &info);
+    return "cannot write " + path + ": libpng failed";
+  }
+  png_init_io(writer, file.get());
+  png_set_IHDR(writer, info, width, height, 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(writer, info);
+  for (const std::string& part : parts) {
+    Image image;
+    if (std::string err = readPng(part, image); !err.empty()) {
+      png_destroy_write_struct(&writer, &info);
+      return err;
+    }
+    for (int y = 0; y < image.height; ++y) png_write_row(writer, image.pixel(0, y));
+  }
+  png_write_end(writer, nullptr);
+  png_destroy_write_struct(&writer, &info);
+  return {};
+}
+
 std::string writePfm(const std::string& path, const DepthMap& depth) {
   if (depth.width <= 0 || depth.height <= 0 ||
       depth.values.size() != std::size_t(depth.width) * depth.height)

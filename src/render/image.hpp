@@ -31,6 +31,10 @@ struct DepthMap {
 // All return an empty string on success, else a message naming the file.
 std::string writePng(const std::string& path, const Image& image);
 std::string readPng(const std::string& path, Image& out);  // any PNG, converted to RGBA8
+// The PNGs `parts` (equal widths) one under the other into one RGBA8 PNG at `path`, holding
+// one part in memory at a time (a poster of 20000 x 20000 pixels is 1.6 GB as one image).
+// "" on success, else why not (the file may then be incomplete).
+std::string stackPngs(const std::vector<std::string>& parts, const std::string& path);
 // PFM: grayscale "Pf", scale -1 (little-endian), rows stored bottom to top as the format
 // says; the in-memory map stays top-down.
 std::string writePfm(const std::string& path, const DepthMap& depth);

@@ -198,6 +198,15 @@ double RayTracer::resolveCurvatureRange(const RenderSettings& settings, const Do
   if (settings.shading.curvatureRange > 0) return settings.shading.curvatureRange;
   RenderSettings probe = settings;
   probe.shading.curvatureRange = 1;
+  // A band's colors are the whole picture's: the range is measured on the whole view.
+  const int band = bandRows_;
+  if (band > 0) height = fullHeight_;
+  bandRows_ = 0;
+  struct Restore {
+    int& rows;
+    int value;
+    ~Restore() { rows = value; }
+  } restore{bandRows_, band};
   return probeCurvatureRange(target_, settings, domain, width, height, [&](int w, int h) {
     const int vertices = setUniforms(program_, probe, domain, w, h);
     setDrawState(w, h);
@@ -218,6 +227,23 @@ std::string RayTracer::drawOffscreen(const RenderSettings& settings, const Domai
 void RayTracer::draw(const RenderSettings& settings, const Domain& domain, int width, int height) {
   if (!prepare(settings, domain, width, height, false).empty()) return;
   drawFrame();
+}
+
+Frame RayTracer::renderBand(const RenderSettings& settings, const Domain& domain, int width,
+                            int height, int top, int rows, const ProgressFn& progress) {
+  if (rows <= 0 || top < 0 || top + rows > height || (height - top - rows) % kBeamTile != 0) {
+    Frame frame;
+    frame.error = "band of rows " + std::to_string(top) + " to " + std::to_string(top + rows) +
+                  " of " + std::to_string(height) + ": its bottom edge must lie on the " +
+                  std::to_string(kBeamTile) + "-pixel grid counted from the picture's bottom";
+    return frame;
+  }
+  fullHeight_ = height;
+  bandTop_ = top;
+  bandRows_ = rows == height ? 0 : rows;
+  Frame frame = render(settings, domain, width, rows, progress);
+  bandRows_ = 0;
+  return frame;
 }
 
 Frame RayTracer::render(const RenderSettings& settings, const Domain& domain, int width,

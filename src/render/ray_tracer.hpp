@@ -67,6 +67,13 @@ class RayTracer {
   // followed by glFinish, so no single draw runs for seconds and progress can be shown.
   Frame render(const RenderSettings& settings, const Domain& domain, int width, int height,
                const ProgressFn& progress = {}, int tileSize = 256);
+  // Rows [top, top + rows) of the width x height picture render() would make, pixel for
+  // pixel, in a target of only those rows: a picture taller than a framebuffer, in bands on
+  // one machine or many (zeroset render --tile). The band's bottom edge must lie on the beam
+  // pass's tile grid counted from the picture's bottom ((height - top - rows) a multiple of
+  // kBeamTile); otherwise, or for an empty band, the frame reports why.
+  Frame renderBand(const RenderSettings& settings, const Domain& domain, int width, int height,
+                   int top, int rows, const ProgressFn& progress = {});
   // One draw call of the whole frame into the internal offscreen target, no read-back:
   // what frame-time measurements time (with glFinish). "" on success.
   std::string drawOffscreen(const RenderSettings& settings, const Domain& domain, int width,
@@ -127,6 +134,8 @@ class RayTracer {
   bool tangentRoots_ = true;
   Proxy proxy_ = Proxy::Box;
   int vertices_ = 6;  // of the current frame
+  // renderBand's: the full picture's height and the band (bandRows_ 0: no band).
+  int fullHeight_ = 0, bandTop_ = 0, bandRows_ = 0;
 };
 
 }  // namespace zs

@@ -48,6 +48,11 @@ int RayTracer::setUniforms(unsigned program, const RenderSettings& s, const Doma
   in.params = params_;
   in.width = width;
   in.height = height;
+  if (bandRows_ > 0) {  // renderBand: `height` is the band's, the uniforms the picture's
+    in.height = fullHeight_;
+    in.bandTop = bandTop_;
+    in.bandHeight = bandRows_;
+  }
   in.proxy = proxy_;
   in.tangentRoots = tangentRoots_;
   in.curvatureRange = curvatureRange_;

@@ -43,6 +43,51 @@ Image load(const fs::path& path) {
   return image;
 }
 
+// `zeroset render --tile I/N` and `zeroset assemble`: the bands of a picture whose height is
+// no multiple of the beam tile, stacked, are the whole picture pixel for pixel; a poster
+// taller than a framebuffer renders band by band.
+TEST(Tiles, BandsAssembleIntoExactlyTheWholePicture) {
+  const fs::path dir = freshDir("tiles");
+  const std::string formula = "x^2+y^2+z^2-1+0.2*sin(4x)*sin(4y)";
+  std::string out;
+  ASSERT_EQ(runZeroset({"render", formula, "--size", "97x83", "-o", (dir / "whole.png").string()},
+                       dir, out),
+            0)
+      << out;
+  std::vector<std::string> assemble{"assemble", "-o", (dir / "stacked.png").string()};
+  for (int i = 0; i < 3; ++i) {
+    const std::string band = (dir / ("band" + std::to_string(i) + ".png")).string();
+    ASSERT_EQ(runZeroset({"render", formula, "--size", "97x83", "--tile",
+                          std::to_string(i) + "/3", "-o", band},
+                         dir, out),
+              0)
+        << out;
+    assemble.push_back(band);
+  }
+  ASSERT_EQ(runZeroset(assemble, dir, out), 0) << out;
+  const Image whole = load(dir / "whole.png"), stacked = load(dir / "stacked.png");
+  ASSERT_EQ(stacked.width, whole.width);
+  ASSERT_EQ(stacked.height, whole.height);
+  EXPECT_TRUE(stacked.rgba == whole.rgba) << "the stacked bands differ from the whole picture";
+
+  // Taller than any framebuffer (16384 rows): one band of it.
+  ASSERT_EQ(runZeroset({"render", "x^2+y^2+z^2-1", "--size", "16x40000", "--tile", "2/5", "-o",
+                        (dir / "tall.png").string()},
+                       dir, out),
+            0)
+      << out;
+  EXPECT_EQ(load(dir / "tall.png").height, 8000) << out;
+  // Bands of different widths are refused.
+  ASSERT_EQ(runZeroset({"render", "x", "--size", "40x32", "-o", (dir / "narrow.png").string()},
+                       dir, out),
+            0);
+  EXPECT_NE(runZeroset({"assemble", "-o", (dir / "bad.png").string(), (dir / "whole.png").string(),
+                        (dir / "narrow.png").string()},
+                       dir, out),
+            0);
+  EXPECT_NE(out.find("one width"), std::string::npos) << out;
+}
+
 TEST(Animate, KummerFamilyFramesAreNumberedAndEachIsThatParametersPicture) {
   const fs::path dir = freshDir("animate_kummer");
   const fs::path frames = dir / "frames";
