@@ -474,6 +474,7 @@ const GROUPS = {
   errors: ['bad-formula-keeps-picture', 'bad-url-shows-error-above-default'],
   'files-and-layouts': ['drop-surf-loads', 'bad-file', 'embed-and-size', 'phone-layout'],
   pointer: ['hover-shows-curvature', 'touch-drag-turns'],
+  links: ['share-link', 'bad-url-parameters'],
   panels: ['light-edit-redraws', 'lost-context-recovers'],
 };
 for (const [group, members] of Object.entries(GROUPS)) {
