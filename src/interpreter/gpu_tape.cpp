@@ -65,10 +65,10 @@ class Program {
       const std::uint32_t b = p.useB >= 0 ? std::uint32_t(reg[std::size_t(p.useB)]) : p.z;
       // Operands read last here free their registers before the results take one: the
       // interpreter reads both operands before it writes.
-      for (std::int32_t v : {p.useA, p.useB}) {
+      for (std::int32_t v : {p.useA, p.useB}) {  // x * x reads one value twice: freed once
         if (v >= 0 && lastUse[std::size_t(v)] == i && reg[std::size_t(v)] >= 0) {
           freeList.push_back(std::uint32_t(reg[std::size_t(v)]));
-          reg[std::size_t(v)] = -1 - reg[std::size_t(v)];  // freed; kept for a second read
+          reg[std::size_t(v)] = -1;
         }
       }
       if (!allocate(p.def)) return false;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "render/beam_tiles.hpp"
+#include "render/framebuffer_parts.hpp"
 #include "render/program_variant.hpp"
 
 namespace zs {
@@ -47,11 +48,7 @@ bool BeamPass::draw(unsigned beam, const FrameSetup& setup, int width, int heigh
   const int w = (width + kBeamTile - 1) / kBeamTile, h = (height + kBeamTile - 1) / kBeamTile;
   if (!fbo_ || w != tilesX_ || h != tilesY_) {
     release();
-    glGenTextures(1, &texture_);
-    glBindTexture(GL_TEXTURE_2D, texture_);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, w, h, 0, GL_RG, GL_FLOAT, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    texture_ = newTexture2D(GL_RG32F, GL_RG, GL_FLOAT, w, h);
     glGenFramebuffers(1, &fbo_);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_, 0);

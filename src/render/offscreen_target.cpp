@@ -2,6 +2,8 @@
 
 #include <glad/gl.h>
 
+#include "render/framebuffer_parts.hpp"
+
 namespace zs {
 
 OffscreenTarget::~OffscreenTarget() { release(); }
@@ -24,31 +26,15 @@ std::string OffscreenTarget::ensure(int width, int height) {
     return "image size " + std::to_string(width) + "x" + std::to_string(height) +
            " is outside 1.." + std::to_string(maxSize);
   release();
-  auto makeTexture = [&](GLenum internal, GLenum format, GLenum type) {
-    GLuint tex = 0;
-    glGenTextures(1, &tex);
-    glBindTexture(GL_TEXTURE_2D, tex);
-    glTexImage2D(GL_TEXTURE_2D, 0, GLint(internal), width, height, 0, format, type, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    return tex;
-  };
-  color_ = makeTexture(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE);
-  depth_ = makeTexture(GL_R32F, GL_RED, GL_FLOAT);  // distance to the first hit
-  value_ = makeTexture(GL_R32F, GL_RED, GL_FLOAT);  // curvature colorings: the curvature
+  color_ = newTexture2D(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
+  depth_ = newTexture2D(GL_R32F, GL_RED, GL_FLOAT, width, height);  // distance to the first hit
+  value_ = newTexture2D(GL_R32F, GL_RED, GL_FLOAT, width, height);  // curvature colorings
   glGenFramebuffers(1, &fbo_);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_, 0);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, depth_, 0);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, value_, 0);
-  // For tile skipping (the ray tracer's markClearTiles); depth and stencil come in one
-  // format everywhere.
-  glGenRenderbuffers(1, &stencil_);
-  glBindRenderbuffer(GL_RENDERBUFFER, stencil_);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
-  glBindRenderbuffer(GL_RENDERBUFFER, 0);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                            stencil_);
+  stencil_ = attachDepthStencil(width, height);  // tile skipping (markClearTiles)
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (status != GL_FRAMEBUFFER_COMPLETE) {

@@ -10,23 +10,31 @@
 #include <algorithm>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "render/frame_readback.hpp"
 
 namespace zs {
 namespace {
 
-// Fills the bound GL_TEXTURE_BUFFER with `texels` (4 words each), padded with zeros to a
-// power of two of texels. Software rasterizers key their compiled shaders on whether a
-// texture's size is a power of two (llvmpipe does): a hierarchy or tape of another size
-// would otherwise make the same program compile again, a pause of up to a second. Also
-// never a zero-size store, which is not a valid texture-buffer source.
-void uploadPowerOfTwo(std::span<const std::uint32_t> texels) {
+// `texels` (4 words each) into `buffer`, viewed by `texture` as an RGBA32UI buffer texture
+// (both made at the first call), padded with zeros to a power of two of texels. Software
+// rasterizers key their compiled shaders on whether a texture's size is a power of two
+// (llvmpipe does): a hierarchy or tape of another size would otherwise make the same
+// program compile again, a pause of up to a second. Also never a zero-size store, which is
+// not a valid texture-buffer source.
+void fillTextureBuffer(unsigned& buffer, unsigned& texture, std::span<const std::uint32_t> texels) {
+  if (!buffer) glGenBuffers(1, &buffer);
+  if (!texture) glGenTextures(1, &texture);
   std::size_t count = 1;
   while (count < texels.size() / 4) count *= 2;
   std::vector<std::uint32_t> padded(count * 4, 0);
   std::copy(texels.begin(), texels.end(), padded.begin());
+  glBindBuffer(GL_TEXTURE_BUFFER, buffer);
   glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(padded.size() * 4), padded.data(), GL_STATIC_DRAW);
+  glBindTexture(GL_TEXTURE_BUFFER, texture);
+  glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32UI, buffer);
+  glBindBuffer(GL_TEXTURE_BUFFER, 0);
 }
 
 }  // namespace
@@ -62,13 +70,7 @@ std::string RayTracer::setHierarchy(std::span<const float> packed) {
   if (gpu.count > maxTexels)
     return "hierarchy: " + std::to_string(gpu.count) + " nodes exceed GL_MAX_TEXTURE_BUFFER_SIZE (" +
            std::to_string(maxTexels) + ")";
-  if (!nodeBuffer_) glGenBuffers(1, &nodeBuffer_);
-  if (!nodeTexture_) glGenTextures(1, &nodeTexture_);
-  glBindBuffer(GL_TEXTURE_BUFFER, nodeBuffer_);
-  uploadPowerOfTwo(gpu.texels);
-  glBindTexture(GL_TEXTURE_BUFFER, nodeTexture_);
-  glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32UI, nodeBuffer_);
-  glBindBuffer(GL_TEXTURE_BUFFER, 0);
+  fillTextureBuffer(nodeBuffer_, nodeTexture_, gpu.texels);
   hierarchy_ = std::move(gpu);
   return {};
 }
@@ -78,13 +80,7 @@ std::string RayTracer::setTape(std::span<const std::uint32_t> texels) {
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
   if (texels.empty() || texels.size() % 4 != 0 || GLint(texels.size() / 4) > maxTexels)
     return "tape: " + std::to_string(texels.size() / 4) + " texels do not fit a buffer texture";
-  if (!tapeBuffer_) glGenBuffers(1, &tapeBuffer_);
-  if (!tapeTexture_) glGenTextures(1, &tapeTexture_);
-  glBindBuffer(GL_TEXTURE_BUFFER, tapeBuffer_);
-  uploadPowerOfTwo(texels);
-  glBindTexture(GL_TEXTURE_BUFFER, tapeTexture_);
-  glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32UI, tapeBuffer_);
-  glBindBuffer(GL_TEXTURE_BUFFER, 0);
+  fillTextureBuffer(tapeBuffer_, tapeTexture_, texels);
   return {};
 }
 
@@ -199,20 +195,17 @@ double RayTracer::resolveCurvatureRange(const RenderSettings& settings, const Do
   RenderSettings probe = settings;
   probe.shading.curvatureRange = 1;
   // A band's colors are the whole picture's: the range is measured on the whole view.
-  const int band = bandRows_;
-  if (band > 0) height = fullHeight_;
-  bandRows_ = 0;
-  struct Restore {
-    int& rows;
-    int value;
-    ~Restore() { rows = value; }
-  } restore{bandRows_, band};
-  return probeCurvatureRange(target_, settings, domain, width, height, [&](int w, int h) {
-    const int vertices = setUniforms(program_, probe, domain, w, h);
-    setDrawState(w, h);
-    clearBackground(settings, true);
-    if (vertices > 0) glDrawArrays(GL_TRIANGLES, 0, vertices);
-  });
+  if (bandRows_ > 0) height = fullHeight_;
+  const int band = std::exchange(bandRows_, 0);
+  const double range =
+      probeCurvatureRange(target_, settings, domain, width, height, [&](int w, int h) {
+        const int vertices = setUniforms(program_, probe, domain, w, h);
+        setDrawState(w, h);
+        clearBackground(settings, true);
+        if (vertices > 0) glDrawArrays(GL_TRIANGLES, 0, vertices);
+      });
+  bandRows_ = band;
+  return range;
 }
 
 std::string RayTracer::drawOffscreen(const RenderSettings& settings, const Domain& domain,

@@ -2,6 +2,8 @@
 
 #include <glad/gl.h>
 
+#include "render/framebuffer_parts.hpp"
+
 namespace zs {
 
 ViewTarget::~ViewTarget() { release(); }
@@ -17,20 +19,11 @@ void ViewTarget::release() {
 bool ViewTarget::ensure(int width, int height) {
   if (fbo_ && width_ == width && height_ == height) return true;
   release();
-  glGenTextures(1, &color_);
-  glBindTexture(GL_TEXTURE_2D, color_);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  color_ = newTexture2D(GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height, /*linear=*/true);
   glGenFramebuffers(1, &fbo_);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color_, 0);
-  glGenRenderbuffers(1, &stencil_);
-  glBindRenderbuffer(GL_RENDERBUFFER, stencil_);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
-  glBindRenderbuffer(GL_RENDERBUFFER, 0);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                            stencil_);
+  stencil_ = attachDepthStencil(width, height);
   const bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (!complete) {

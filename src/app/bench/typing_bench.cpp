@@ -8,6 +8,7 @@
 #include <memory>
 #include <thread>
 
+#include "app/bench/bench_runner.hpp"
 #include "app/surface_worker.hpp"
 #include "interact/trace_budget.hpp"
 #include "pipeline/load_surface.hpp"
@@ -48,12 +49,6 @@ class WarmUp {
   std::unique_ptr<RayTracer> tracer_;  // after the context: destroyed first
 };
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 }  // namespace
 
