@@ -34,53 +34,52 @@ std::string tapeConstants() {
   return s;
 }
 
-// zs_tapeOp: every opcode's point statement, spelled as the formula block spells it.
-std::string pointDispatch(bool polynomialOnly) {
-  std::string s =
-      "// One operation at a point; flag: set where it is undefined (the formula block's "
-      "zs_u).\n"
-      "float zs_tapeOp(int code, vec3 p, float a, float b, uint w, inout bool flag) {\n"
-      "  switch (code) {\n";
+// A GLSL function `header` that switches over the opcode table: one `case` per opcode that
+// `rhs` spells (it returns "" for the ones the dispatch leaves out), then `fallback`.
+template <class Rhs>
+std::string opSwitch(const std::string& header, const char* fallback, Rhs rhs) {
+  std::string s = header + "  switch (code) {\n";
   for (int i = 0; i < kOpCount; ++i) {
-    const Op op = static_cast<Op>(i);
-    if (polynomialOnly && !isPolynomialOp(op)) continue;
-    std::string rhs;
-    switch (op) {
-      case Op::Const: rhs = "uintBitsToFloat(w)"; break;
-      case Op::VarX: rhs = "p.x"; break;
-      case Op::VarY: rhs = "p.y"; break;
-      case Op::VarZ: rhs = "p.z"; break;
-      case Op::Param: rhs = "zs_params[int(w) & " + std::to_string(kTapeMaxParams - 1) + "]"; break;
-      case Op::PowI: rhs = "zs_tapePowi(a, int(w), flag)"; break;
-      default: rhs = glslOpExpression(op, "a", "b", "flag"); break;
-    }
-    s += "    case " + std::to_string(i) + ": return " + rhs + ";  // " +
+    const std::string r = rhs(static_cast<Op>(i));
+    if (r.empty()) continue;
+    s += "    case " + std::to_string(i) + ": return " + r + ";  // " +
          std::string(kOpTable[i].enumName) + "\n";
   }
-  return s + "  }\n  return 0.0;\n}\n";
+  return s + "  }\n  return " + fallback + ";\n}\n";
+}
+
+// zs_tapeOp: every opcode's point statement, spelled as the formula block spells it.
+std::string pointDispatch(bool polynomialOnly) {
+  return opSwitch(
+      "// One operation at a point; flag: set where it is undefined (the formula block's zs_u).\n"
+      "float zs_tapeOp(int code, vec3 p, float a, float b, uint w, inout bool flag) {\n",
+      "0.0", [&](Op op) -> std::string {
+        if (polynomialOnly && !isPolynomialOp(op)) return {};
+        switch (op) {
+          case Op::Const: return "uintBitsToFloat(w)";
+          case Op::VarX: return "p.x";
+          case Op::VarY: return "p.y";
+          case Op::VarZ: return "p.z";
+          case Op::Param: return "zs_params[int(w) & " + std::to_string(kTapeMaxParams - 1) + "]";
+          case Op::PowI: return "zs_tapePowi(a, int(w), flag)";
+          default: return glslOpExpression(op, "a", "b", "flag");
+        }
+      });
 }
 
 // zs_tapeAffineRule: every non-leaf opcode's affine rule, as the interval block writes it.
 std::string affineDispatch(bool polynomialOnly) {
-  std::string s =
+  return opSwitch(
       "// One operation's affine rule (the generated interval block's zsa_* call); k: PowI's "
       "exponent.\n"
-      "vec4 zs_tapeAffineRule(int code, vec4 a, vec4 b, int k, inout bool flag) {\n"
-      "  switch (code) {\n";
-  for (int i = 0; i < kOpCount; ++i) {
-    const Op op = static_cast<Op>(i);
-    if (isLeaf(op) || (polynomialOnly && !isPolynomialOp(op))) continue;
-    std::string rhs;
-    if (op == Op::PowI) {
-      // The exponent is data here: both of the emitter's choices, chosen at run time.
-      rhs = "k == 2 ? " + glslAffineOpExpression(op, "a", "", 2, "flag") + " : zsa_powi(a, k)";
-    } else {
-      rhs = glslAffineOpExpression(op, "a", opInfo(op).arity == 2 ? "b" : "", 0, "flag");
-    }
-    s += "    case " + std::to_string(i) + ": return " + rhs + ";  // " +
-         std::string(kOpTable[i].enumName) + "\n";
-  }
-  return s + "  }\n  return zsa_whole();\n}\n";
+      "vec4 zs_tapeAffineRule(int code, vec4 a, vec4 b, int k, inout bool flag) {\n",
+      "zsa_whole()", [&](Op op) -> std::string {
+        if (isLeaf(op) || (polynomialOnly && !isPolynomialOp(op))) return {};
+        // The exponent is data here: both of the emitter's choices, chosen at run time.
+        if (op == Op::PowI)
+          return "k == 2 ? " + glslAffineOpExpression(op, "a", "", 2, "flag") + " : zsa_powi(a, k)";
+        return glslAffineOpExpression(op, "a", opInfo(op).arity == 2 ? "b" : "", 0, "flag");
+      });
 }
 
 // base^k with the formula block's association (codegen/body_writer.cpp): the squares

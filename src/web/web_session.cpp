@@ -160,18 +160,10 @@ const std::vector<std::uint32_t>& WebSession::quickTape() const {
 }
 
 FrameUniforms WebSession::quickFrame(int width, int height) const {
-  FrameInputs in;
-  in.hierarchy = &quickGpu_;
-  std::vector<float> params;
-  if (quick_) params.assign(quick_->params.begin(), quick_->params.end());
-  in.params = params;
-  in.width = width;
-  in.height = height;
-  in.proxy = Proxy::Box;
-  in.curvatureRange = scene_.render.shading.curvatureRange;
-  FrameUniforms frame = frameUniforms(scene_.render, scene_.domain, in);
-  if (!quick_) frame.vertices = 0;
-  return frame;
+  const std::vector<float> params =
+      quick_ ? std::vector<float>(quick_->params.begin(), quick_->params.end())
+             : std::vector<float>();
+  return frameOf(quickGpu_, params, quick_.has_value(), width, height);
 }
 
 std::string WebSession::fragmentShader() const {
@@ -180,9 +172,14 @@ std::string WebSession::fragmentShader() const {
 }
 
 FrameUniforms WebSession::frame(int width, int height) const {
+  return frameOf(gpu_, params_, surface_.has_value(), width, height);
+}
+
+FrameUniforms WebSession::frameOf(const GpuHierarchy& hierarchy, std::span<const float> params,
+                                  bool drawn, int width, int height) const {
   FrameInputs in;
-  in.hierarchy = &gpu_;
-  in.params = params_;
+  in.hierarchy = &hierarchy;
+  in.params = params;
   in.width = width;
   in.height = height;
   in.proxy = Proxy::Box;
@@ -190,7 +187,7 @@ FrameUniforms WebSession::frame(int width, int height) const {
   // into without an extension; the page uses the scene's range, or 1.
   in.curvatureRange = scene_.render.shading.curvatureRange;
   FrameUniforms frame = frameUniforms(scene_.render, scene_.domain, in);
-  if (!surface_) frame.vertices = 0;
+  if (!drawn) frame.vertices = 0;
   return frame;
 }
 

@@ -124,6 +124,9 @@ class WebSession {
 
  private:
   std::string replaceScene(Scene scene, std::string importNotes);
+  // A frame's uniforms over this hierarchy and parameters (nothing drawn unless `drawn`).
+  FrameUniforms frameOf(const GpuHierarchy& hierarchy, std::span<const float> params,
+                        bool drawn, int width, int height) const;
 
   Scene scene_;
   Camera loadedCamera_;

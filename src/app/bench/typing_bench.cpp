@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <memory>
 #include <thread>
 
 #include "app/bench/bench_runner.hpp"
+#include "app/shader_warmer.hpp"
 #include "app/surface_worker.hpp"
 #include "interact/trace_budget.hpp"
 #include "pipeline/load_surface.hpp"
@@ -25,29 +25,6 @@ double msSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// The worker's half: the new formula's shader compiled and drawn once, small, into the same
-// kind of offscreen target the main thread draws to, so the driver's shader cache holds the
-// very program (variant and target formats included) the main thread then asks for.
-class WarmUp {
- public:
-  explicit WarmUp(Backend backend) : backend_(backend) {}
-  void operator()(const Scene& scene, const PreparedSurface& surface) {
-    if (!context_) {
-      ContextResult ctx = createHeadlessContext(backend_);
-      if (!ctx.context) return;  // no warm-up: the main thread compiles it all
-      context_ = std::move(ctx.context);
-      tracer_ = std::make_unique<RayTracer>();
-    }
-    if (!loadSurface(*tracer_, surface).empty()) return;
-    tracer_->drawOffscreen(scene.render, scene.domain, 16, 16);
-    glFinish();
-  }
-
- private:
-  Backend backend_;
-  std::unique_ptr<GlContext> context_;
-  std::unique_ptr<RayTracer> tracer_;  // after the context: destroyed first
-};
 
 
 }  // namespace
@@ -80,8 +57,11 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
   out.interpreterMs = msSince(start);
 
   RayTracer own;
-  auto warm = std::make_shared<WarmUp>(options.backend);
-  app::SurfaceWorker worker({}, [warm](const Scene& s, const PreparedSurface& p) { (*warm)(s, p); });
+  // The worker compiles and draws each formula's own shader in a context of its own first.
+  app::ShaderWarmer warmer(app::ShaderWarmer::Target::Offscreen, options.backend);
+  app::SurfaceWorker worker(
+      {}, [&warmer](const Scene& s, const PreparedSurface& p) { warmer.warm(s, p); },
+      [&warmer] { warmer.stop(); });
   ctx.context->makeCurrent();  // the worker's context loads its own entry points
   Scene scene = base;
   double msPerPixel = 0;  // of the last first picture: picks the next one's size

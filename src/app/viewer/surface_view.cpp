@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <chrono>
 
-#include "app/viewer/shader_warmer.hpp"
+#include "app/shader_warmer.hpp"
 #include "pipeline/load_surface.hpp"
 
 namespace zs::app {

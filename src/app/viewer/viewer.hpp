@@ -21,7 +21,7 @@
 #include "interact/key_bindings.hpp"
 #include "app/viewer/panel.hpp"
 #include "app/viewer/hover_probe.hpp"
-#include "app/viewer/shader_warmer.hpp"
+#include "app/shader_warmer.hpp"
 #include "app/viewer/surface_view.hpp"
 #include "app/surface_worker.hpp"
 #include "render/glfw_context.hpp"

@@ -1,9 +1,10 @@
 #pragma once
-// The viewer's surface worker's second job (surface_worker.hpp, its warm-up step): in a
-// headless GL context of its own, compile each new surface's program and draw it once, small,
-// into a target of the window's formats (render/view_target.hpp), so the driver's shader
-// cache holds the very program the window asks for next, and the window's compile of it
-// takes milliseconds instead of stopping the picture. When the formula box first gets the
+// The surface worker's second job (surface_worker.hpp, its warm-up step): in a headless GL
+// context of its own, compile each new surface's program and draw it once, small, into a
+// target of the formats the front end draws to (the viewer's window: render/view_target.hpp;
+// `bench --typing`: the tracer's offscreen target), so the driver's shader cache holds the
+// very program the front end asks for next, and its compile of it takes milliseconds
+// instead of stopping the picture. When the formula box first gets the
 // focus it warms the tape interpreters (pipeline/load_surface.hpp) the same way, on a thread
 // and context of their own (seconds of JIT on llvmpipe that no build waits for, paid only by
 // a session that edits a formula); the window then draws every new formula's first picture
@@ -22,7 +23,11 @@ namespace zs::app {
 
 class ShaderWarmer {
  public:
-  ShaderWarmer() = default;
+  // What the front end draws into: a ViewTarget (the viewer) or RayTracer's own offscreen
+  // target (drawOffscreen, render).
+  enum class Target { Window, Offscreen };
+  explicit ShaderWarmer(Target target = Target::Window, Backend backend = Backend::Egl)
+      : kind_(target), backend_(backend) {}
   ~ShaderWarmer();  // waits for the interpreters' thread
   ShaderWarmer(const ShaderWarmer&) = delete;
   ShaderWarmer& operator=(const ShaderWarmer&) = delete;
@@ -41,13 +46,14 @@ class ShaderWarmer {
  private:
   bool ensureContext();
 
+  Target kind_;
+  Backend backend_;
   std::unique_ptr<GlContext> context_;
   bool failed_ = false;
   std::unique_ptr<RayTracer> tracer_;
   std::unique_ptr<ViewTarget> target_;
   std::thread interpretersThread_;
   std::array<std::atomic<bool>, 2> interpretersWarm_{};
-
 };
 
 // The window's variant of a picture in a ViewTarget of 16 x 16 pixels (the size does not

@@ -1,4 +1,4 @@
-#include "app/viewer/shader_warmer.hpp"
+#include "app/shader_warmer.hpp"
 
 #include <glad/gl.h>
 
@@ -22,8 +22,8 @@ void drawWarmUp(RayTracer& tracer, ViewTarget& target, const Scene& scene) {
 bool ShaderWarmer::ensureContext() {
   if (context_) return true;
   if (failed_) return false;
-  ContextResult ctx = createHeadlessContext(Backend::Egl);
-  if (!ctx.context) {
+  ContextResult ctx = createHeadlessContext(backend_);
+  if (!ctx.context) {  // no warm-up: the front end compiles it all
     failed_ = true;
     return false;
   }
@@ -35,7 +35,13 @@ bool ShaderWarmer::ensureContext() {
 
 void ShaderWarmer::warm(const Scene& scene, const PreparedSurface& surface) {
   if (!ensureContext()) return;
-  if (loadSurface(*tracer_, surface).empty()) drawWarmUp(*tracer_, *target_, scene);
+  if (!loadSurface(*tracer_, surface).empty()) return;
+  if (kind_ == Target::Window) {
+    drawWarmUp(*tracer_, *target_, scene);
+  } else {
+    tracer_->drawOffscreen(scene.render, scene.domain, 16, 16);
+    glFinish();
+  }
 }
 
 void ShaderWarmer::stop() {
