@@ -25,10 +25,12 @@ double sphereDistance(const Ray& r, double& clearance) {
 }
 
 void checkSphereDepth(Backend backend, const RenderSettings& settings, int size,
-                      int level = 3, Criteria criteria = Criteria::Thesis) {
+                      int level = 3, Criteria criteria = Criteria::Thesis,
+                      TracingMethod method = TracingMethod::Auto, double tolerance = 1e-4) {
   std::string error;
   ASSERT_NE(test::context(backend, error), nullptr) << error;
   test::SurfaceSpec spec{"x^2+y^2+z^2-1", {}, level, {}, criteria};
+  spec.method = method;
   auto tracer = test::makeTracer(spec, error);
   ASSERT_NE(tracer, nullptr) << error;
   const Frame frame = tracer->render(settings, spec.domain, size, size);
@@ -52,11 +54,12 @@ void checkSphereDepth(Backend backend, const RenderSettings& settings, int size,
       ++covered;
       ASSERT_TRUE(std::isfinite(depth)) << "pixel " << i << "," << j << " missed";
       worst = std::max(worst, std::abs(depth - expected));
-      EXPECT_NEAR(depth, expected, 1e-4) << "pixel " << i << "," << j;
+      EXPECT_NEAR(depth, expected, tolerance) << "pixel " << i << "," << j;
     }
   EXPECT_GT(covered, size * size / 8);
   EXPECT_LT(grazing, size);
   ::testing::Test::RecordProperty("worst_depth_error", std::to_string(worst));
+  std::printf("  worst depth error %.3g\n", worst);
 }
 
 TEST(Depth, UnitSphereFromZ3MatchesAnalyticDistanceEgl) {
@@ -84,6 +87,27 @@ TEST(Depth, SupersamplingKeepsThePixelCenterDepth) {
   s.samples = 2;  // an even grid has no center sample: the depth ray is extra
   checkSphereDepth(Backend::Egl, s, 48);
 }
+
+// The same sphere through each tracing method, perspective and orthographic. Bernstein and
+// sampling place a simple root far below tracing.epsilon; the interval method refines it to
+// within epsilon (docs/renderer.md, "The interval method").
+class DepthOfEveryMethod : public ::testing::TestWithParam<TracingMethod> {};
+
+TEST_P(DepthOfEveryMethod, UnitSphere) {
+  RenderSettings s = test::testSettings({0.3, -0.2, 3});
+  const double tolerance =
+      GetParam() == TracingMethod::Interval ? s.tracing.epsilon : 1e-4;
+  checkSphereDepth(Backend::Egl, s, 64, 3, Criteria::Thesis, GetParam(), tolerance);
+  s = test::testSettings({1.2, -0.7, 2.5});
+  s.camera.projection = Projection::Orthographic;
+  s.camera.height = 2.6;
+  checkSphereDepth(Backend::Egl, s, 48, 3, Criteria::Thesis, GetParam(), tolerance);
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, DepthOfEveryMethod,
+                         ::testing::Values(TracingMethod::Sampling, TracingMethod::Bernstein,
+                                           TracingMethod::Interval),
+                         [](const auto& info) { return std::string(tracingMethodName(info.param)); });
 
 }  // namespace
 }  // namespace zs

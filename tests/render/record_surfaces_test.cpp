@@ -1,15 +1,18 @@
 // The record surfaces of examples/ (the most nodes known for their degree: singular points
-// crowd the picture, and float rounding is hardest there) traced by the Bernstein method, as
-// the app traces them, against the double-precision reference of reference_comparison.hpp:
-// no pixel may be drawn where F has no root within the tangent tolerance, and none left
-// empty where it has one. Each in its own framing, and Labs septic also in SURFER's: the
-// box of half-width 9.55 (the clipping radius of SURFER's gallery scene), whose long rays
-// make the ray polynomial's coefficients largest. (The interval method, which traces these
-// only when asked, still draws a few pixels where its float forms cannot decide: see
-// docs/renderer.md, "The interval method".)
+// crowd the picture, and float rounding is hardest there) traced by every method against the
+// double-precision reference of reference_comparison.hpp. Each in its own framing, and Labs
+// septic also in SURFER's: the box of half-width 9.55 (the clipping radius of SURFER's
+// gallery scene), whose long rays make the ray polynomial's coefficients largest.
+// - Bernstein (the app's method for these) and sampling: no pixel may be drawn where F has
+//   no root within the tangent tolerance, and none left empty where it has one.
+// - The interval method (for polynomials only when asked) misses none, but where a ray
+//   passes within about 1e-2 of a crease its float forms cannot decide and it draws a hit
+//   there (docs/renderer.md, "The interval method", 3.): at most 2 % of the hits.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <string>
+#include <tuple>
 #include <variant>
 #include <vector>
 
@@ -30,14 +33,19 @@ struct RecordCase {
   int size = 40;
 };
 
-class RecordSurfaces : public ::testing::TestWithParam<RecordCase> {};
+class RecordSurfaces
+    : public ::testing::TestWithParam<std::tuple<RecordCase, TracingMethod>> {};
 
 TEST_P(RecordSurfaces, NoPixelWithoutSurfaceAndNoneMissing) {
-  const RecordCase& record = GetParam();
+  const RecordCase& record = std::get<0>(GetParam());
+  const TracingMethod method = std::get<1>(GetParam());
+  // Large programs drawn once, small: llvmpipe's optimization passes would cost more than
+  // the draw (Mesa reads this when the driver starts, in this test's own process).
+  setenv("GALLIVM_PERF", "nopt", /*overwrite=*/0);
   std::string error;
   ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
   std::vector<std::string> sets = record.sets;
-  sets.push_back("tracing.method=\"bernstein\"");
+  sets.push_back(std::string("tracing.method=\"") + tracingMethodName(method) + "\"");
   std::optional<Scene> scene =
       app::loadSceneArgs({test::sourceDir() + "/examples/" + record.file, sets});
   ASSERT_TRUE(scene);
@@ -47,7 +55,7 @@ TEST_P(RecordSurfaces, NoPixelWithoutSurfaceAndNoneMissing) {
   ASSERT_TRUE(std::holds_alternative<PreparedSurface>(prepared))
       << std::get<std::string>(prepared);
   const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
-  ASSERT_EQ(surface.method, TracingMethod::Bernstein) << surface.methodWarning;
+  ASSERT_EQ(surface.method, method) << surface.methodWarning;
   auto tracer = std::make_unique<RayTracer>();
   ASSERT_EQ(loadSurface(*tracer, surface), "");
   const int size = record.size;
@@ -56,21 +64,31 @@ TEST_P(RecordSurfaces, NoPixelWithoutSurfaceAndNoneMissing) {
 
   const test::ReferenceCounts c = test::compareWithReference(*scene, surface, frame, size);
   EXPECT_GT(c.hits, size * size / 10) << "the reference sees the surface";
-  EXPECT_EQ(c.ghost, 0) << c.details;
+  if (method == TracingMethod::Interval) {
+    EXPECT_LE(c.ghost, c.hits / 50) << c.details;
+  } else {
+    EXPECT_EQ(c.ghost, 0) << c.details;
+  }
   EXPECT_EQ(c.missed, 0) << c.details;
-  std::printf("  %s: %d reference hits, %d left out\n", record.name, c.hits, c.leftOut);
+  std::printf("  %s, %s: %d reference hits, %d left out, %d ghost\n", record.name,
+              tracingMethodName(method), c.hits, c.leftOut, c.ghost);
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Examples, RecordSurfaces,
-    ::testing::Values(
+    ::testing::Combine(::testing::Values(
         RecordCase{"LabsSepticInSurfersBox", "labs-septic.surf", {"domain.radius=9.55"}, true},
         RecordCase{"LabsSeptic", "labs-septic.surf", {}},
         RecordCase{"EndrassOctic", "endrass-octic.surf", {}},
         RecordCase{"ChmutovOctic", "chmutov-octic.surf", {}},
         RecordCase{"BarthDecic", "barth-decic.surf", {}},
         RecordCase{"SartiDodecic", "sarti-dodecic.surf", {}, false, 32}),
-    [](const auto& info) { return std::string(info.param.name); });
+        ::testing::Values(TracingMethod::Sampling, TracingMethod::Bernstein,
+                          TracingMethod::Interval)),
+    [](const auto& info) {
+      return std::string(std::get<0>(info.param).name) + "_" +
+             tracingMethodName(std::get<1>(info.param));
+    });
 
 }  // namespace
 }  // namespace zs
