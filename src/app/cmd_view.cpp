@@ -1,6 +1,6 @@
 // `zeroset view [SCENE|FORMULA] [--set KEY=VALUE]... [--output-dir DIR] [--drag-scale N]
-// [--log]`: the interactive viewer (docs/viewer.md). Without an input it opens on the first
-// example surface.
+// [--log] [--kiosk [--kiosk-idle S] [--kiosk-max-degree N]]`: the interactive viewer
+// (docs/viewer.md). Without an input it opens on the first example surface.
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -19,6 +19,8 @@ struct ViewArgs {
   std::string outputDir;
   int dragScale = 0;
   bool log = false;
+  bool kiosk = false;
+  interact::KioskPolicy kioskPolicy;
 };
 
 int runView(const ViewArgs& args) {
@@ -47,6 +49,7 @@ int runView(const ViewArgs& args) {
                                               : ".";
   options.dragScale = args.dragScale;
   options.log = args.log;
+  if (args.kiosk) options.kiosk = args.kioskPolicy;
   std::string error;
   std::unique_ptr<Viewer> viewer = Viewer::open(options, error);
   if (!viewer) {
@@ -70,6 +73,17 @@ void addViewCommand(CLI::App& app) {
                   "resolution divisor while dragging (default: adaptive, ~30 fps)")
       ->check(CLI::Range(1, 8));
   cmd->add_flag("--log", args->log, "print events (ready, builds, key actions) on stdout");
+  auto* kiosk = cmd->add_flag("--kiosk", args->kiosk,
+                              "exhibit mode: fullscreen, gallery start screen, no quit key, "
+                              "no files written, formula keyboard (docs/viewer.md)");
+  cmd->add_option("--kiosk-idle", args->kioskPolicy.idleSeconds,
+                  "kiosk: seconds without input before the start screen returns (default 210)")
+      ->check(CLI::Range(1.0, 86400.0))
+      ->needs(kiosk);
+  cmd->add_option("--kiosk-max-degree", args->kioskPolicy.maxDegree,
+                  "kiosk: highest degree of a typed polynomial (default 10)")
+      ->check(CLI::Range(1, 64))
+      ->needs(kiosk);
   cmd->callback([args] { std::exit(runView(*args)); });
 }
 

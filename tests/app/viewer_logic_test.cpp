@@ -14,7 +14,9 @@
 #include "interact/arcball.hpp"
 #include "app/viewer/examples.hpp"
 #include "app/viewer/fonts.hpp"
+#include "app/viewer/formula_keyboard.hpp"
 #include "interact/key_bindings.hpp"
+#include "interact/kiosk.hpp"
 #include "process.hpp"
 #include "render/camera.hpp"
 
@@ -168,6 +170,54 @@ TEST(ViewerFont, EveryGallerySymbolHasAGlyphAtTheScreensScale) {
   for (ImWchar c : {0x2014, 0x00B2, 0x00B3, 0x03B1, 0x2264, 0x2207, 0x2080})
     EXPECT_NE(font->FindGlyphNoFallback(c), nullptr) << "U+" << std::hex << int(c);
   ImGui::DestroyContext();
+}
+
+}  // namespace
+}  // namespace zs::app
+
+namespace zs::app {
+namespace {
+
+TEST(Kiosk, RefusesQuitAndEverythingThatWritesAFile) {
+  for (const interact::KeyBinding& b : interact::keyBindings()) {
+    const bool writesOrQuits =
+        b.action == interact::Action::Quit || b.action == interact::Action::Screenshot ||
+        b.action == interact::Action::WindowShot || b.action == interact::Action::SaveScene ||
+        b.action == interact::Action::ExportMesh;
+    EXPECT_EQ(interact::kioskAllows(b.action), !writesOrQuits) << b.keyName;
+  }
+}
+
+TEST(Kiosk, RefusesPolynomialsAboveTheDegreeLimitOnly) {
+  interact::KioskPolicy policy;
+  policy.maxDegree = 4;
+  EXPECT_EQ(interact::kioskRefusal("x^4 + y^4 + z^4 - 1", policy), "");
+  EXPECT_EQ(interact::kioskRefusal("(x^2 + y^2 + z^2 - 1)^2 - x", policy), "");
+  EXPECT_NE(interact::kioskRefusal("x^5 + y - 1", policy).find("degree 5"), std::string::npos);
+  // Not a polynomial: no degree to limit. Not a formula: the parser reports it.
+  EXPECT_EQ(interact::kioskRefusal("sin(x) + y^9", policy), "");
+  EXPECT_EQ(interact::kioskRefusal("x^^2", policy), "");
+  // Cancelled terms count as the user wrote them cancelled: degree 1.
+  EXPECT_EQ(interact::kioskRefusal("x^6 - x^6 + y", policy), "");
+}
+
+TEST(FormulaKeyboard, KeysAppendAndBackspaceRemovesACharacterOrAFunction) {
+  EXPECT_EQ(pressFormulaKey("x", "^2"), "x^2");
+  EXPECT_EQ(pressFormulaKey("x+", "sin"), "x+sin(");
+  EXPECT_EQ(pressFormulaKey("x+sin(", "<-"), "x+");
+  EXPECT_EQ(pressFormulaKey("x+y", "<-"), "x+");
+  EXPECT_EQ(pressFormulaKey("x²", "<-"), "x");  // a character, not a byte
+  EXPECT_EQ(pressFormulaKey("", "<-"), "");
+  EXPECT_EQ(pressFormulaKey("x^2+y", "clear"), "");
+  // Every key a visitor can press has a place.
+  for (const char* label : {"x", "y", "z", "^2", "sin", "<-", "clear", "draw", "pi"})
+    EXPECT_TRUE(findFormulaKey(label)) << label;
+  EXPECT_FALSE(findFormulaKey(""));
+  const FormulaKeyboardLayout l = formulaKeyboardLayout(1024, 768, kViewerFontSize);
+  EXPECT_GE(l.key, 44.0f);  // a fingertip
+  const auto [x, y] = l.centre(l.rows - 1, l.columns - 1);
+  EXPECT_LT(x, 1024.0f);
+  EXPECT_LT(y, 768.0f);
 }
 
 }  // namespace

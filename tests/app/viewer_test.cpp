@@ -8,6 +8,8 @@
 #include <fstream>
 #include <variant>
 
+#include "app/viewer/fonts.hpp"
+#include "app/viewer/formula_keyboard.hpp"
 #include "scene/scene_io.hpp"
 #include "viewer_session.hpp"
 
@@ -271,6 +273,60 @@ TEST(Viewer, PlayButtonSweepsTheParameterUntilStopped) {
   // Stopped: the value stays.
   const Scene second = loadSaved(v.save());
   EXPECT_EQ(second.params, first.params);
+}
+
+}  // namespace
+}  // namespace zs::test
+
+namespace zs::test {
+namespace {
+
+int occurrences(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+    ++n;
+  return n;
+}
+
+// Kiosk mode (docs/viewer.md): fullscreen with the gallery as the start screen; the keys
+// that quit or write files refused; a typed polynomial above the degree limit refused; the
+// formula keyboard by touch (a tap is a left click); back to the start screen once idle.
+TEST(Viewer, KioskKeepsTheExhibitRunningAndReturnsToTheStartWhenIdle) {
+  ViewerSession v("kiosk", {"x^2 + y^2 + z^2 - 1", "--kiosk", "--kiosk-idle", "6",
+                            "--kiosk-max-degree", "4"});
+  START(v);
+  EXPECT_NE(v.log().find("ready 1024x768"), std::string::npos) << "fullscreen\n" << v.log();
+  EXPECT_NE(v.log().find("gallery: "), std::string::npos) << "the start screen\n" << v.log();
+  v.click(500, 300);  // on the picture: the gallery's search box lets the keys go
+  v.key("ctrl+q c shift+c ctrl+s m");
+  v.key("b");
+  ASSERT_FALSE(v.waitLog("border highlight off").empty()) << "still running\n" << v.log();
+  EXPECT_EQ(occurrences(v.log(), "not available in this exhibit"), 5) << v.log();
+  for (const auto& entry : std::filesystem::directory_iterator(v.dir())) {
+    const std::string ext = entry.path().extension().string();
+    EXPECT_TRUE(ext != ".png" && ext != ".surf" && ext != ".stl") << entry.path();
+  }
+
+  v.key("f");
+  v.key("ctrl+a");
+  v.type("x^6 + y - 1");
+  ASSERT_FALSE(v.waitLog("refused: degree 6 is more than this exhibit draws (at most 4)").empty())
+      << v.log();
+  v.key("Return");
+
+  const app::FormulaKeyboardLayout keyboard =
+      app::formulaKeyboardLayout(1024, 768, app::kViewerFontSize);
+  for (const char* label : {"clear", "x", "^2", "+", "y", "^2", "-", "1", "draw"}) {
+    const auto key = app::findFormulaKey(label);
+    ASSERT_TRUE(key) << label;
+    const auto [x, y] = keyboard.centre(key->first, key->second);
+    v.click(int(x), int(y));
+  }
+  ASSERT_FALSE(v.waitLog("built x^2+y^2-1").empty()) << v.log();
+  EXPECT_EQ(v.log().find("built x^6"), std::string::npos) << v.log();
+
+  ASSERT_FALSE(v.waitLog("idle: back to the start screen", 30).empty()) << v.log();
+  ASSERT_FALSE(v.waitLog("built x^2 + y^2 + z^2 - 1").empty()) << v.log();
 }
 
 }  // namespace

@@ -45,9 +45,11 @@ void drawFormula(PanelState& state, PanelResult& result) {
   }
   if (enter) result.formulaSubmitted = true;
   if (!state.formulaError.empty()) {
-    // The default font is monospaced, so the caret lines up under the formula text.
+    // Wrapped at the panel's edge: a kiosk's refusal is one long sentence.
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    ImGui::PushTextWrapPos(0);
     ImGui::TextUnformatted(state.formulaError.c_str());
+    ImGui::PopTextWrapPos();
     ImGui::PopStyleColor();
   }
 }
@@ -130,12 +132,14 @@ void drawMeshExport(PanelState& state, PanelResult& result) {
   if (ImGui::Button("Export mesh (M)")) result.exportMesh = true;
 }
 
-void drawKeys() {
+void drawKeys(bool kiosk) {
   if (!ImGui::CollapsingHeader("keys and mouse")) return;
   ImGui::TextUnformatted("left drag    rotate (arcball)");
   ImGui::TextUnformatted("wheel        zoom");
   ImGui::TextUnformatted("right drag   move the first point light");
-  for (const KeyBinding& b : keyBindings()) ImGui::Text("%-12s %s", b.keyName, b.description);
+  for (const KeyBinding& b : keyBindings()) {
+    if (!kiosk || kioskAllows(b.action)) ImGui::Text("%-12s %s", b.keyName, b.description);
+  }
 }
 
 }  // namespace
@@ -158,6 +162,8 @@ void checkFormulaText(PanelState& state) {
   ParseResult parsed = parseFormula(state.formula);
   if (auto* err = std::get_if<ParseError>(&parsed))
     state.formulaError = formatError(state.formula, *err);
+  else if (state.kiosk)
+    state.formulaError = kioskRefusal(state.formula, *state.kiosk);
   else
     state.formulaError.clear();
 }
@@ -178,9 +184,9 @@ PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats) 
     result.sliderActive = result.sliderActive || ImGui::IsItemActive();
     drawStats(stats);
     drawLegend(stats);
-    drawMeshExport(state, result);
+    if (!state.kiosk) drawMeshExport(state, result);
     drawSettings(scene);
-    drawKeys();
+    drawKeys(state.kiosk.has_value());
   }
   ImGui::End();
   result.sliderActive = ImGui::IsAnyItemActive() && !ImGui::GetIO().WantTextInput;

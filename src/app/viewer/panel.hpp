@@ -5,10 +5,12 @@
 // stays on screen); a slider per parameter; every render setting; the octree level,
 // criterion and domain; FPS and frame times; the key list. The caller diffs the scene to
 // decide between a redraw and a rebuild, and checks that it still loads back.
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "interact/kiosk.hpp"
 #include "scene/scene.hpp"
 
 namespace zs::app {
@@ -41,6 +43,9 @@ struct PanelState {
   bool meshCap = false;      // close the solid along the domain for printing
   // Per parameter: 0 at rest, +1 or -1 while its play button sweeps it up or down.
   std::vector<int> playing;
+  // An exhibit (--kiosk): formulas above its degree are refused like a parse error, the
+  // mesh export and the keys that write files are not shown, and the formula keyboard is.
+  std::optional<interact::KioskPolicy> kiosk;
 };
 
 struct PanelResult {
@@ -53,7 +58,8 @@ struct PanelResult {
 
 PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats);
 
-// Re-parses `state.formula` and fills state.formulaError ("" when it parses).
+// Re-parses `state.formula` and fills state.formulaError ("" when it parses and, in a
+// kiosk, is within its degree limit).
 void checkFormulaText(PanelState& state);
 
 // One step of a play button's sweep: `value` moves by `dt / seconds` of the range [lo, hi]

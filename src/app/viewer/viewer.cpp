@@ -14,6 +14,7 @@
 #include <cstdio>
 
 #include "app/viewer/fonts.hpp"
+#include "app/viewer/formula_keyboard.hpp"
 #include "interact/trace_budget.hpp"
 
 namespace zs::app {
@@ -36,6 +37,17 @@ std::unique_ptr<Viewer> Viewer::open(const ViewerOptions& options, std::string& 
   }
   v->window_ = std::move(created.context);
   glfwSetWindowUserPointer(v->window_->window(), v.get());
+  if (options.kiosk) {
+    // The whole primary screen, and a close request (a window manager's, Alt+F4) ignored:
+    // the exhibit's operator ends it with a signal.
+    if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
+      if (const GLFWvidmode* mode = glfwGetVideoMode(monitor))
+        glfwSetWindowMonitor(v->window_->window(), monitor, 0, 0, mode->width, mode->height,
+                             mode->refreshRate);
+    }
+    glfwSetWindowCloseCallback(v->window_->window(),
+                               [](GLFWwindow* w) { glfwSetWindowShouldClose(w, GLFW_FALSE); });
+  }
   glfwSwapInterval(0);  // llvmpipe frames are slow enough; vsync would only add latency
   v->view_ = std::make_unique<SurfaceView>();
 
@@ -62,9 +74,14 @@ std::unique_ptr<Viewer> Viewer::open(const ViewerOptions& options, std::string& 
   v->sceneFile_ = options.sceneFile;
   if (options.exampleIndex >= 0 && std::size_t(options.exampleIndex) < v->examples_.size()) {
     v->exampleIndex_ = options.exampleIndex;
-    v->stats_.example = std::to_string(options.exampleIndex + 1) + " of " +
-                        std::to_string(v->examples_.size()) + ": " +
-                        v->examples_[std::size_t(options.exampleIndex)].name;
+    v->startLabel_ = std::to_string(options.exampleIndex + 1) + " of " +
+                     std::to_string(v->examples_.size()) + ": " +
+                     v->examples_[std::size_t(options.exampleIndex)].name;
+    v->stats_.example = v->startLabel_;
+  }
+  if (options.kiosk) {
+    v->panel_.kiosk = options.kiosk;
+    v->openGallery();
   }
   return v;
 }
@@ -179,6 +196,7 @@ void Viewer::frame() {
     }
   }
   if (buildAt_ && Clock::now() >= *buildAt_) applyTypedFormula();
+  returnToStartIfIdle();
 
   int width = 0, height = 0;
   window_->framebufferSize(width, height);
@@ -194,6 +212,7 @@ void Viewer::frame() {
   const Scene before = scene_;
   PanelResult panel;
   if (panelVisible_) panel = drawPanel(scene_, panel_, stats_);
+  if (options_.kiosk) drawFormulaKeyboard(panel_, panel);
   if (gallery_.visible) {
     if (const int picked = drawGallery(gallery_, exampleIndex_); picked >= 0) showExampleAt(picked);
   }
@@ -220,6 +239,13 @@ void Viewer::frame() {
     warmer_->wantInterpreters(scene_);
   }
   if (scene_ != before) onSceneEdited(before);
+  if (panel.formulaEdited && options_.kiosk && options_.log) {
+    if (std::string refusal = interact::kioskRefusal(panel_.formula, *options_.kiosk);
+        !refusal.empty()) {
+      std::printf("refused: %s\n", refusal.c_str());
+      std::fflush(stdout);
+    }
+  }
   if ((panel.formulaEdited || panel.formulaSubmitted) && panel_.formulaError.empty() &&
       panel_.formula != scene_.formula) {
     // Every valid prefix shows at once through the tape interpreter. Enter builds at once;

@@ -19,6 +19,7 @@
 #include "app/viewer/examples.hpp"
 #include "app/viewer/gallery_panel.hpp"
 #include "interact/key_bindings.hpp"
+#include "interact/kiosk.hpp"
 #include "app/viewer/panel.hpp"
 #include "app/viewer/hover_probe.hpp"
 #include "app/shader_warmer.hpp"
@@ -38,6 +39,10 @@ struct ViewerOptions {
   // Print events on stdout: "ready WxH" once the first surface is on screen at full
   // resolution, "built FORMULA", and each key action's message (scripts and tests).
   bool log = false;
+  // An exhibit (docs/viewer.md, "Kiosk mode"): fullscreen; the gallery over `scene` is the
+  // start screen, and the viewer goes back to it after the policy's idle time; no quitting
+  // and no files written; typed formulas within the degree limit; the formula keyboard.
+  std::optional<interact::KioskPolicy> kiosk;
 };
 
 class Viewer {
@@ -102,6 +107,10 @@ class Viewer {
   void showExample(int delta);
   void showExampleAt(int index);
   void toggleGallery();
+  void openGallery();
+  // Kiosk mode: any input restarts the idle time; once it runs out, the start screen.
+  void noteInput();
+  void returnToStartIfIdle();
 
   // viewer_output.cpp: screenshots, saves and prompt commands
   void runPending();
@@ -171,6 +180,9 @@ class Viewer {
   bool windowShot_ = false;        // Shift+C: capture before the next swap
   std::string lastBuildError_;    // of the latest build request, "" when it is on screen
   std::filesystem::path sceneFile_;      // where the shown scene was loaded from, if anywhere
+  std::string startLabel_;               // the start scene's example label, if it is one
+  std::chrono::steady_clock::time_point lastInput_ = std::chrono::steady_clock::now();
+  bool inputSinceStart_ = false;         // kiosk: the start screen was left
   std::future<std::string> meshExport_;  // a running export's summary
 };
 

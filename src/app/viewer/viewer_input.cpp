@@ -20,16 +20,27 @@ Viewer* self(GLFWwindow* window) { return static_cast<Viewer*>(glfwGetWindowUser
 void Viewer::installCallbacks() {
   GLFWwindow* w = window_->window();
   glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int mods) {
+    self(win)->noteInput();
     if (action == GLFW_PRESS && key >= 0 && key < 512) self(win)->pressedSincePoll_.push_back(key);
     if (action == GLFW_PRESS || action == GLFW_REPEAT) self(win)->onKey(key, mods);
     self(win)->uiFrames_ = 3;
   });
   glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int button, int action, int) {
+    self(win)->noteInput();
     self(win)->onMouseButton(button, action);
   });
-  glfwSetCursorPosCallback(w, [](GLFWwindow* win, double x, double y) { self(win)->onCursor(x, y); });
-  glfwSetScrollCallback(w, [](GLFWwindow* win, double, double dy) { self(win)->onScroll(dy); });
-  glfwSetCharCallback(w, [](GLFWwindow* win, unsigned) { self(win)->uiFrames_ = 3; });
+  glfwSetCursorPosCallback(w, [](GLFWwindow* win, double x, double y) {
+    self(win)->noteInput();
+    self(win)->onCursor(x, y);
+  });
+  glfwSetScrollCallback(w, [](GLFWwindow* win, double, double dy) {
+    self(win)->noteInput();
+    self(win)->onScroll(dy);
+  });
+  glfwSetCharCallback(w, [](GLFWwindow* win, unsigned) {
+    self(win)->noteInput();
+    self(win)->uiFrames_ = 3;
+  });
   glfwSetWindowRefreshCallback(w, [](GLFWwindow* win) { self(win)->uiFrames_ = 3; });
   glfwSetFramebufferSizeCallback(w, [](GLFWwindow* win, int, int) { self(win)->dirty_ = true; });
 }
@@ -113,8 +124,15 @@ void Viewer::showExample(int delta) {
 }
 
 void Viewer::toggleGallery() {
-  gallery_.visible = !gallery_.visible;
-  if (!gallery_.visible) return;
+  if (gallery_.visible) {
+    gallery_.visible = false;
+    return;
+  }
+  openGallery();
+}
+
+void Viewer::openGallery() {
+  gallery_.visible = true;
   // Described on first use: reading every example's file is not worth it for a viewer that
   // never opens the gallery.
   if (gallery_.entries.size() != examples_.size()) gallery_.entries = describeExamples(examples_);
@@ -123,6 +141,33 @@ void Viewer::toggleGallery() {
     std::printf("gallery: %zu examples\n", gallery_.entries.size());
     std::fflush(stdout);
   }
+}
+
+void Viewer::noteInput() {
+  lastInput_ = std::chrono::steady_clock::now();
+  inputSinceStart_ = true;
+}
+
+void Viewer::returnToStartIfIdle() {
+  if (!options_.kiosk || !inputSinceStart_) return;
+  const std::chrono::duration<double> idle = std::chrono::steady_clock::now() - lastInput_;
+  if (idle.count() < options_.kiosk->idleSeconds) return;
+  inputSinceStart_ = false;
+  dragButton_ = -1;
+  hover_.clear();
+  // Only a changed scene is loaded again (a visitor who just passed by leaves it as it was).
+  if (scene_ != options_.scene || panel_.formula != options_.scene.formula) {
+    setScene(options_.scene, startLabel_);
+    exampleIndex_ = options_.exampleIndex;
+    sceneFile_ = options_.sceneFile;
+  }
+  gallery_.search.clear();
+  panelVisible_ = true;
+  if (options_.log) {
+    std::printf("idle: back to the start screen\n");
+    std::fflush(stdout);
+  }
+  openGallery();
 }
 
 void Viewer::showExampleAt(int index) {
@@ -148,6 +193,14 @@ void Viewer::showExampleAt(int index) {
 
 void Viewer::runAction(Action action) {
   std::string message;
+  if (options_.kiosk && !kioskAllows(action)) {
+    stats_.status = "not available in this exhibit";
+    if (options_.log) {
+      std::printf("%s\n", stats_.status.c_str());
+      std::fflush(stdout);
+    }
+    return;
+  }
   switch (action) {
     case Action::NextExample: showExample(1); break;
     case Action::PrevExample: showExample(-1); break;

@@ -1,0 +1,33 @@
+#include "interact/kiosk.hpp"
+
+#include <variant>
+
+#include "expr/degree.hpp"
+#include "parser/parser.hpp"
+
+namespace zs::interact {
+
+bool kioskAllows(Action action) {
+  switch (action) {
+    case Action::Quit:
+    case Action::Screenshot:
+    case Action::WindowShot:
+    case Action::SaveScene:
+    case Action::ExportMesh:
+      return false;
+    default:
+      return true;
+  }
+}
+
+std::string kioskRefusal(std::string_view formula, const KioskPolicy& policy) {
+  const ParseResult parsed = parseFormula(formula);
+  const Formula* f = std::get_if<Formula>(&parsed);
+  if (!f) return "";
+  const std::optional<int> degree = polynomialDegree(f->graph, f->root);
+  if (!degree || *degree <= policy.maxDegree) return "";
+  return "degree " + std::to_string(*degree) + " is more than this exhibit draws (at most " +
+         std::to_string(policy.maxDegree) + "): try a formula of lower degree";
+}
+
+}  // namespace zs::interact
