@@ -16,7 +16,7 @@ cmake --build build-web -j"$(nproc)"
 site=build-web/site
 rm -rf "$site"
 mkdir -p "$site/examples/thesis" "$site/examples/images"
-cp web/index.html web/app.js web/renderer.js web/style.css "$site/"
+cp web/*.html web/*.js web/*.css "$site/"
 cp build-web/src/web/zeroset.js build-web/src/web/zeroset.wasm "$site/"
 cp examples/*.surf "$site/examples/"
 cp examples/thesis/*.surf "$site/examples/thesis/"

@@ -2,6 +2,7 @@
 // (zeroset.wasm: parsing, scene rules, validation, camera, shader assembly) and hands what
 // the core computes to the WebGL2 renderer. The URL contract is docs/web.md's.
 import { Renderer } from './renderer.js';
+import { startKiosk } from './kiosk.js';
 
 const $ = (id) => document.getElementById(id);
 const root = document.documentElement;
@@ -22,6 +23,8 @@ let currentExample = -1;
 let pending = null;       // the draw in flight
 let redrawQueued = false;
 let firstPictureMs = null;
+let kiosk = null;         // kiosk=1: the exhibit's policy (kiosk.js)
+let startScene = null;    // kiosk=1: the start screen's scene, as .surf text
 
 function setState(state) { root.dataset.zeroset = state; }
 
@@ -185,19 +188,24 @@ function applySetting(key, tomlValue) {
 }
 
 let typingTimer = 0;
-formulaInput.addEventListener('focus', requestInterpreters);
-formulaInput.addEventListener('input', () => {
+function buildTypedFormula() {
   clearTimeout(typingTimer);
+  if (!session) return;
+  setState('busy');
+  const error = (kiosk && kiosk.refusal(formulaInput.value)) || session.setFormula(formulaInput.value);
+  if (error) { showError(error); return; }
+  scale = 1;  // after a first picture at the reduced size
+  prepareAndDraw();
+}
+function formulaEdited() {
+  clearTimeout(typingTimer);
+  const refusal = kiosk && session ? kiosk.refusal(formulaInput.value) : '';
+  if (refusal) { showError(refusal); return; }
   if (session) showFirstPicture();
-  typingTimer = setTimeout(() => {
-    if (!session) return;
-    setState('busy');
-    const error = session.setFormula(formulaInput.value);
-    if (error) { showError(error); return; }
-    scale = 1;  // after a first picture at the reduced size
-    prepareAndDraw();
-  }, 120);
-});
+  typingTimer = setTimeout(buildTypedFormula, 120);
+}
+formulaInput.addEventListener('focus', requestInterpreters);
+formulaInput.addEventListener('input', formulaEdited);
 $('formula-form').addEventListener('submit', (e) => e.preventDefault());
 
 // ---- parameters and settings panels --------------------------------------------------
@@ -489,8 +497,8 @@ document.addEventListener('keydown', (e) => {
   switch (result.action) {
     case 'next': loadExampleAt(currentExample + 1); return;
     case 'previous': loadExampleAt(currentExample - 1); return;
-    case 'png': downloadPng(); return;
-    case 'save': saveSurf(); return;
+    case 'png': if (!kiosk) downloadPng(); return;
+    case 'save': if (!kiosk) saveSurf(); return;
     case 'formula': formulaInput.focus(); return;
     case 'panel': togglePanel(); return;
     case 'gallery': $('gallery-panel').open = !$('gallery-panel').open; return;
@@ -538,7 +546,7 @@ window.addEventListener('drop', (e) => {
   e.preventDefault();
   document.body.classList.remove('dropping');
   const f = e.dataTransfer?.files?.[0];
-  if (f) loadFile(f);
+  if (f && !kiosk) loadFile(f);
 });
 
 function saveBlob(blob, name) {
@@ -662,7 +670,12 @@ async function start() {
   renderer = new Renderer(canvas, { onRestored: () => { uploadedGeneration = -1; redraw(); } });
   core = await coreReady;
   session = new core.Session();
+  if (params.get('kiosk') === '1') {
+    kiosk = startKiosk(core, params, formulaInput,
+                       { edited: formulaEdited, submit: buildTypedFormula, idle: showStartScreen });
+  }
   for (const k of core.keys()) {
+    if (kiosk && !k.kiosk) continue;
     const li = document.createElement('li');
     li.textContent = `${k.key}: ${k.description}`;
     $('keys').append(li);
@@ -687,6 +700,10 @@ async function start() {
     else { currentExample = at; error = session.loadSurf(text, name + '.surf'); }
   } else if (params.has('formula')) {
     error = session.loadFormula(params.get('formula'));
+  } else if (kiosk && examples.length) {
+    // An exhibit starts on the gallery's first surface, as `zeroset view` does.
+    const text = await fetchText(`examples/${examples[0].name}.surf`);
+    if (text !== null) { currentExample = 0; error = session.loadSurf(text, examples[0].name + '.surf'); }
   }
   if (!error) {
     const sets = params.getAll('set');
@@ -711,6 +728,20 @@ async function start() {
     return;
   }
   showNotes(); buildParams(); buildSettings(); redraw();
+  if (kiosk) startScene = { text: session.sceneText(), example: currentExample };
+}
+
+// Kiosk mode: the scene the page opened with, the gallery open and the panel shown.
+function showStartScreen() {
+  if (!session || !startScene) return;
+  currentExample = startScene.example;
+  $('gallery-search').value = '';
+  for (const li of $('gallery').children) li.hidden = false;
+  $('gallery-panel').open = true;
+  if ($('panel').hidden) togglePanel();
+  scale = 1;
+  loadText(startScene.text, 'start.surf');
+  root.dataset.kioskStarts = String(Number(root.dataset.kioskStarts || 0) + 1);
 }
 
 new ResizeObserver(() => { if (session) redraw(); }).observe(canvas);

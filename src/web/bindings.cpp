@@ -4,6 +4,8 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include "interact/formula_keyboard.hpp"
+#include "interact/kiosk.hpp"
 #include "interact/parameter_range.hpp"
 #include "web/web_session.hpp"
 
@@ -154,6 +156,7 @@ val keysJs() {
     val k = val::object();
     k.set("key", std::string(b.keyName));
     k.set("description", std::string(b.description));
+    k.set("kiosk", interact::kioskAllows(b.action));
     out.call<void>("push", k);
   }
   return out;
@@ -207,10 +210,40 @@ std::string formulaJs(const WebSession& s) {
   return s.scene().formula;
 }
 
+// Kiosk mode (interact/kiosk.hpp, interact/formula_keyboard.hpp): the page's defaults are
+// the viewer's.
+val kioskDefaultsJs() {
+  const interact::KioskPolicy policy;
+  val out = val::object();
+  out.set("idleSeconds", policy.idleSeconds);
+  out.set("maxDegree", policy.maxDegree);
+  return out;
+}
+
+std::string kioskRefusalJs(const std::string& formula, int maxDegree) {
+  interact::KioskPolicy policy;
+  policy.maxDegree = maxDegree;
+  return interact::kioskRefusal(formula, policy);
+}
+
+val formulaKeyRowsJs() {
+  return arrayOf(interact::formulaKeyRows(), [](const auto& row) {
+    return arrayOf(row, [](std::string_view key) { return val(std::string(key)); });
+  });
+}
+
+std::string pressFormulaKeyJs(const std::string& text, const std::string& key) {
+  return interact::pressFormulaKey(text, key);
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(zeroset) {
   emscripten::function("keys", &keysJs);
+  emscripten::function("kioskDefaults", &kioskDefaultsJs);
+  emscripten::function("kioskRefusal", &kioskRefusalJs);
+  emscripten::function("formulaKeyRows", &formulaKeyRowsJs);
+  emscripten::function("pressFormulaKey", &pressFormulaKeyJs);
   emscripten::class_<WebSession>("Session")
       .constructor<>()
       // embind passes std::string, not std::string_view

@@ -16,6 +16,7 @@
 #include "app/viewer/fonts.hpp"
 #include "app/viewer/formula_keyboard.hpp"
 #include "interact/key_bindings.hpp"
+#include "interact/formula_keyboard.hpp"
 #include "interact/kiosk.hpp"
 #include "process.hpp"
 #include "render/camera.hpp"
@@ -202,6 +203,7 @@ TEST(Kiosk, RefusesPolynomialsAboveTheDegreeLimitOnly) {
 }
 
 TEST(FormulaKeyboard, KeysAppendAndBackspaceRemovesACharacterOrAFunction) {
+  using interact::pressFormulaKey;
   EXPECT_EQ(pressFormulaKey("x", "^2"), "x^2");
   EXPECT_EQ(pressFormulaKey("x+", "sin"), "x+sin(");
   EXPECT_EQ(pressFormulaKey("x+sin(", "<-"), "x+");
@@ -209,6 +211,8 @@ TEST(FormulaKeyboard, KeysAppendAndBackspaceRemovesACharacterOrAFunction) {
   EXPECT_EQ(pressFormulaKey("x²", "<-"), "x");  // a character, not a byte
   EXPECT_EQ(pressFormulaKey("", "<-"), "");
   EXPECT_EQ(pressFormulaKey("x^2+y", "clear"), "");
+  EXPECT_EQ(pressFormulaKey("x", "draw"), "x");   // the front end submits
+  EXPECT_EQ(pressFormulaKey("x", "rm -rf"), "x");  // not a key
   // Every key a visitor can press has a place.
   for (const char* label : {"x", "y", "z", "^2", "sin", "<-", "clear", "draw", "pi"})
     EXPECT_TRUE(findFormulaKey(label)) << label;

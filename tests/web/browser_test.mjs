@@ -314,6 +314,41 @@ cases['bad-url-parameters'] = async () => {
   }
 };
 
+// Kiosk mode (kiosk=1): no file buttons and drops ignored, the formula keyboard by touch,
+// a polynomial above the degree limit refused, and the start screen again once idle.
+cases['kiosk'] = async () => {
+  const page = await openPage(`kiosk=1&idle=2&max-degree=4&size=${SIZE[0]}x${SIZE[1]}`, { touch: true });
+  await settled(page);
+  const gallery = JSON.parse(fs.readFileSync(path.join(site, 'examples', 'index.json'), 'utf8'));
+  const start = await page.evaluate(() => window.zeroset.session.formula());
+  check(start === gallery[0].formula, `the exhibit starts on "${start}", not the gallery's first`);
+  for (const id of ['download', 'open', 'save', 'share'])
+    check(!(await page.locator(`#${id}`).isVisible()), `#${id} is offered in kiosk mode`);
+  check(await page.locator('#gallery-panel').evaluate((d) => d.open), 'the gallery is not open');
+  await page.evaluate(() => {
+    const dt = new DataTransfer();
+    dt.items.add(new File(['formula = "x - y"\n'], 'dropped.surf', { type: 'text/plain' }));
+    window.dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
+  });
+  const tap = async (keys) => {
+    for (const key of keys) await page.locator(`#formula-keyboard [data-key="${key}"]`).tap();
+  };
+  await tap(['clear', 'x', '^', '6', '+', 'y']);
+  await page.waitForFunction(() => document.documentElement.dataset.zeroset === 'error');
+  const refusal = await page.textContent('#zeroset-error');
+  check(/degree 6 .*at most 4/.test(refusal), `no degree refusal: ${refusal}`);
+  await tap(['clear', 'x', '^2', '+', 'y', '^2', '-', '1', 'draw']);
+  await settled(page);
+  const typed = await page.evaluate(() => window.zeroset.session.formula());
+  check(typed === 'x^2+y^2-1', `the keyboard typed "${typed}"`);
+  await markBusy(page);
+  await page.waitForFunction(() => document.documentElement.dataset.kioskStarts === '1', null,
+                             { timeout: 10000 });
+  await settled(page);
+  const back = await page.evaluate(() => window.zeroset.session.formula());
+  check(back === start, `idle went back to "${back}", not the start screen`);
+};
+
 // A lost WebGL context comes back with the same picture.
 cases['lost-context-recovers'] = async () => {
   const page = await openPage(`example=thesis/2-cayley-cubic&size=${SIZE[0]}x${SIZE[1]}`);
@@ -480,7 +515,7 @@ cases['drop-surf-loads'] = async () => {
 const GROUPS = {
   errors: ['bad-formula-keeps-picture', 'bad-url-shows-error-above-default'],
   'files-and-layouts': ['drop-surf-loads', 'bad-file', 'embed-and-size', 'phone-layout'],
-  pointer: ['hover-shows-curvature', 'touch-drag-turns'],
+  pointer: ['hover-shows-curvature', 'touch-drag-turns', 'kiosk'],
   links: ['share-link', 'bad-url-parameters'],
   panels: ['light-edit-redraws', 'lost-context-recovers'],
 };

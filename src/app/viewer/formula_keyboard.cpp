@@ -7,42 +7,14 @@
 #include <cmath>
 #include <string_view>
 
+#include "interact/formula_keyboard.hpp"
+
 namespace zs::app {
 namespace {
 
-// What each key writes; "sin" writes "sin(". The rows of a calculator, with the variables
-// and the square on top, where a visitor starts.
-constexpr std::array<std::array<std::string_view, 9>, 4> kRows{{
-    {"x", "y", "z", "a", "^2", "^", "(", ")", "<-"},
-    {"7", "8", "9", "+", "-", "sin", "cos", "sqrt", "clear"},
-    {"4", "5", "6", "*", "/", "exp", "abs", "pi", ""},
-    {"1", "2", "3", "0", ".", "b", "c", "e", "draw"},
-}};
-
-constexpr std::array<std::string_view, 8> kFunctions{"sin", "cos", "tan", "sqrt", "exp",
-                                                     "log", "abs", "atan"};
-
-bool isFunction(std::string_view key) {
-  return std::find(kFunctions.begin(), kFunctions.end(), key) != kFunctions.end();
-}
+const interact::FormulaKeyRows& kRows = interact::formulaKeyRows();
 
 }  // namespace
-
-std::string pressFormulaKey(const std::string& text, const std::string& key) {
-  if (key == "clear") return "";
-  if (key == "<-") {
-    for (std::string_view f : kFunctions) {
-      const std::string call = std::string(f) + "(";
-      if (text.size() >= call.size() && text.compare(text.size() - call.size(), call.size(), call) == 0)
-        return text.substr(0, text.size() - call.size());
-    }
-    std::size_t end = text.size();
-    // One character, not one byte: step back over UTF-8 continuation bytes.
-    while (end > 0 && (static_cast<unsigned char>(text[end - 1]) & 0xC0) == 0x80) --end;
-    return text.substr(0, end > 0 ? end - 1 : 0);
-  }
-  return text + key + (isFunction(key) ? "(" : "");
-}
 
 std::pair<float, float> FormulaKeyboardLayout::centre(int row, int column) const {
   return {left + padding + float(column) * (key + gapX) + key / 2,
@@ -52,8 +24,8 @@ std::pair<float, float> FormulaKeyboardLayout::centre(int row, int column) const
 FormulaKeyboardLayout formulaKeyboardLayout(float displayWidth, float displayHeight,
                                             float fontSize) {
   FormulaKeyboardLayout l;
-  l.rows = int(kRows.size());
-  l.columns = int(kRows[0].size());
+  l.rows = interact::kFormulaKeyRows;
+  l.columns = interact::kFormulaKeyColumns;
   l.key = std::max(44.0f, fontSize * 2.8f);  // a fingertip and more
   l.gapX = l.gapY = std::round(l.key / 8);
   l.padding = l.gapX;
@@ -98,7 +70,7 @@ void drawFormulaKeyboard(PanelState& state, PanelResult& result) {
           result.formulaSubmitted = true;
           continue;
         }
-        state.formula = pressFormulaKey(state.formula, label);
+        state.formula = interact::pressFormulaKey(state.formula, label);
         checkFormulaText(state);
         result.formulaEdited = true;
       }

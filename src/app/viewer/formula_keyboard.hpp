@@ -1,9 +1,9 @@
 #pragma once
-// The formula keyboard of kiosk mode: a window of keys big enough for a finger (a touch
-// screen's tap reaches the viewer as a left click) that writes into the panel's formula box
-// at its end. Takes the panel's state; puts out what typing in the box would: the edit
-// (parsed and checked at once, so the first picture follows every key) and, for the draw
-// key, the submission.
+// The formula keyboard of kiosk mode (interact/formula_keyboard.hpp) as a window of keys
+// big enough for a finger (a touch screen's tap reaches the viewer as a left click) that
+// writes into the panel's formula box at its end. Takes the panel's state; puts out what
+// typing in the box would: the edit (parsed and checked at once, so the first picture
+// follows every key) and, for the draw key, the submission.
 #include <optional>
 #include <string>
 #include <utility>
@@ -29,9 +29,5 @@ FormulaKeyboardLayout formulaKeyboardLayout(float displayWidth, float displayHei
 
 // The row and column of the key labelled `label` ("x", "^2", "draw"...), if there is one.
 std::optional<std::pair<int, int>> findFormulaKey(const std::string& label);
-
-// The text after one key of the keyboard: `key` appended, or for "<-" the last character
-// (or the last function name with its parenthesis) removed, or for "clear" nothing left.
-std::string pressFormulaKey(const std::string& text, const std::string& key);
 
 }  // namespace zs::app

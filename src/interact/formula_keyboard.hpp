@@ -1,0 +1,23 @@
+#pragma once
+// The formula keyboard of kiosk mode, shared by the viewer (ImGui) and the web page (HTML
+// buttons): its keys in rows, and what a key does to the formula's text. A visitor with a
+// touch screen and no keyboard types with it.
+#include <array>
+#include <string>
+#include <string_view>
+
+namespace zs::interact {
+
+// Labels row by row; "" is a gap. "sin" writes "sin(", "<-" deletes, "clear" empties,
+// "draw" submits (the front end's job), every other key writes its label.
+inline constexpr int kFormulaKeyRows = 4, kFormulaKeyColumns = 9;
+using FormulaKeyRows =
+    std::array<std::array<std::string_view, kFormulaKeyColumns>, kFormulaKeyRows>;
+const FormulaKeyRows& formulaKeyRows();
+
+// The text after one key: `key` appended, or for "<-" the last character (or the last
+// function name with its parenthesis) removed, or for "clear" nothing left. "draw" and
+// unknown labels leave it as it is.
+std::string pressFormulaKey(const std::string& text, std::string_view key);
+
+}  // namespace zs::interact
