@@ -7,6 +7,8 @@
 // the reason comes back.
 #include <string>
 
+struct ImFont;
+
 namespace zs::app {
 
 // Points of the panel's text at a content scale of 1.
@@ -16,7 +18,12 @@ inline constexpr float kViewerFontSize = 15.0f;
 std::string findViewerFont();
 
 // Call after ImGui::CreateContext and before the first frame. "" on success, else why
-// ImGui's built-in font (ASCII only, 13 px) is used.
+// ImGui's built-in font (ASCII only, 13 px) is used. Also loads DejaVu Sans Mono beside it
+// for formulas (formulaFont).
 std::string loadViewerFont(float contentScale);
+
+// The monospaced font of the formula box and its error, so the caret under a message lines
+// up with the character it points at; the default font where none was loaded.
+ImFont* formulaFont();
 
 }  // namespace zs::app

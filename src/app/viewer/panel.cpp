@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <variant>
 
+#include "app/viewer/fonts.hpp"
 #include "interact/key_bindings.hpp"
 #include "parser/parser.hpp"
 #include "scene/scene_io.hpp"
@@ -37,6 +38,7 @@ void drawFormula(PanelState& state, PanelResult& result) {
     state.focusFormula = false;
   }
   ImGui::SetNextItemWidth(-1);
+  ImGui::PushFont(formulaFont());
   const bool enter = ImGui::InputText("##formula", &state.formula,
                                       ImGuiInputTextFlags_EnterReturnsTrue);
   if (ImGui::IsItemEdited()) {
@@ -45,13 +47,15 @@ void drawFormula(PanelState& state, PanelResult& result) {
   }
   if (enter) result.formulaSubmitted = true;
   if (!state.formulaError.empty()) {
-    // Wrapped at the panel's edge: a kiosk's refusal is one long sentence.
+    // In the box's monospaced font, so the caret stands under the character it means;
+    // wrapped at the panel's edge (a kiosk's refusal is one long sentence).
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
     ImGui::PushTextWrapPos(0);
     ImGui::TextUnformatted(state.formulaError.c_str());
     ImGui::PopTextWrapPos();
     ImGui::PopStyleColor();
   }
+  ImGui::PopFont();
 }
 
 // Seconds for one sweep from one end of a slider to the other.
