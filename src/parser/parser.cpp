@@ -12,6 +12,47 @@ namespace zs {
 
 namespace {
 
+// What the grammar builds, two ways: the expression graph (folded and shared, for every
+// stage that computes) or the syntax tree (as written, for typesetting).
+struct GraphBuilder {
+  using Id = NodeId;
+  Graph* g;
+  Id number(double v, std::string_view) { return g->constant(v); }
+  Id variable(int axis) { return g->var(axis); }
+  Id namedConstant(std::string_view, double v) { return g->constant(v); }
+  Id param(std::string_view name) { return g->param(name); }
+  Id unary(Op op, Id a) { return g->unary(op, a); }
+  Id binary(Op op, Id a, Id b, bool /*implicit*/ = false) { return g->binary(op, a, b); }
+  Id equation(Id lhs, Id rhs) { return g->binary(Op::Sub, lhs, rhs); }
+  // The exponent's value where it is a constant (folded), for the exponent limit.
+  std::optional<double> constantValue(Id id) const {
+    const Node& n = (*g)[id];
+    return n.op == Op::Const ? std::optional<double>(n.value) : std::nullopt;
+  }
+};
+
+struct SyntaxBuilder {
+  using Id = int;
+  SyntaxTree* t;
+  Id add(SyntaxNode n) {
+    t->nodes.push_back(std::move(n));
+    return int(t->nodes.size()) - 1;
+  }
+  Id number(double, std::string_view text) { return add({SyntaxNode::Kind::Number, Op::Const, std::string(text)}); }
+  Id variable(int axis) {
+    return add({SyntaxNode::Kind::Variable, Op(int(Op::VarX) + axis), std::string(1, char('x' + axis))});
+  }
+  Id namedConstant(std::string_view name, double) { return add({SyntaxNode::Kind::Constant, Op::Const, std::string(name)}); }
+  Id param(std::string_view name) { return add({SyntaxNode::Kind::Param, Op::Param, std::string(name)}); }
+  Id unary(Op op, Id a) { return add({SyntaxNode::Kind::Operation, op, "", a}); }
+  Id binary(Op op, Id a, Id b, bool implicit = false) {
+    return add({SyntaxNode::Kind::Operation, op, "", a, b, implicit});
+  }
+  Id equation(Id lhs, Id rhs) { return add({SyntaxNode::Kind::Equation, Op::Sub, "", lhs, rhs}); }
+  // parseSyntax reads only text parseFormula accepted: the limit is checked there.
+  std::optional<double> constantValue(Id) const { return std::nullopt; }
+};
+
 // Recursive descent with an explicit depth budget: every level of nesting (group, call,
 // unary sign, exponent) costs one unit, so hostile input ends in an error, never in a stack
 // overflow. Grammar (docs/formula.md):
@@ -21,13 +62,17 @@ namespace {
 //   unary   := ('-'|'+') unary | power
 //   power   := atom ['^' unary]          right-associative through unary
 //   atom    := number | name | name '(' args ')' | '(' sum ')' | '[' sum ']'
+template <class Builder>
 class Parser {
- public:
-  Parser(std::string_view text, std::vector<Token> tokens) : text_(text), toks_(std::move(tokens)) {}
+  using NodeId = typename Builder::Id;
+  static constexpr NodeId kNoNode = -1;
 
-  ParseResult run() {
-    Formula f;
-    g_ = &f.graph;
+ public:
+  Parser(std::string_view text, std::vector<Token> tokens, Builder builder)
+      : text_(text), toks_(std::move(tokens)), b_(builder) {}
+
+  // The root, or the error.
+  std::variant<NodeId, ParseError> run() {
     NodeId lhs = sum();
     if (ok() && peek().kind == Tok::Equals) {
       const Span eq = next().span;
@@ -35,15 +80,14 @@ class Parser {
         fail(eq, "expected an expression after '='", "write F = G, e.g. x^2 + y^2 = 1");
       }
       NodeId rhs = ok() ? sum() : kNoNode;
-      if (ok()) lhs = g_->binary(Op::Sub, lhs, rhs);
+      if (ok()) lhs = b_.equation(lhs, rhs);
       if (ok() && peek().kind == Tok::Equals) {
         fail(peek().span, "a formula has at most one '='", "write F = G, meaning F - G = 0");
       }
     }
     if (ok() && peek().kind != Tok::End) unexpected("an operator or the end of the formula");
     if (!ok()) return *error_;
-    f.root = lhs;
-    return f;
+    return lhs;
   }
 
  private:
@@ -82,7 +126,7 @@ class Parser {
       const Op op = next().kind == Tok::Plus ? Op::Add : Op::Sub;
       const NodeId rhs = product();
       if (!ok()) return kNoNode;
-      acc = g_->binary(op, acc, rhs);
+      acc = b_.binary(op, acc, rhs);
     }
     return acc;
   }
@@ -99,7 +143,7 @@ class Parser {
         next();
         const NodeId rhs = unary();
         if (!ok()) return kNoNode;
-        acc = g_->binary(k == Tok::Star ? Op::Mul : Op::Div, acc, rhs);
+        acc = b_.binary(k == Tok::Star ? Op::Mul : Op::Div, acc, rhs);
       } else if (startsAtom(k)) {
         // Implicit multiplication: 2x, 3(x+1), (x+1)(x-1), 2 pi, x y.
         if (k == Tok::Number && toks_[pos_ - 1].kind == Tok::Number) {
@@ -109,7 +153,7 @@ class Parser {
         }
         const NodeId rhs = power();
         if (!ok()) return kNoNode;
-        acc = g_->binary(Op::Mul, acc, rhs);
+        acc = b_.binary(Op::Mul, acc, rhs, /*implicit=*/true);
       } else {
         break;
       }
@@ -125,7 +169,7 @@ class Parser {
       if (!ok()) return kNoNode;
       const NodeId a = unary();
       if (!ok()) return kNoNode;
-      return k == Tok::Minus ? g_->unary(Op::Neg, a) : a;
+      return k == Tok::Minus ? b_.unary(Op::Neg, a) : a;
     }
     return power();
   }
@@ -139,16 +183,15 @@ class Parser {
     const std::size_t expBegin = peek().span.begin;
     const NodeId exponent = unary();
     if (!ok()) return kNoNode;
-    const Node& e = (*g_)[exponent];
-    if (e.op == Op::Const && std::nearbyint(e.value) == e.value &&
-        std::fabs(e.value) > kMaxIntegerExponent) {
+    const std::optional<double> e = b_.constantValue(exponent);
+    if (e && std::nearbyint(*e) == *e && std::fabs(*e) > kMaxIntegerExponent) {
       fail({expBegin, toks_[pos_ - 1].span.end},
            "integer exponent " + text(expBegin, toks_[pos_ - 1].span.end) + " is too large",
            "exponents are limited to " + std::to_string(kMaxIntegerExponent) +
                " in magnitude; use exp(n*log(x)) for x > 0");
       return kNoNode;
     }
-    return g_->binary(Op::Pow, base, exponent);
+    return b_.binary(Op::Pow, base, exponent);
   }
 
   NodeId group(Tok close, std::string_view closeText) {
@@ -173,7 +216,7 @@ class Parser {
   NodeId atom() {
     const Token& t = peek();
     switch (t.kind) {
-      case Tok::Number: next(); return g_->constant(t.number);
+      case Tok::Number: next(); return b_.number(t.number, text_.substr(t.span.begin, t.span.end - t.span.begin));
       case Tok::LParen: return group(Tok::RParen, "')'");
       case Tok::LBracket: return group(Tok::RBracket, "']'");
       case Tok::Ident: return name();
@@ -206,9 +249,9 @@ class Parser {
     const Token t = next();
     const std::string_view id = text_.substr(t.span.begin, t.span.end - t.span.begin);
     const bool call = peek().kind == Tok::LParen;
-    if (id == "x" || id == "y" || id == "z") return g_->var(id[0] - 'x');
-    if (id == "pi") return g_->constant(std::numbers::pi);
-    if (id == "e") return g_->constant(std::numbers::e);
+    if (id == "x" || id == "y" || id == "z") return b_.variable(id[0] - 'x');
+    if (id == "pi") return b_.namedConstant(id, std::numbers::pi);
+    if (id == "e") return b_.namedConstant(id, std::numbers::e);
     if (auto op = functionByName(id)) {
       if (!call) {
         fail(t.span, "function '" + std::string(id) + "' needs its argument in parentheses",
@@ -221,7 +264,7 @@ class Parser {
       fail(t.span, problem->message, problem->hint);
       return kNoNode;
     }
-    return g_->param(id);  // any other name is a parameter (docs/formula.md)
+    return b_.param(id);  // any other name is a parameter (docs/formula.md)
   }
 
   NodeId callArgs(Op op, const Token& nameTok) {
@@ -257,14 +300,14 @@ class Parser {
       return kNoNode;
     }
     next();
-    return arity == 1 ? g_->unary(op, args[0]) : g_->binary(op, args[0], args[1]);
+    return arity == 1 ? b_.unary(op, args[0]) : b_.binary(op, args[0], args[1]);
   }
 
   std::string_view text_;
   std::vector<Token> toks_;
   std::size_t pos_ = 0;
   int depth_ = 0;
-  Graph* g_ = nullptr;
+  Builder b_;
   std::optional<ParseError> error_;
 };
 
@@ -281,7 +324,21 @@ ParseResult parseFormula(std::string_view text) {
   for (const Token& t : tokens) {
     if (t.kind == Tok::Error) return ParseError{t.span, t.message, t.hint};
   }
-  return Parser(text, std::move(tokens)).run();
+  Formula f;
+  auto root = Parser<GraphBuilder>(text, std::move(tokens), GraphBuilder{&f.graph}).run();
+  if (auto* error = std::get_if<ParseError>(&root)) return *error;
+  f.root = std::get<NodeId>(root);
+  return f;
+}
+
+std::variant<SyntaxTree, ParseError> parseSyntax(std::string_view text) {
+  ParseResult checked = parseFormula(text);
+  if (auto* error = std::get_if<ParseError>(&checked)) return *error;
+  SyntaxTree tree;
+  auto root = Parser<SyntaxBuilder>(text, tokenize(text), SyntaxBuilder{&tree}).run();
+  if (auto* error = std::get_if<ParseError>(&root)) return *error;
+  tree.root = std::get<int>(root);
+  return tree;
 }
 
 }  // namespace zs

@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 #include "expr/graph.hpp"
 
@@ -30,6 +31,24 @@ struct ParseError {
 using ParseResult = std::variant<Formula, ParseError>;
 
 ParseResult parseFormula(std::string_view text);
+
+// The formula as written, for typesetting (src/print): no folding, no sharing, names and
+// numbers as typed, implicit products marked, an equation kept as its two sides. Unary
+// plus and parentheses leave no node (the typesetter places parentheses by precedence).
+struct SyntaxNode {
+  enum class Kind { Number, Variable, Constant, Param, Operation, Equation };
+  Kind kind;
+  Op op;             // Operation: Neg, Add, Sub, Mul, Div, Pow or a function
+  std::string text;  // Number: as typed; Variable, Constant (pi, e), Param: the name
+  int a = -1, b = -1;  // operands: indices into SyntaxTree::nodes
+  bool implicit = false;  // Mul written without '*': 2x, x y, (x+1)(x-1)
+};
+struct SyntaxTree {
+  std::vector<SyntaxNode> nodes;  // operands before the nodes that use them
+  int root = -1;
+};
+// The same errors as parseFormula.
+std::variant<SyntaxTree, ParseError> parseSyntax(std::string_view text);
 
 // The formula, a caret line under the error's span, the message and the hint:
 //   x^^2

@@ -195,7 +195,6 @@ void Viewer::frame() {
       std::fflush(stdout);
     }
   }
-  if (buildAt_ && Clock::now() >= *buildAt_) applyTypedFormula();
   returnToStartIfIdle();
 
   int width = 0, height = 0;
@@ -207,6 +206,7 @@ void Viewer::frame() {
   if (panel_.focusFormula || gallery_.focusSearch) ImGui::GetIO().InputQueueCharacters.resize(0);
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  replayMouseButtons();
   ImGui::NewFrame();
   stats_.fps = fps_;
   const Scene before = scene_;
@@ -249,11 +249,14 @@ void Viewer::frame() {
   if ((panel.formulaEdited || panel.formulaSubmitted) && panel_.formulaError.empty() &&
       panel_.formula != scene_.formula) {
     // Every valid prefix shows at once through the tape interpreter. Enter builds at once;
-    // while typing, a pause of 150 ms does (the worker builds the latest request only).
+    // while typing, a pause of 350 ms does (the worker builds the latest request only).
     showFirstPicture();
     if (panel.formulaSubmitted) applyTypedFormula();
     else buildAt_ = Clock::now() + std::chrono::milliseconds(350);
   }
+  // After the panel has taken this frame's keys: a slow frame may hold several, and the
+  // pause is measured from the last of them, not from a prefix typed before it.
+  if (buildAt_ && Clock::now() >= *buildAt_) applyTypedFormula();
   ImGui::Render();
   traceIfNeeded(width, height);
   view_->present(width, height);

@@ -100,6 +100,10 @@ class Viewer {
   // down for one frame.
   void holdQuickKeys();    // after polling events
   void releaseHeldKeys();  // before the next poll
+  // The same for mouse buttons: two taps within one poll (a formula keyboard under a quick
+  // finger) would reach ImGui as one click, at the second tap's place. Each press and
+  // release is handed to ImGui in a frame of its own, where it happened.
+  void replayMouseButtons();  // after ImGui's NewFrame of the platform backend
   void onMouseButton(int button, int action);
   void onCursor(double x, double y);
   void onScroll(double dy);
@@ -150,7 +154,14 @@ class Viewer {
   std::optional<std::chrono::steady_clock::time_point> buildAt_;  // debounced formula build
   std::string quickFormula_;
   bool interpretersAsked_ = false;  // the worker was asked to warm the interpreters
-  std::vector<int> pressedSincePoll_, heldKeys_;  // holdQuickKeys  // the formula of the first picture on screen, "" if none
+  std::vector<int> pressedSincePoll_, heldKeys_;  // holdQuickKeys
+  struct MouseButtonEvent {
+    int button;
+    bool pressed;
+    double x, y;
+  };
+  std::deque<MouseButtonEvent> mouseButtons_;  // replayMouseButtons
+  bool buttonsDown_[3] = {false, false, false};  // the formula of the first picture on screen, "" if none
   std::chrono::steady_clock::time_point lastWheel_{};
   double msPerPixel_ = 0;  // from the latest trace, to pick the reduced scale
   double quickMsPerPixel_ = 0;  // the same for the latest first picture

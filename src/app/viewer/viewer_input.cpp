@@ -3,6 +3,7 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "interact/arcball.hpp"
@@ -27,6 +28,12 @@ void Viewer::installCallbacks() {
   });
   glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int button, int action, int) {
     self(win)->noteInput();
+    // Where the pointer was at this event: the cursor callbacks come in event order, while
+    // glfwGetCursorPos asks the X server where the pointer is now (after later motion).
+    if (button >= 0 && button < 3 && (action == GLFW_PRESS || action == GLFW_RELEASE)) {
+      Viewer* v = self(win);
+      v->mouseButtons_.push_back({button, action == GLFW_PRESS, v->cursorX_, v->cursorY_});
+    }
     self(win)->onMouseButton(button, action);
   });
   glfwSetCursorPosCallback(w, [](GLFWwindow* win, double x, double y) {
@@ -71,6 +78,17 @@ void Viewer::releaseHeldKeys() {
   io.KeyShift = io.KeysDown[GLFW_KEY_LEFT_SHIFT] || io.KeysDown[GLFW_KEY_RIGHT_SHIFT];
   io.KeyAlt = io.KeysDown[GLFW_KEY_LEFT_ALT] || io.KeysDown[GLFW_KEY_RIGHT_ALT];
   io.KeySuper = io.KeysDown[GLFW_KEY_LEFT_SUPER] || io.KeysDown[GLFW_KEY_RIGHT_SUPER];
+}
+
+void Viewer::replayMouseButtons() {
+  if (mouseButtons_.empty()) return;
+  const MouseButtonEvent e = mouseButtons_.front();
+  mouseButtons_.pop_front();
+  buttonsDown_[e.button] = e.pressed;
+  ImGuiIO& io = ImGui::GetIO();
+  for (int b = 0; b < 3; ++b) io.MouseDown[b] = buttonsDown_[b];
+  io.MousePos = ImVec2(float(e.x), float(e.y));
+  uiFrames_ = std::max(uiFrames_, 2);  // frames go on until the queue is empty
 }
 
 void Viewer::onKey(int key, int mods) {
