@@ -17,8 +17,10 @@ packages=(
   libpng-dev libimgui-dev libcli11-dev libtomlplusplus-dev libedit-dev
   libgtest-dev libgmock-dev libbenchmark-dev libmpfi-dev libmpfr-dev libgmp-dev
   xvfb xauth xdotool
-  # the viewer's font (src/app/viewer/fonts.cpp)
-  fonts-dejavu-core
+  # the viewer's font (src/app/viewer/fonts.cpp); the printed page's serif italic
+  fonts-dejavu-core fonts-dejavu-extra
+  # the printed page (src/print): cairo draws it; poppler-utils reads it back in the tests
+  libcairo2-dev poppler-utils
   # the mesh tests (tests/mesh): an independent check of the STL files
   admesh
   # the install tests (tests/install): man -l on the installed page

@@ -18,6 +18,7 @@ void addExportCommand(CLI::App& app);
 void addGalleryCommand(CLI::App& app);
 void addProbeCommand(CLI::App& app);
 void addAssembleCommand(CLI::App& app);
+void addPrintCommand(CLI::App& app);
 
 // `zeroset` with no arguments: the formula prompt (repl/prompt.hpp).
 int runPrompt();

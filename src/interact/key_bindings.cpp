@@ -15,7 +15,7 @@ namespace {
 constexpr int S = GLFW_MOD_SHIFT;
 constexpr int C = GLFW_MOD_CONTROL;
 
-constexpr std::array<KeyBinding, 25> kBindings{{
+constexpr std::array<KeyBinding, 26> kBindings{{
     {GLFW_KEY_N, 0, Action::NextExample, "N", "next example surface"},
     {GLFW_KEY_P, 0, Action::PrevExample, "P", "previous example surface"},
     {GLFW_KEY_D, 0, Action::DirLightUp, "D", "first directional light brighter (+0.1)"},
@@ -34,6 +34,7 @@ constexpr std::array<KeyBinding, 25> kBindings{{
     {GLFW_KEY_C, S, Action::WindowShot, "Shift+C", "screenshot of the window, panel included"},
     {GLFW_KEY_S, C, Action::SaveScene, "Ctrl+S", "save the current view as a .surf"},
     {GLFW_KEY_M, 0, Action::ExportMesh, "M", "export a mesh (.stl) at the panel's mesh level"},
+    {GLFW_KEY_P, C, Action::PrintPage, "Ctrl+P", "print: a PDF page with the picture, the typeset formula and the values"},
     {GLFW_KEY_F, 0, Action::FocusFormula, "F", "type a formula (focus the text box)"},
     {GLFW_KEY_H, 0, Action::TogglePanel, "H", "hide / show the panel"},
     {GLFW_KEY_G, 0, Action::ToggleGallery, "G", "gallery: search the examples, pick one"},
@@ -120,6 +121,7 @@ Effect applyAction(Action action, Scene& scene, std::string& message) {
     case Action::WindowShot:
     case Action::SaveScene:
     case Action::ExportMesh:
+    case Action::PrintPage:
     case Action::FocusFormula:
     case Action::TogglePanel:
     case Action::ToggleGallery:

@@ -15,7 +15,8 @@ enum class Action {
   DirLightUp, DirLightDown, PointLightUp, PointLightDown,
   ToggleBorder, ToggleSilhouette,
   EpsilonUp, EpsilonDown, LevelUp, LevelDown, IntervalsUp, IntervalsDown,
-  Screenshot, WindowShot, SaveScene, ExportMesh, FocusFormula, TogglePanel, ToggleGallery,
+  Screenshot, WindowShot, SaveScene, ExportMesh, PrintPage, FocusFormula, TogglePanel,
+  ToggleGallery,
   ResetView, Quit,
 };
 

@@ -14,6 +14,7 @@ bool kioskAllows(Action action) {
     case Action::WindowShot:
     case Action::SaveScene:
     case Action::ExportMesh:
+    case Action::PrintPage:
       return false;
     default:
       return true;

@@ -17,7 +17,7 @@ struct KioskPolicy {
   int maxDegree = 10;        // of typed polynomials; other formulas have no degree
 };
 
-// False for the actions an exhibit refuses: quit, screenshots, saving, mesh export.
+// False for the actions an exhibit refuses: quit, screenshots, saving, mesh export, print.
 bool kioskAllows(Action action);
 
 // "" when `formula` may be drawn, otherwise the message for the visitor (a formula that does

@@ -111,7 +111,7 @@ val paramsJs(const WebSession& s) {
 }
 
 // The viewer's actions that are the page's own (not scene edits), by the name app.js
-// handles; "" for those the page has no use for (mesh export, quit).
+// handles; "" for those the page has no use for (mesh export, print, quit).
 const char* pageAction(interact::Action action) {
   using interact::Action;
   switch (action) {
@@ -152,7 +152,9 @@ val keyJs(WebSession& s, int keyCode, int mods) {
 val keysJs() {
   val out = val::array();
   for (const interact::KeyBinding& b : interact::keyBindings()) {
-    if (b.action == interact::Action::ExportMesh || b.action == interact::Action::Quit) continue;
+    if (b.action == interact::Action::ExportMesh || b.action == interact::Action::PrintPage ||
+        b.action == interact::Action::Quit)
+      continue;
     val k = val::object();
     k.set("key", std::string(b.keyName));
     k.set("description", std::string(b.description));

@@ -184,7 +184,7 @@ TEST(Kiosk, RefusesQuitAndEverythingThatWritesAFile) {
     const bool writesOrQuits =
         b.action == interact::Action::Quit || b.action == interact::Action::Screenshot ||
         b.action == interact::Action::WindowShot || b.action == interact::Action::SaveScene ||
-        b.action == interact::Action::ExportMesh;
+        b.action == interact::Action::ExportMesh || b.action == interact::Action::PrintPage;
     EXPECT_EQ(interact::kioskAllows(b.action), !writesOrQuits) << b.keyName;
   }
 }

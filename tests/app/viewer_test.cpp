@@ -93,7 +93,7 @@ TEST(Viewer, BorderKeyTogglesTheDomainBorderHighlight) {
   EXPECT_LT(plain, highlighted / 3);
 }
 
-TEST(Viewer, MeshKeyExportsAClosedMesh) {
+TEST(Viewer, MeshAndPrintKeysWriteTheirFiles) {
   // A typed formula has no file: the mesh goes to the output folder, at the panel's level.
   ViewerSession v("mesh", {"x^2 + y^2 + z^2 - 1"});
   START(v);
@@ -103,6 +103,12 @@ TEST(Viewer, MeshKeyExportsAClosedMesh) {
   const auto file = v.dir() / "zeroset-level7-0001.stl";
   ASSERT_TRUE(std::filesystem::exists(file)) << v.log();
   EXPECT_GT(std::filesystem::file_size(file), 84u + 50u * 1000u);
+  // The printed page (docs/print.md), from its own thread and GL context.
+  v.key("ctrl+p");
+  ASSERT_FALSE(v.waitLog("printed: ").empty()) << v.log();
+  const auto page = v.dir() / "zeroset-page-0001.pdf";
+  ASSERT_TRUE(std::filesystem::exists(page)) << v.log();
+  EXPECT_EQ(readText(page).substr(0, 5), "%PDF-");
 }
 
 TEST(Viewer, LevelKeysRebuildTheOctreeAndKeepThePicture) {

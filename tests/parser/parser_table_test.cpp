@@ -165,3 +165,43 @@ TEST(ParserTable, HasEnoughRows) { EXPECT_GE(std::size(kNormal) + std::size(kErr
 
 }  // namespace
 }  // namespace zs
+
+namespace zs {
+namespace {
+
+// The syntax tree for typesetting: the formula as written.
+TEST(SyntaxTree, KeepsNumbersNamesAndSidesAsWritten) {
+  auto parsed = parseSyntax("2x + sqrt(2)/4 - pi*a = 1.5e-3");
+  ASSERT_TRUE(std::holds_alternative<SyntaxTree>(parsed));
+  const SyntaxTree& t = std::get<SyntaxTree>(parsed);
+  const SyntaxNode& root = t.nodes[std::size_t(t.root)];
+  EXPECT_EQ(root.kind, SyntaxNode::Kind::Equation);
+  EXPECT_EQ(t.nodes[std::size_t(root.b)].text, "1.5e-3");  // as typed, not 0.0015
+  int implicit = 0, sqrt = 0, pi = 0, params = 0;
+  for (const SyntaxNode& n : t.nodes) {
+    implicit += n.kind == SyntaxNode::Kind::Operation && n.op == Op::Mul && n.implicit;
+    sqrt += n.kind == SyntaxNode::Kind::Operation && n.op == Op::Sqrt;  // not folded
+    pi += n.kind == SyntaxNode::Kind::Constant && n.text == "pi";
+    params += n.kind == SyntaxNode::Kind::Param && n.text == "a";
+  }
+  EXPECT_EQ(implicit, 1);
+  EXPECT_EQ(sqrt, 1);
+  EXPECT_EQ(pi, 1);
+  EXPECT_EQ(params, 1);
+  for (std::size_t i = 0; i < t.nodes.size(); ++i) {
+    EXPECT_LT(t.nodes[i].a, int(i)) << "operands come first";
+    EXPECT_LT(t.nodes[i].b, int(i));
+  }
+}
+
+TEST(SyntaxTree, RefusesWhatTheParserRefusesWithTheSameError) {
+  for (const char* bad : {"x^^2", "sin x", "x^100000", "(x + 1", ""}) {
+    auto syntax = parseSyntax(bad);
+    auto formula = parseFormula(bad);
+    ASSERT_TRUE(std::holds_alternative<ParseError>(syntax)) << bad;
+    EXPECT_EQ(std::get<ParseError>(syntax).message, std::get<ParseError>(formula).message);
+  }
+}
+
+}  // namespace
+}  // namespace zs

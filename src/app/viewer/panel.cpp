@@ -124,9 +124,10 @@ void drawLegend(const PanelStats& s) {
   ImGui::Text("+%s", range);
 }
 
-// A mesh of the surface for printing or other tools: the level and cap, and the button
-// (the M key does the same).
-void drawMeshExport(PanelState& state, PanelResult& result) {
+// What leaves the viewer as a file: a mesh of the surface for 3-D printing or other tools
+// (its level and cap, and the button; the M key does the same) and a printed page
+// (Ctrl+P, docs/print.md).
+void drawExports(PanelState& state, PanelResult& result) {
   ImGui::Separator();
   ImGui::SetNextItemWidth(120);
   ImGui::SliderInt("mesh level", &state.meshLevel, 3, 10);
@@ -134,6 +135,7 @@ void drawMeshExport(PanelState& state, PanelResult& result) {
   ImGui::Checkbox("cap", &state.meshCap);
   ImGui::SameLine();
   if (ImGui::Button("Export mesh (M)")) result.exportMesh = true;
+  if (ImGui::Button("Print page (Ctrl+P)")) result.printPage = true;
 }
 
 void drawKeys(bool kiosk) {
@@ -188,7 +190,7 @@ PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats) 
     result.sliderActive = result.sliderActive || ImGui::IsItemActive();
     drawStats(stats);
     drawLegend(stats);
-    if (!state.kiosk) drawMeshExport(state, result);
+    if (!state.kiosk) drawExports(state, result);
     drawSettings(scene);
     drawKeys(state.kiosk.has_value());
   }

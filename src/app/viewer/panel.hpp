@@ -53,6 +53,7 @@ struct PanelResult {
   bool formulaSubmitted = false;  // Enter was pressed in the box
   bool sliderActive = false;      // a widget is being dragged: trace at reduced resolution
   bool exportMesh = false;        // the "Export mesh" button was pressed
+  bool printPage = false;         // the "Print page" button was pressed
   bool animating = false;         // a play button is sweeping a parameter
 };
 

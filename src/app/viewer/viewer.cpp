@@ -233,6 +233,7 @@ void Viewer::frame() {
   // A sweeping play button counts as a drag: reduced-resolution traces keep it fluid.
   sliderActive_ = panel.sliderActive || panel.animating;
   if (panel.exportMesh) startMeshExport();
+  if (panel.printPage) startPrint();
   // The formula box has the focus: the interpreters for first pictures are wanted now.
   if (!interpretersAsked_ && ImGui::GetIO().WantTextInput) {
     interpretersAsked_ = true;
@@ -265,6 +266,7 @@ void Viewer::frame() {
   window_->swapBuffers();
   answerWaiting();
   finishMeshExport();
+  finishPrint();
 
   if (options_.log && !readyPrinted_ && hasSurface_ && !refine_ && !worker_->busy()) {
     readyPrinted_ = true;

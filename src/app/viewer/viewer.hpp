@@ -127,6 +127,9 @@ class Viewer {
   // viewer_mesh.cpp: "Export mesh" runs on its own thread; the frame loop collects it
   void startMeshExport();
   void finishMeshExport();
+  // viewer_print.cpp: "Print page" the same way
+  void startPrint();
+  void finishPrint();
 
   ViewerOptions options_;
   std::unique_ptr<GlfwWindowContext> window_;
@@ -195,6 +198,7 @@ class Viewer {
   std::chrono::steady_clock::time_point lastInput_ = std::chrono::steady_clock::now();
   bool inputSinceStart_ = false;         // kiosk: the start screen was left
   std::future<std::string> meshExport_;  // a running export's summary
+  std::future<std::string> print_;       // a running print's message
 };
 
 }  // namespace zs::app

@@ -226,6 +226,7 @@ void Viewer::runAction(Action action) {
     case Action::WindowShot: windowShot_ = true; break;
     case Action::SaveScene: waiting_.push_back({{PromptCommand::Kind::Save, {}}, std::nullopt}); break;
     case Action::ExportMesh: startMeshExport(); break;
+    case Action::PrintPage: startPrint(); break;
     case Action::FocusFormula:
       panelVisible_ = true;
       panel_.focusFormula = true;

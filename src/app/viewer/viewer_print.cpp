@@ -1,0 +1,43 @@
+// "Print page" (the panel's button, Ctrl+P): the shown scene as a printed page (PDF, A4,
+// print/page.hpp) in the output folder, rendered and written on a thread of its own with
+// its own headless GL context, so the window stays live. The path is printed on stdout as
+// "printed: PATH".
+#include <GLFW/glfw3.h>
+
+#include <cstdio>
+
+#include "app/print_job.hpp"
+#include "app/repl/scene_edit.hpp"
+#include "app/viewer/viewer.hpp"
+
+namespace zs::app {
+
+void Viewer::startPrint() {
+  if (print_.valid()) {
+    stats_.status = "a page is still printing";
+    return;
+  }
+  PrintJob job;
+  job.scene = scene_;
+  describeForPrint(sceneFile_.string(), job.title, job.description);
+  const std::string stem = sceneFile_.empty() ? "zeroset" : sceneFile_.stem().string();
+  job.output = nextFreePath(options_.outputDir, stem + "-page", ".pdf");
+  stats_.status = "printing a page...";
+  print_ = std::async(std::launch::async, [job] {
+    const std::string error = runPrintJob(job);
+    glfwPostEmptyEvent();  // wake the loop to show it
+    return error.empty() ? "printed: " + job.output.string() + "\n" : "print failed: " + error;
+  });
+}
+
+void Viewer::finishPrint() {
+  if (!print_.valid() || print_.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+    return;
+  const std::string text = print_.get();
+  stats_.status = text.substr(0, text.find('\n'));
+  uiFrames_ = 3;
+  std::fputs(text.c_str(), stdout);
+  std::fflush(stdout);
+}
+
+}  // namespace zs::app
