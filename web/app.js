@@ -12,11 +12,13 @@ const notesBox = $('notes');
 const statusLine = $('status');
 const formulaInput = $('formula');
 
-const DRAG_SCALE = 0.5;   // resolution while the surface is being turned
 const MAX_DPR = 2;
 
 let core, session, renderer;
-let scale = 1;            // drawing-buffer scale: 1 at rest, DRAG_SCALE while dragging
+let scale = 1;            // drawing-buffer scale: 1 at rest, reducedScale() while moving
+// The cost per pixel of the latest picture and of the latest first picture (ms): the
+// viewer's time budgets pick the reduced sizes from them (src/interact/trace_budget.hpp).
+let msPerPixel = 0, quickMsPerPixel = 0;
 let fixedSize = null;     // &size=WxH
 let examples = [];
 let currentExample = -1;
@@ -49,12 +51,24 @@ function showNotes() {
 
 // ---- drawing ---------------------------------------------------------------------------
 
-function resizeCanvas() {
+// The drawing buffer's size at full resolution.
+function fullSize() {
   const dpr = Math.min(window.devicePixelRatio || 1, MAX_DPR);
   const cssW = fixedSize ? fixedSize[0] : canvas.clientWidth;
   const cssH = fixedSize ? fixedSize[1] : canvas.clientHeight;
-  const w = Math.max(1, Math.round(cssW * dpr * scale));
-  const h = Math.max(1, Math.round(cssH * dpr * scale));
+  return [Math.max(1, Math.round(cssW * dpr)), Math.max(1, Math.round(cssH * dpr))];
+}
+
+// The scale of a first picture (`first`) or of a picture while dragging: the viewer's rule.
+function reducedScale(first) {
+  const [w, h] = fullSize();
+  return 1 / core.traceScale(first, first ? quickMsPerPixel : msPerPixel, w, h);
+}
+
+function resizeCanvas() {
+  const [fullW, fullH] = fullSize();
+  const w = Math.max(1, Math.round(fullW * scale));
+  const h = Math.max(1, Math.round(fullH * scale));
   if (canvas.width !== w || canvas.height !== h) {
     canvas.width = w;
     canvas.height = h;
@@ -114,16 +128,18 @@ function showFirstPicture() {
   const h = session.quickHierarchy();
   renderer.uploadHierarchy(h.texels, h.count, 'quick');
   renderer.uploadTape(session.quickTape());
-  // At the drag's reduced size and in one piece: a keystroke's picture is small and done
-  // before the next key, so typing never cancels it half drawn.
-  scale = DRAG_SCALE;
+  // Reduced to the first picture's time budget and in one piece: a keystroke's picture is
+  // small and done before the next key, so typing never cancels it half drawn.
+  scale = reducedScale(true);
   resizeCanvas();
   quickOnScreen = true;
   const formula = formulaInput.value;
+  const pixels = canvas.width * canvas.height;
   renderer.draw((w, h) => session.quickFrame(w, h), session.frame(1, 1).background,
                 { quick: true, whole: true })
     .then((ms) => {
       if (ms === null) return;
+      quickMsPerPixel = ms / pixels;
       statusLine.textContent = `first picture · ${canvas.width}×${canvas.height} · ${ms.toFixed(1)} ms`;
       root.dataset.firstPicture = formula;
       root.dataset.firstPictures = String(Number(root.dataset.firstPictures || 0) + 1);
@@ -142,8 +158,10 @@ function redraw() {
   if (error === LINKING) { setTimeout(redraw, 25); return; }  // the first picture stays meanwhile
   if (error) { showError(error); return; }
   const bg = session.frame(1, 1).background;
+  const pixels = canvas.width * canvas.height;
   pending = renderer.draw((w, h) => session.frame(w, h), bg).then((ms) => {
     pending = null;
+    if (ms !== null) msPerPixel = ms / pixels;
     if (redrawQueued) { redrawQueued = false; redraw(); return; }
     if (ms === null) return;  // superseded or lost: a later draw sets the state
     statusLine.textContent = `${session.method()} · ${canvas.width}×${canvas.height} · ${ms.toFixed(1)} ms`;
@@ -445,7 +463,7 @@ canvas.addEventListener('pointermove', (e) => {
   } else {
     return;
   }
-  scale = DRAG_SCALE;
+  scale = reducedScale(false);
   setState('busy');
   redraw();
 });
@@ -474,7 +492,7 @@ canvas.addEventListener('wheel', (e) => {
   if (!session) return;
   const steps = -e.deltaY / (e.deltaMode === 1 ? 3 : 100);
   session.zoom(steps);
-  scale = DRAG_SCALE;
+  scale = reducedScale(false);
   setState('busy');
   redraw();
   clearTimeout(wheelTimer);

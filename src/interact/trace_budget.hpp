@@ -23,4 +23,9 @@ inline int scaleForBudget(double msPerPixel, int width, int height, double budge
 inline constexpr double kFirstPictureBudgetMs = 40;
 inline constexpr int kFirstPictureMinScale = 2, kFirstPictureMaxScale = 4;
 
+// A picture while a drag, a wheel or a slider moves it: 30 frames a second, down to a
+// quarter of the size each way.
+inline constexpr double kDragBudgetMs = 33;
+inline constexpr int kDragMinScale = 1, kDragMaxScale = 4;
+
 }  // namespace zs::interact

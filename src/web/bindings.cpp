@@ -7,6 +7,7 @@
 #include "interact/formula_keyboard.hpp"
 #include "interact/kiosk.hpp"
 #include "interact/parameter_range.hpp"
+#include "interact/trace_budget.hpp"
 #include "web/web_session.hpp"
 
 using emscripten::val;
@@ -228,6 +229,16 @@ std::string kioskRefusalJs(const std::string& formula, int maxDegree) {
   return interact::kioskRefusal(formula, policy);
 }
 
+// The divisor of each side for a picture while typing (first) or dragging, from the cost
+// per pixel of the last picture of that kind: the viewer's rule (interact/trace_budget.hpp).
+int traceScaleJs(bool first, double msPerPixel, int width, int height) {
+  using namespace interact;
+  return first ? scaleForBudget(msPerPixel, width, height, kFirstPictureBudgetMs,
+                                kFirstPictureMinScale, kFirstPictureMaxScale)
+               : scaleForBudget(msPerPixel, width, height, kDragBudgetMs, kDragMinScale,
+                                kDragMaxScale);
+}
+
 val formulaKeyRowsJs() {
   return arrayOf(interact::formulaKeyRows(), [](const auto& row) {
     return arrayOf(row, [](std::string_view key) { return val(std::string(key)); });
@@ -242,6 +253,7 @@ std::string pressFormulaKeyJs(const std::string& text, const std::string& key) {
 
 EMSCRIPTEN_BINDINGS(zeroset) {
   emscripten::function("keys", &keysJs);
+  emscripten::function("traceScale", &traceScaleJs);
   emscripten::function("kioskDefaults", &kioskDefaultsJs);
   emscripten::function("kioskRefusal", &kioskRefusalJs);
   emscripten::function("formulaKeyRows", &formulaKeyRowsJs);

@@ -128,7 +128,8 @@ int Viewer::reducedScale(int width, int height) const {
   if (options_.dragScale > 0) return options_.dragScale;
   if (msPerPixel_ <= 0) return 2;
   // The smallest divisor whose estimated trace fits a 30 fps budget.
-  return interact::scaleForBudget(msPerPixel_, width, height, 33.0, 1, 4);
+  return interact::scaleForBudget(msPerPixel_, width, height, interact::kDragBudgetMs,
+                                  interact::kDragMinScale, interact::kDragMaxScale);
 }
 
 void Viewer::traceIfNeeded(int width, int height) {
