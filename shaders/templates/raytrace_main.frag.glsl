@@ -88,9 +88,24 @@ float domainDepth(vec3 p) {
 vec3 safeInverse(vec3 d) { return 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0))); }
 
 // The color of a hit at p with (grad F, F) = g seen along rd: raytrace_shading.frag.glsl.
-// Curvature colorings leave the curvature there in rtShadeValue.
+// Curvature colorings leave the curvature there in rtShadeValue. With shading.shadows, bit i
+// of rtShadowMask set means that light i does not reach the hit being shaded.
 vec3 shade(vec3 p, vec4 g, vec3 rd);
 float rtShadeValue = 0.0;
+uint rtShadowMask = 0u;
+
+#ifdef RT_SHADOWS
+// The shadow ray of light k from p: its direction d, and how far along it the light is.
+// RT_SHADOW_RAYS (render/shading_defines.cpp) has one entry per light, compared with k
+// (constants, no array indexed at run time).
+#define RT_SHADOW_DIRECTIONAL(i, towards) if (k == (i)) { d = towards; reach = 1e30; }
+#define RT_SHADOW_POINT(i, position) if (k == (i)) { vec3 v = (position) - p; reach = length(v); d = v / max(reach, 1e-30); }
+void rtShadowRay(int k, vec3 p, out vec3 d, out float reach) {
+  d = vec3(0.0, 0.0, 1.0);
+  reach = 0.0;
+  RT_SHADOW_RAYS
+}
+#endif
 
 // The ray through image point q, in pixels from the top-left corner of the full image
 // (docs/camera.md): its origin ro and unit direction rd.
@@ -125,7 +140,15 @@ void main() {
   // Depth comes from the pixel-center ray; an even N x N grid has none, so one more ray
   // (depth only) is traced there.
   const int rays = grid + (n % 2 == 0 ? 1 : 0), centerRay = n % 2 == 0 ? grid : grid / 2;
-  const int passes = RT_REFLECTION != 0 ? 2 : 1;
+  // Passes per ray: the primary ray; with shading.shadows one shadow ray per light from its
+  // first hit (which is shaded after them); one reflection ray.
+#ifdef RT_SHADOWS
+  const int shadowPasses = RT_SHADOWS;
+#else
+  const int shadowPasses = 0;
+#endif
+  const int reflectionPass = RT_REFLECTION != 0 ? 1 + shadowPasses : -1;
+  const int passes = 1 + shadowPasses + (RT_REFLECTION != 0 ? 1 : 0);
   float alpha = clamp(rt.opacity, 0.0, 1.0), w = RT_REFLECTION != 0 ? rt.primaryWeight : 1.0;
   float depth = uintBitsToFloat(0x7F800000u);  // +inf: no hit
   float value = uintBitsToFloat(0x7FC00000u);  // NaN: no hit
@@ -156,17 +179,38 @@ void main() {
     vec4 firstG = vec4(0.0);
 
     // Pass 0: the primary ray, its hits blended front to back with the opacity (the first
-    // hit weighted w when reflecting). Pass 1: one opaque reflection ray off the first hit,
-    // weighted alpha * (1 - w). One loop, so rtMarch and its calls of F are inlined once.
+    // hit weighted w when reflecting). Passes 1 .. shadowPasses: a shadow ray from the first
+    // hit towards each light; the primary hits are shaded after the last of them. Then one
+    // opaque reflection ray off the first hit, weighted alpha * (1 - w). One loop, so
+    // rtMarch and its calls of F are inlined once.
     int pass = 0;
     float firstW = 0.0;  // the width of the segment that isolated the first hit
+#ifdef RT_SHADOWS
+    // The primary ray's hits, kept for shading after the shadow rays.
+    int keptFound = 0;
+    float keptT[RT_MAX_HITS];
+    vec4 keptG[RT_MAX_HITS];
+    rtShadowMask = 0u;
+#endif
     do {
       vec3 o = ro, d = rd;
       float tStart = beamStart, passAlpha = alpha, passScale = 1.0;
       rtFirstSegment = beamSegment;
       rtGrowth = 1.5;
       int wanted = RT_MAX_HITS;
-      if (pass == 1) {
+      int shaded = pass;  // whose hits this pass shades: 0 the primary ray's, -1 none
+#ifdef RT_SHADOWS
+      float reach = 0.0;  // a shadow ray: the distance to its light
+      if (pass >= 1 && pass <= shadowPasses) {
+        o = ro + firstT * rd;
+        rtShadowRay(pass - 1, o, d, reach);
+        tStart = max(4.0 * rt.epsilon, 1e-4 * length(rt.domainMax - rt.domainMin));  // leave the surface
+        wanted = 1;
+        rtFirstSegment = firstW;
+        rtGrowth = 2.0;  // as a reflection ray: mostly through empty space
+      }
+#endif
+      if (pass == reflectionPass) {
         vec3 nrm = length(firstG.xyz) > 0.0 ? normalize(firstG.xyz) : -rd;
         o = ro + firstT * rd;
         d = reflect(rd, dot(nrm, rd) < 0.0 ? nrm : -nrm);
@@ -183,14 +227,27 @@ void main() {
       int found = rtMarch(o, d, tStart, wanted, hitT, hitG);
       if (pass == 0 && found > 0) { firstT = hitT[0]; firstG = hitG[0]; }
       if (pass == 0) firstW = rtIsolatedWidth;
+#ifdef RT_SHADOWS
+      if (pass == 0 && found > 0 && colorRay) {  // shaded once the shadow rays are in
+        keptFound = found; keptT = hitT; keptG = hitG;
+        shaded = -1;
+      }
+      if (pass >= 1 && pass <= shadowPasses) {
+        if (found > 0 && hitT[0] < reach) rtShadowMask |= 1u << uint(pass - 1);
+        shaded = pass == shadowPasses ? 0 : -1;
+        o = ro; d = rd; found = keptFound; hitT = keptT; hitG = keptG;
+      }
+      if (pass == reflectionPass) rtShadowMask = 0u;  // its hit is lit by every light
+#endif
 
       float transmit = 1.0;
+      if (shaded >= 0) {
 #if RT_MAX_HITS == 1
       // One hit at most: shade it unconditionally (a loop would run its body twice).
       vec3 lit = shade(o + hitT[0] * d, hitG[0], d);
-      if (pass == 0 && s == centerRay) value = rtShadeValue;
+      if (shaded == 0 && s == centerRay) value = rtShadeValue;
       if (found > 0 && colorRay) {
-        color += passScale * passAlpha * ((pass == 0) ? w : 1.0) * lit;
+        color += passScale * passAlpha * ((shaded == 0) ? w : 1.0) * lit;
         transmit = 1.0 - passAlpha;
       }
 #else
@@ -202,13 +259,17 @@ void main() {
         for (int m = 0; m < RT_MAX_HITS; ++m) {
           if (m == j) { tj = hitT[m]; gj = hitG[m]; }
         }
-        float share = (pass == 0 && j == 0) ? w : 1.0;
+        float share = (shaded == 0 && j == 0) ? w : 1.0;
+#ifdef RT_SHADOWS
+        if (j > 0) rtShadowMask = 0u;  // shadows fall on the first hit
+#endif
         color += passScale * transmit * passAlpha * share * shade(o + tj * d, gj, d);
-        if (pass == 0 && j == 0 && s == centerRay) value = rtShadeValue;
+        if (shaded == 0 && j == 0 && s == centerRay) value = rtShadeValue;
         transmit *= 1.0 - passAlpha;
       }
 #endif
       color += passScale * transmit * rt.background;  // what the kept hits let through
+      }
     } while (++pass < passes && colorRay && firstT >= 0.0);
 #ifdef RT_MARKERS
     // highlights.singular: the certified singular points as small spheres, drawn where they

@@ -11,6 +11,9 @@
 //   RT_KEY_LIGHT  unit vector towards the first directional light (the singular markers).
 //   RT_COLOR      0 material, 1 Gaussian curvature, 2 mean curvature, 3 normal; a
 //                 curvature coloring leaves its value in rtShadeValue (raytrace_main's).
+//   RT_SHADOWS    shading.shadows: the entries are RT_DIRECTIONAL_SHADOWED(i, ...) and
+//                 RT_POINT_SHADOWED(i, ...), light i adding nothing where bit i of
+//                 rtShadowMask (raytrace_main's shadow rays) is set.
 #ifndef RT_LIGHTS
 #define RT_LIGHTS
 #endif
@@ -34,6 +37,8 @@ void rtAddLight(vec3 n, vec3 rd, float shininess, vec3 towards, vec3 light, inou
 // light costs one normalization per hit; a directional light's vector is a constant.
 #define RT_DIRECTIONAL(towards, light) rtAddLight(n, rd, phong.w, towards, light, diffuse, specular);
 #define RT_POINT(position, light) rtAddLight(n, rd, phong.w, normalize((position) - p), light, diffuse, specular);
+#define RT_DIRECTIONAL_SHADOWED(i, towards, light) if ((rtShadowMask & (1u << (i))) == 0u) { RT_DIRECTIONAL(towards, light) }
+#define RT_POINT_SHADOWED(i, position, light) if ((rtShadowMask & (1u << (i))) == 0u) { RT_POINT(position, light) }
 
 #if RT_COLOR == 1 || RT_COLOR == 2
 mat3 zs_FHess(vec3 p);  // generated (codegen/emit_hessian.cpp) only for these colorings

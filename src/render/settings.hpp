@@ -123,6 +123,9 @@ struct Shading {
   // The curvature shown at the ends of the color map (the map is symmetric about 0); 0 picks
   // it from the picture: the 95th percentile of |curvature| over the visible surface.
   double curvatureRange = 0;
+  // A shadow ray towards each light from the first hit, traced by the tracing method itself:
+  // a light that something blocks adds no diffuse or specular there (docs/renderer.md).
+  bool shadows = false;
 
   bool operator==(const Shading&) const = default;
 };

@@ -31,21 +31,34 @@ Vec3 towards(const Light& l) {
 }  // namespace
 
 std::string shadingDefines(const RenderSettings& s) {
-  std::string lights;
+  // With shadows each light carries its index (its bit in rtShadowMask), and RT_SHADOW_RAYS
+  // says where each one's shadow ray goes.
+  const bool shadows = s.shading.shadows;
+  std::string lights, rays;
   const Light* key = nullptr;
   int count = 0;
   for (const Light& l : s.lights.sources) {
     if (!l.enabled || count == kMaxLights) continue;
+    const std::string index = shadows ? std::to_string(count) + ", " : "";
     ++count;
     const double intensity = std::max(l.intensity, 0.0);
+    const char* shadowed = shadows ? "_SHADOWED(" : "(";
     if (l.kind == LightKind::Directional) {
       if (!key) key = &l;
-      lights += " RT_DIRECTIONAL(" + vec3(towards(l)) + ", " + vec3(l.color, intensity) + ")";
+      lights += " RT_DIRECTIONAL" + std::string(shadowed) + index + vec3(towards(l)) + ", " +
+                vec3(l.color, intensity) + ")";
+      rays += " RT_SHADOW_DIRECTIONAL(" + index + vec3(towards(l)) + ")";
     } else {
-      lights += " RT_POINT(" + vec3(l.position) + ", " + vec3(l.color, intensity) + ")";
+      lights += " RT_POINT" + std::string(shadowed) + index + vec3(l.position) + ", " +
+                vec3(l.color, intensity) + ")";
+      rays += " RT_SHADOW_POINT(" + index + vec3(l.position) + ")";
     }
   }
   std::string out = "#define RT_LIGHTS" + lights + "\n";
+  if (shadows && count > 0) {
+    out += "#define RT_SHADOWS " + std::to_string(count) + "\n";
+    out += "#define RT_SHADOW_RAYS" + rays + "\n";
+  }
   if (key) out += "#define RT_KEY_LIGHT " + vec3(towards(*key)) + "\n";
   out += "#define RT_COLOR " + std::to_string(static_cast<int>(s.shading.color)) + "\n";
   return out;

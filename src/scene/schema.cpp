@@ -96,6 +96,7 @@ const KeySpec kKeys[] = {
     {"materials.back.shininess", ZS_FIELD(render.materials.back.shininess), {0, 10000}},
     {"shading.color", kColorModeRef, kAny},
     {"shading.curvature_range", ZS_FIELD(render.shading.curvatureRange), kNonNegative},
+    {"shading.shadows", ZS_FIELD(render.shading.shadows), kAny},
     {"highlights.silhouette.enabled", ZS_FIELD(render.silhouette.enabled), kAny},
     {"highlights.silhouette.threshold", ZS_FIELD(render.silhouette.threshold), kUnit},
     {"highlights.silhouette.color", ZS_FIELD(render.silhouette.color), kUnit},

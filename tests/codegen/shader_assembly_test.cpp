@@ -1,5 +1,6 @@
 // Templates are embedded faithfully, assembled in order with #line markers, and the whole
 // fragment shader and the vertex shader pass glslang.
+#include "render/program_variant.hpp"
 #include "codegen/shader_assembly.hpp"
 
 #include <gtest/gtest.h>
@@ -89,6 +90,39 @@ TEST(ShaderAssembly, GlslEsShadersPassGlslangForEveryMethod) {
   }
   const ValidationResult vertex = validateGlsl(vertexShaderSource(ShaderDialect::Es300), Stage::Vertex);
   EXPECT_TRUE(vertex.ok) << formatInternalShaderError("GLSL ES vertex shader", vertex);
+}
+
+// The program variants the renderer and the page put in front of a shader
+// (render/program_variant.hpp): shadows with their two lights, kept hits for opacity, an
+// even sample grid, no reflection; every method, both dialects.
+TEST(ShaderAssembly, ProgramVariantsPassGlslangForEveryMethodAndDialect) {
+  const char* text = "x^4 + y^4 + z^4 - 1";
+  ParseResult parsed = parseFormula(text);
+  const Formula& f = std::get<Formula>(parsed);
+  const std::optional<GlslFormula> glsl = generate(text);
+  ASSERT_TRUE(glsl);
+  RenderSettings shadows;
+  shadows.shading.shadows = true;
+  RenderSettings layered = shadows;
+  layered.opacity = 0.5;
+  layered.tracing.hits = 3;
+  layered.samples = 2;
+  layered.reflection.enabled = false;
+  for (ShaderDialect dialect : {ShaderDialect::Gl330, ShaderDialect::Es300}) {
+    const auto poly = emitRayPolynomialGlsl(f.graph, f.root, dialect == ShaderDialect::Gl330);
+    ASSERT_TRUE(poly);
+    const std::string sources[] = {
+        assembleFragmentShader(*glsl, {}, dialect),
+        assembleFragmentShader(*glsl, emitIntervalGlsl(f.graph, f.root), {}, dialect),
+        assembleFragmentShader(*glsl, *poly, {}, dialect)};
+    for (const RenderSettings& settings : {shadows, layered}) {
+      for (const std::string& source : sources) {
+        const ValidationResult result =
+            validateGlsl(withVariantDefines(source, ProgramVariant::of(settings)), Stage::Fragment);
+        EXPECT_TRUE(result.ok) << formatInternalShaderError("fragment shader variant", result);
+      }
+    }
+  }
 }
 
 TEST(ShaderAssembly, DoublePrecisionRayPolynomialIsNotAssembledForGlslEs) {

@@ -175,3 +175,92 @@ TEST(CurvatureRange, NinetyFifthPercentileOfTheMagnitudesWithAFloor) {
 
 }  // namespace
 }  // namespace zs
+
+namespace zs {
+namespace {
+
+// shading.shadows: a ball above the floor z = -0.6 under one directional light. Where the
+// ball blocks the light the floor keeps only its ambient term; elsewhere the picture is the
+// one without shadows. Every tracing method traces the shadow rays itself.
+class Shadows : public ::testing::TestWithParam<TracingMethod> {};
+
+TEST_P(Shadows, TheBallDarkensTheFloorExactlyWhereItBlocksTheLight) {
+  std::string error;
+  ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
+  const Vec3 centre{0, 0, 0.4};
+  const double radius = 0.4, floorZ = -0.6;
+  test::SurfaceSpec spec{"(x^2+y^2+(z-0.4)^2-0.16)*(z+0.6)", {}, 2};
+  spec.method = GetParam();
+  auto tracer = test::makeTracer(spec, error);
+  ASSERT_NE(tracer, nullptr) << error;
+  RenderSettings s = test::testSettings({2.2, 1.4, 2.4});
+  s.reflection.enabled = false;
+  s.silhouette.enabled = false;
+  s.border.enabled = false;
+  Light sun;
+  sun.direction = {-0.5, -0.3, -1};  // travelling down and a little sideways
+  s.lights.sources = {sun};
+  constexpr int size = 72;
+  const Image lit = tracer->render(s, spec.domain, size, size).color;
+  s.shading.shadows = true;
+  const Frame shadowed = tracer->render(s, spec.domain, size, size);
+  ASSERT_EQ(shadowed.error, "");
+
+  // Does the line from p towards the light pass through the ball, and how clearly (the
+  // closest approach's distance from the ball's surface; negative inside)?
+  const double len = std::sqrt(0.25 + 0.09 + 1);
+  const Vec3 towards{0.5 / len, 0.3 / len, 1 / len};
+  auto clearance = [&](const Vec3& p) {
+    Vec3 oc{p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]};
+    const double b = oc[0] * towards[0] + oc[1] * towards[1] + oc[2] * towards[2];
+    const double c = oc[0] * oc[0] + oc[1] * oc[1] + oc[2] * oc[2];
+    if (b > 0) return std::sqrt(c) - radius;  // the ball is behind: never blocks
+    return std::sqrt(std::max(c - b * b, 0.0)) - radius;
+  };
+  int inShadow = 0, inLight = 0;
+  for (int j = 0; j < size; ++j) {
+    for (int i = 0; i < size; ++i) {
+      const Ray r = primaryRay(s.camera, size, size, i, j);
+      if (std::abs(r.direction[2]) < 1e-9) continue;
+      const double t = (floorZ - r.origin[2]) / r.direction[2];
+      const Vec3 p{r.origin[0] + t * r.direction[0], r.origin[1] + t * r.direction[1], floorZ};
+      // Only pixels whose first hit is the floor, well inside the domain.
+      if (t <= 0 || std::abs(p[0]) > 1.4 || std::abs(p[1]) > 1.4) continue;
+      if (std::abs(shadowed.depth.at(i, j) - t) > 1e-3) continue;  // the ball is in front
+      const double c = clearance(p);
+      const std::uint8_t* a = lit.pixel(i, j);
+      const std::uint8_t* b = shadowed.color.pixel(i, j);
+      const int before = a[0] + a[1] + a[2], after = b[0] + b[1] + b[2];
+      if (c < -0.02) {
+        ++inShadow;
+        EXPECT_LT(after, before - 60) << "pixel " << i << "," << j << " should be in shadow";
+      } else if (c > 0.02) {
+        ++inLight;
+        EXPECT_EQ(after, before) << "pixel " << i << "," << j << " should be lit";
+      }
+    }
+  }
+  EXPECT_GT(inShadow, 40);
+  EXPECT_GT(inLight, 400);
+  std::printf("  %d floor pixels in shadow, %d lit\n", inShadow, inLight);
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, Shadows,
+                         ::testing::Values(TracingMethod::Sampling, TracingMethod::Bernstein,
+                                           TracingMethod::Interval),
+                         [](const auto& info) { return std::string(tracingMethodName(info.param)); });
+
+TEST(ShadingDefines, ShadowsNumberTheLightsAndSayWhereTheirRaysGo) {
+  RenderSettings s;
+  s.shading.shadows = true;
+  const std::string d = shadingDefines(s);
+  EXPECT_NE(d.find("#define RT_SHADOWS 2\n"), std::string::npos) << d;
+  EXPECT_NE(d.find("RT_DIRECTIONAL_SHADOWED(0, "), std::string::npos) << d;
+  EXPECT_NE(d.find("RT_POINT_SHADOWED(1, "), std::string::npos) << d;
+  EXPECT_NE(d.find("RT_SHADOW_POINT(1, vec3(3.0, 3.0, 4.0))"), std::string::npos) << d;
+  s.shading.shadows = false;
+  EXPECT_EQ(shadingDefines(s).find("SHADOW"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace zs
