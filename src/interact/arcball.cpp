@@ -65,6 +65,12 @@ Vec3 orbitPoint(const Camera& view, const Vec3& point, const DragPoints& drag) {
   return fromGlm(target + q * (toGlm(point) - target));
 }
 
+Vec3 orbitDirection(const Camera& view, const Vec3& direction, const DragPoints& drag) {
+  glm::dquat q;
+  if (!dragRotation(view, drag, q)) return direction;
+  return fromGlm(q * toGlm(direction));
+}
+
 Camera zoomCamera(const Camera& camera, double wheelSteps) {
   const double factor = std::pow(0.85, wheelSteps);
   Camera out = camera;

@@ -21,6 +21,9 @@ Camera orbitCamera(const Camera& start, const DragPoints& drag);
 // `point` turned about the camera's target with the drag, as if attached to the surface.
 Vec3 orbitPoint(const Camera& view, const Vec3& point, const DragPoints& drag);
 
+// A direction (a directional light's) turned with the drag the same way.
+Vec3 orbitDirection(const Camera& view, const Vec3& direction, const DragPoints& drag);
+
 // Each wheel step towards the user moves the eye 15% closer to the target (orthographic:
 // shrinks the view height); the distance stays within [1e-3, 1e4].
 Camera zoomCamera(const Camera& camera, double wheelSteps);

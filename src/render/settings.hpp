@@ -83,10 +83,19 @@ struct Lights {
   bool operator==(const Lights&) const = default;
 };
 
-// The first light of `kind` that is on, or nullptr: what the viewer's keys and drags move.
+// The first light of `kind` that is on, or nullptr: what the viewer's keys move.
 inline Light* firstLight(Lights& lights, LightKind kind) {
   for (Light& l : lights.sources) {
     if (l.kind == kind && l.enabled) return &l;
+  }
+  return nullptr;
+}
+
+// The key light: the first light that is on, of either kind, or nullptr. The viewer's
+// right drag turns it.
+inline Light* keyLight(Lights& lights) {
+  for (Light& l : lights.sources) {
+    if (l.enabled) return &l;
   }
   return nullptr;
 }

@@ -52,6 +52,14 @@ TEST(Arcball, LightFollowsTheDragAndZoomMovesTowardsTheTarget) {
   const Vec3 light = orbitPoint(view, {3, 0, 0}, {400, 300, 300, 300, 800, 600});
   EXPECT_NEAR(length(light), 3.0, 1e-12);
   EXPECT_GT(light[2], 0.5) << "dragging left swings a light on the right towards the viewer";
+  // A directional light's direction turns the same way (about the origin, not the target).
+  Camera offCentre;
+  offCentre.target = {1, 2, 0};
+  offCentre.eye = {1, 2, 4};
+  const Vec3 turned = orbitDirection(offCentre, {3, 0, 0}, {400, 300, 300, 300, 800, 600});
+  const Vec3 moved = orbitPoint(offCentre, {4, 2, 0}, {400, 300, 300, 300, 800, 600});
+  EXPECT_NEAR(length(turned), 3.0, 1e-12);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(turned[k], moved[k] - offCentre.target[k], 1e-12);
   const Camera closer = zoomCamera(view, 1);
   EXPECT_NEAR(length(closer.eye), 4 * 0.85, 1e-12);
   EXPECT_NEAR(length(zoomCamera(view, -1000).eye), 1e4, 1e-6) << "clamped";

@@ -47,6 +47,16 @@ TEST(Viewer, DragRotatesTheCameraAroundTheTarget) {
   EXPECT_GT(distance(saved.render.camera.eye, {0, 0, 4}), 0.5) << "the eye moved";
   EXPECT_NEAR(distance(saved.render.camera.eye, saved.render.camera.target), 4.0, 1e-9)
       << "an arcball orbit keeps the distance to the target";
+  // A right drag turns the key light (the thesis' first light, directional) and not the
+  // camera: the picture is lit from elsewhere.
+  const Light sun = saved.render.lights.sources.front();
+  v.drag(3, 560, 300, 640, 260);
+  const Scene relit = loadSaved(v.save());
+  EXPECT_EQ(relit.render.camera.eye, saved.render.camera.eye);
+  const Vec3 d0 = sun.direction, d1 = relit.render.lights.sources.front().direction;
+  EXPECT_GT(distance(d0, d1), 0.1) << "the directional light turned";
+  EXPECT_NEAR(distance(d1, {0, 0, 0}), distance(d0, {0, 0, 0}), 1e-9) << "a turn, not a stretch";
+  EXPECT_GT(changed(after, v.screenshot()), 0.02);
 }
 
 TEST(Viewer, HoverShowsTheCurvaturesUnderThePointer) {

@@ -142,7 +142,7 @@ void drawKeys(bool kiosk) {
   if (!ImGui::CollapsingHeader("keys and mouse")) return;
   ImGui::TextUnformatted("left drag    rotate (arcball)");
   ImGui::TextUnformatted("wheel        zoom");
-  ImGui::TextUnformatted("right drag   move the first point light");
+  ImGui::TextUnformatted("right drag   turn the key light");
   for (const KeyBinding& b : keyBindings()) {
     if (!kiosk || kioskAllows(b.action)) ImGui::Text("%-12s %s", b.keyName, b.description);
   }

@@ -174,7 +174,7 @@ class Viewer {
   int dragButton_ = -1;
   double dragX_ = 0, dragY_ = 0, cursorX_ = 0, cursorY_ = 0;
   Camera dragCamera_;
-  Vec3 dragLight_{};
+  Vec3 dragLight_{};  // the key light's position (point) or direction at the drag's start
 
   // Frame timing for the panel.
   std::chrono::steady_clock::time_point fpsStart_ = std::chrono::steady_clock::now();

@@ -108,8 +108,8 @@ void Viewer::onMouseButton(int button, int action) {
   dragX_ = cursorX_;
   dragY_ = cursorY_;
   dragCamera_ = scene_.render.camera;
-  const Light* point = firstLight(scene_.render.lights, LightKind::Point);
-  dragLight_ = point ? point->position : Vec3{};
+  const Light* key = keyLight(scene_.render.lights);
+  dragLight_ = !key ? Vec3{} : key->kind == LightKind::Point ? key->position : key->direction;
 }
 
 void Viewer::onCursor(double x, double y) {
@@ -122,8 +122,10 @@ void Viewer::onCursor(double x, double y) {
   const DragPoints drag{dragX_, dragY_, x, y, width, height};
   if (dragButton_ == GLFW_MOUSE_BUTTON_LEFT)
     scene_.render.camera = orbitCamera(dragCamera_, drag);
-  else if (Light* point = firstLight(scene_.render.lights, LightKind::Point))
-    point->position = orbitPoint(scene_.render.camera, dragLight_, drag);
+  else if (Light* key = keyLight(scene_.render.lights))
+    (key->kind == LightKind::Point ? key->position : key->direction) =
+        key->kind == LightKind::Point ? orbitPoint(scene_.render.camera, dragLight_, drag)
+                                      : orbitDirection(scene_.render.camera, dragLight_, drag);
   dirty_ = true;
 }
 
