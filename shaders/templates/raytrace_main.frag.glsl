@@ -87,6 +87,12 @@ float domainDepth(vec3 p) {
 // 1 / d without infinities: a zero component becomes 1e30 (the slab test stays finite).
 vec3 safeInverse(vec3 d) { return 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0))); }
 
+// lights.space = "camera": a light's direction and position given in camera coordinates
+// (from the eye, x right, y up, z towards the viewer) moved into the world with the frame's
+// camera; RT_LIGHTS, RT_SHADOW_RAYS and RT_KEY_LIGHT call these (render/shading_defines.cpp).
+vec3 rtCameraVector(vec3 v) { return v.x * rt.right + v.y * rt.up - v.z * rt.forward; }
+vec3 rtCameraPoint(vec3 v) { return rt.eye + rtCameraVector(v); }
+
 // The color of a hit at p with (grad F, F) = g seen along rd: raytrace_shading.frag.glsl.
 // Curvature colorings leave the curvature there in rtShadeValue. With shading.shadows, bit i
 // of rtShadowMask set means that light i does not reach the hit being shaded.

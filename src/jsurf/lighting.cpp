@@ -1,9 +1,11 @@
 // zeroset's scene holds up to 8 lights, directional or point, each on or off, and Phong
 // materials with ambient, diffuse and specular weights per side (src/render/settings.hpp):
 // SURFER's model fits in it one to one. SURFER's ambient term is the material's ambient
-// weight alone, so lights.ambient is 1 on import. Its lights are points in camera space;
-// they are placed in the world where they stand for SURFER's camera.
+// weight alone, so lights.ambient is 1 on import. Its lights are points in camera space,
+// and stay there (lights.space = "camera"): they turn with the view, as in SURFER.
 #include "jsurf/lighting.hpp"
+
+#include "render/camera.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -48,13 +50,14 @@ void lightingToScene(const SurferScene& s, const Mat4& cameraToWorld, RenderSett
         "SURFER lights back faces with the front material's ambient intensity; "
         "zeroset uses the back material's own");
   out.lights.ambient = 1.0;
+  out.lights.space = LightSpace::Camera;
   out.lights.sources.clear();
   for (const SurferLight& l : s.lights) {
     if (isUnusedSlot(l)) continue;
     Light light;
     light.kind = LightKind::Point;
     light.enabled = l.on;
-    light.position = transformPoint(cameraToWorld, l.position);
+    light.position = worldPointToCamera(out.camera, transformPoint(cameraToWorld, l.position));
     light.intensity = l.intensity;
     light.color = l.color;
     out.lights.sources.push_back(light);
@@ -72,12 +75,12 @@ void lightingToSurfer(const RenderSettings& r, const Mat4& worldToCamera, double
   std::size_t slot = 0;
   for (const Light& l : r.lights.sources) {
     if (slot == out.lights.size()) break;  // the scene holds at most as many as SURFER
-    Vec3 world = l.position;
+    const bool fixedToCamera = r.lights.space == LightSpace::Camera;
+    Vec3 world = fixedToCamera ? cameraPointToWorld(r.camera, l.position) : l.position;
     if (l.kind == LightKind::Directional) {
-      const double n = std::sqrt(l.direction[0] * l.direction[0] + l.direction[1] * l.direction[1] +
-                                 l.direction[2] * l.direction[2]);
-      const Vec3 d =
-          n > 0 ? Vec3{l.direction[0] / n, l.direction[1] / n, l.direction[2] / n} : Vec3{0, 0, -1};
+      const Vec3 dir = fixedToCamera ? cameraVectorToWorld(r.camera, l.direction) : l.direction;
+      const double n = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+      const Vec3 d = n > 0 ? Vec3{dir[0] / n, dir[1] / n, dir[2] / n} : Vec3{0, 0, -1};
       for (int a = 0; a < 3; ++a) world[a] = -d[a] * kFarAway * radius;
       notes.push_back("directional light " + std::to_string(slot + 1) +
                       " becomes a SURFER point light far away in the same direction");

@@ -12,11 +12,15 @@
 
 namespace zs::jsurf {
 
-// `cameraToWorld` places SURFER's camera-space lights in the world.
+// SURFER's lights stay fixed to the camera (lights.space = "camera"): `cameraToWorld` takes
+// them from SURFER's camera space into the world, and `out.camera` (set first) into
+// zeroset's camera coordinates, so the first picture is lit as SURFER lights it and a
+// turned view as SURFER lights the turned surface.
 void lightingToScene(const SurferScene& surfer, const Mat4& cameraToWorld, RenderSettings& out,
                      std::vector<std::string>& notes);
 
-// `worldToCamera` is the inverse: zeroset's world lights into SURFER's camera space;
+// `worldToCamera` is the inverse: zeroset's lights (in the world, or fixed to its camera)
+// into SURFER's camera space;
 // `radius` (the clipping sphere's) sets how far away a directional light is put.
 void lightingToSurfer(const RenderSettings& render, const Mat4& worldToCamera, double radius,
                       SurferScene& out, std::vector<std::string>& notes);

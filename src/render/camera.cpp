@@ -91,4 +91,28 @@ std::array<float, 16> viewProjection(const Camera& camera, int width, int height
   return m;
 }
 
+Vec3 cameraVectorToWorld(const Camera& camera, const Vec3& v) {
+  const CameraBasis b = cameraBasis(camera);
+  Vec3 out{};
+  for (int k = 0; k < 3; ++k) out[k] = v[0] * b.right[k] + v[1] * b.up[k] - v[2] * b.forward[k];
+  return out;
+}
+
+Vec3 cameraPointToWorld(const Camera& camera, const Vec3& p) {
+  const CameraBasis b = cameraBasis(camera);
+  const Vec3 v = cameraVectorToWorld(camera, p);
+  return {b.eye[0] + v[0], b.eye[1] + v[1], b.eye[2] + v[2]};
+}
+
+Vec3 worldVectorToCamera(const Camera& camera, const Vec3& v) {
+  const CameraBasis b = cameraBasis(camera);
+  auto dot = [&](const Vec3& a) { return v[0] * a[0] + v[1] * a[1] + v[2] * a[2]; };
+  return {dot(b.right), dot(b.up), -dot(b.forward)};
+}
+
+Vec3 worldPointToCamera(const Camera& camera, const Vec3& p) {
+  const CameraBasis b = cameraBasis(camera);
+  return worldVectorToCamera(camera, {p[0] - b.eye[0], p[1] - b.eye[1], p[2] - b.eye[2]});
+}
+
 }  // namespace zs

@@ -19,6 +19,13 @@ struct CameraBasis {
 // the view direction is replaced by the world axis least aligned with it (documented).
 CameraBasis cameraBasis(const Camera& camera);
 
+// Camera coordinates (lights.space = "camera"): from the eye, x right, y up, z towards the
+// viewer, in the world's units. A vector (a direction) and a point into the world, and back.
+Vec3 cameraVectorToWorld(const Camera& camera, const Vec3& v);
+Vec3 cameraPointToWorld(const Camera& camera, const Vec3& p);
+Vec3 worldVectorToCamera(const Camera& camera, const Vec3& v);
+Vec3 worldPointToCamera(const Camera& camera, const Vec3& p);
+
 struct Ray {
   Vec3 origin{};
   Vec3 direction{};  // unit length

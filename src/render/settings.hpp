@@ -53,6 +53,8 @@ enum class LightKind { Directional, Point };
 // One light source. A directional light shines from infinitely far along `direction`; a
 // point light from `position`, with no falloff (SURFER's lights have none either). Both keep
 // their unused vector, so switching the kind back and forth loses nothing.
+enum class LightSpace { World, Camera };
+
 struct Light {
   LightKind kind = LightKind::Directional;
   bool enabled = true;
@@ -78,6 +80,10 @@ inline std::vector<Light> thesisLights() {
 
 struct Lights {
   double ambient = 0.15;                   // ambient light, weighted by each material's ambient
+  // Where the lights' directions and positions are given: fixed in the world, or fixed to
+  // the camera and turning with it, as SURFER's (camera coordinates: from the eye, x right,
+  // y up, z towards the viewer, in the world's units; render/camera.hpp).
+  LightSpace space = LightSpace::World;
   std::vector<Light> sources = thesisLights();  // at most kMaxLights; may be empty
 
   bool operator==(const Lights&) const = default;

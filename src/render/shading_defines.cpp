@@ -34,6 +34,15 @@ std::string shadingDefines(const RenderSettings& s) {
   // With shadows each light carries its index (its bit in rtShadowMask), and RT_SHADOW_RAYS
   // says where each one's shadow ray goes.
   const bool shadows = s.shading.shadows;
+  // Lights fixed to the camera are moved into the world by the shader, from the frame's
+  // camera (raytrace_main.frag.glsl), so turning the view compiles nothing.
+  const bool camera = s.lights.space == LightSpace::Camera;
+  auto direction = [&](const Light& l) {
+    return camera ? "rtCameraVector(" + vec3(towards(l)) + ")" : vec3(towards(l));
+  };
+  auto position = [&](const Light& l) {
+    return camera ? "rtCameraPoint(" + vec3(l.position) + ")" : vec3(l.position);
+  };
   std::string lights, rays;
   const Light* key = nullptr;
   int count = 0;
@@ -45,13 +54,13 @@ std::string shadingDefines(const RenderSettings& s) {
     const char* shadowed = shadows ? "_SHADOWED(" : "(";
     if (l.kind == LightKind::Directional) {
       if (!key) key = &l;
-      lights += " RT_DIRECTIONAL" + std::string(shadowed) + index + vec3(towards(l)) + ", " +
+      lights += " RT_DIRECTIONAL" + std::string(shadowed) + index + direction(l) + ", " +
                 vec3(l.color, intensity) + ")";
-      rays += " RT_SHADOW_DIRECTIONAL(" + index + vec3(towards(l)) + ")";
+      rays += " RT_SHADOW_DIRECTIONAL(" + index + direction(l) + ")";
     } else {
-      lights += " RT_POINT" + std::string(shadowed) + index + vec3(l.position) + ", " +
+      lights += " RT_POINT" + std::string(shadowed) + index + position(l) + ", " +
                 vec3(l.color, intensity) + ")";
-      rays += " RT_SHADOW_POINT(" + index + vec3(l.position) + ")";
+      rays += " RT_SHADOW_POINT(" + index + position(l) + ")";
     }
   }
   std::string out = "#define RT_LIGHTS" + lights + "\n";
@@ -59,7 +68,7 @@ std::string shadingDefines(const RenderSettings& s) {
     out += "#define RT_SHADOWS " + std::to_string(count) + "\n";
     out += "#define RT_SHADOW_RAYS" + rays + "\n";
   }
-  if (key) out += "#define RT_KEY_LIGHT " + vec3(towards(*key)) + "\n";
+  if (key) out += "#define RT_KEY_LIGHT " + direction(*key) + "\n";
   out += "#define RT_COLOR " + std::to_string(static_cast<int>(s.shading.color)) + "\n";
   return out;
 }

@@ -21,6 +21,7 @@ constexpr std::array<std::string_view, 2> kShapes{"box", "sphere"};  // order of
 // Order of TracingMethod (render/settings.hpp).
 constexpr std::array<std::string_view, 4> kMethods{"auto", "bernstein", "sampling", "interval"};
 constexpr std::array<std::string_view, 2> kLightKinds{"directional", "point"};  // LightKind
+constexpr std::array<std::string_view, 2> kLightSpaces{"world", "camera"};  // LightSpace
 constexpr std::array<std::string_view, 4> kColorModes{"material", "gauss", "mean", "normal"};
 
 // A reference to one Scene member, as a plain function pointer the schema can hold.
@@ -42,6 +43,9 @@ const EnumRef kMethodRef{
 const EnumRef kColorModeRef{
     [](const Scene& s) { return static_cast<int>(s.render.shading.color); },
     [](Scene& s, int v) { s.render.shading.color = static_cast<ColorMode>(v); }, kColorModes};
+const EnumRef kLightSpaceRef{
+    [](const Scene& s) { return static_cast<int>(s.render.lights.space); },
+    [](Scene& s, int v) { s.render.lights.space = static_cast<LightSpace>(v); }, kLightSpaces};
 const EnumRef kLightKindRef{
     [](const Scene& s) { return static_cast<int>(s.render.lights.sources.front().kind); },
     [](Scene& s, int v) { s.render.lights.sources.front().kind = static_cast<LightKind>(v); },
@@ -76,6 +80,7 @@ const KeySpec kKeys[] = {
     {"tracing.hits", ZS_FIELD(render.tracing.hits), {1, 16}},
     {"tracing.max_bisections", ZS_FIELD(render.tracing.maxBisections), {1, 200}},
     {"lights.ambient", ZS_FIELD(render.lights.ambient), kUnit},
+    {"lights.space", kLightSpaceRef, kAny},
     // The thesis' two lights under their old names: sources[0] and [1] (reader.cpp checks
     // that they are still a directional and a point light first). Read, never written.
     {"lights.directional.direction", ZS_FIELD(render.lights.sources[0].direction), kAny, true, 0},

@@ -117,7 +117,8 @@ std::string saveScene(const Scene& scene) {
       table = prefix;
     }
     out += std::string(leaf) + " = " + valueText(copy, spec) + "\n";
-    if (spec.name == "lights.ambient") out += lightSources(scene.render.lights.sources);
+    // The last key of [lights]: the [[lights.source]] tables follow it.
+    if (spec.name == "lights.space") out += lightSources(scene.render.lights.sources);
   }
   return out;
 }

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "render/camera.hpp"
 #include "jsurf/jsurf.hpp"
 
 namespace zs::jsurf {
@@ -61,22 +62,25 @@ TEST(JsurfImport, RotationTurnsTheCameraAroundTheSurface) {
   expectNear(c.up, {0, 1, 0});
 }
 
-TEST(JsurfImport, LightsAreCameraSpacePointsPlacedInTheWorld) {
+TEST(JsurfImport, LightsStayFixedToTheCameraAsSurfersDo) {
   const Scene s = load("turned-quartic.jsurf").scene;
   const Lights& l = s.render.lights;
+  EXPECT_EQ(l.space, LightSpace::Camera);
+  // Where they stand in the world for the imported view.
+  auto world = [&](const Light& light) { return cameraPointToWorld(s.render.camera, light.position); };
   // Lights 0, 1 (off) and 2; the five slots the file leaves out are not kept.
   ASSERT_EQ(l.sources.size(), 3u);
   for (const Light& light : l.sources) EXPECT_EQ(light.kind, LightKind::Point);
   // light 0 at camera (0, 0, 10): 11 units behind the sphere's centre, turned to +x, scaled 2.
-  expectNear(l.sources[0].position, {22, 0, 0}, 1e-9);
+  expectNear(world(l.sources[0]), {22, 0, 0}, 1e-9);
   EXPECT_TRUE(l.sources[0].enabled);
   EXPECT_DOUBLE_EQ(l.sources[0].intensity, 0.75);
   expectNear(l.sources[0].color, {1, 0.5, 0.25});
   // light 1 at camera (5, 5, 5) is off but kept, so that it comes back on export.
   EXPECT_FALSE(l.sources[1].enabled);
-  expectNear(l.sources[1].position, {12, 10, -10}, 1e-9);
+  expectNear(world(l.sources[1]), {12, 10, -10}, 1e-9);
   // light 2, far above the camera: above the surface.
-  expectNear(l.sources[2].position, {2, 200, 0}, 1e-9);
+  expectNear(world(l.sources[2]), {2, 200, 0}, 1e-9);
   EXPECT_DOUBLE_EQ(l.sources[2].intensity, 0.5);
   expectNear(l.sources[2].color, {0.5, 0.5, 1.0});
   // SURFER's ambient term is the material's weight alone.

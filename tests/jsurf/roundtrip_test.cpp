@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "render/camera.hpp"
 #include "jsurf/jsurf.hpp"
 
 namespace zs::jsurf {
@@ -29,6 +30,12 @@ Scene roundTrip(const Scene& s) {
 void expectNear(const Vec3& a, const Vec3& b, const char* what) {
   for (int i = 0; i < 3; ++i)
     EXPECT_NEAR(a[i], b[i], 1e-9 * (1 + std::abs(b[i]))) << what << "[" << i << "]";
+}
+
+// Where a light stands in the world, whether the scene fixes it there or to its camera.
+Vec3 inWorld(const Scene& s, const Light& l) {
+  return s.render.lights.space == LightSpace::Camera ? cameraPointToWorld(s.render.camera, l.position)
+                                                     : l.position;
 }
 
 void expectSurferKeysEqual(const Scene& a, const Scene& b) {
@@ -61,7 +68,7 @@ void expectSurferKeysEqual(const Scene& a, const Scene& b) {
   for (std::size_t i = 0; i < la.sources.size(); ++i) {
     EXPECT_EQ(la.sources[i].kind, lb.sources[i].kind);
     EXPECT_EQ(la.sources[i].enabled, lb.sources[i].enabled);
-    expectNear(la.sources[i].position, lb.sources[i].position, "light position");
+    expectNear(inWorld(a, la.sources[i]), inWorld(b, lb.sources[i]), "light position");
     EXPECT_DOUBLE_EQ(la.sources[i].intensity, lb.sources[i].intensity);
     expectNear(la.sources[i].color, lb.sources[i].color, "light color");
   }
@@ -145,9 +152,10 @@ TEST(JsurfRoundTrip, DirectionalLightBecomesAFarPointLightInItsDirection) {
   ASSERT_EQ(back.render.lights.sources.size(), 1u);
   const Light& l = back.render.lights.sources[0];
   EXPECT_EQ(l.kind, LightKind::Point);
-  EXPECT_NEAR(l.position[0], 0, 1e-9);
-  EXPECT_NEAR(l.position[1], 1000 * 1.7, 1e-6);  // a thousand clipping radii up
-  EXPECT_NEAR(l.position[2], 0, 1e-9);
+  const Vec3 world = inWorld(back, l);
+  EXPECT_NEAR(world[0], 0, 1e-9);
+  EXPECT_NEAR(world[1], 1000 * 1.7, 1e-6);  // a thousand clipping radii up
+  EXPECT_NEAR(world[2], 0, 1e-9);
 }
 
 TEST(JsurfRoundTrip, UpAndTargetComeBackCanonical) {

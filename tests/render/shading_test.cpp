@@ -264,3 +264,37 @@ TEST(ShadingDefines, ShadowsNumberTheLightsAndSayWhereTheirRaysGo) {
 
 }  // namespace
 }  // namespace zs
+
+namespace zs {
+namespace {
+
+// lights.space = "camera": the lights turn with the view, so the unit sphere, which looks the
+// same from everywhere, gives the same picture from every side; lights fixed in the world
+// light it from elsewhere once the camera has moved.
+TEST(LightSpace, CameraLightsTurnWithTheView) {
+  std::string error;
+  ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
+  auto tracer = test::makeTracer({"x^2+y^2+z^2-1", {}, 2}, error);
+  ASSERT_NE(tracer, nullptr) << error;
+  auto picture = [&](LightSpace space, Vec3 eye) {
+    RenderSettings s = test::testSettings(eye);
+    s.reflection.enabled = false;
+    s.lights.space = space;
+    s.camera.up = {0, 1, 0};
+    Light l;
+    l.kind = LightKind::Point;
+    l.position = {1.5, 1.0, 0.5};  // right of and above the eye
+    s.lights.sources = {l};
+    return tracer->render(s, Domain{}, 48, 48).color;
+  };
+  const Vec3 front{0, 0, 3}, side{3, 0, 0};
+  const ImageDiff camera = compareImages(picture(LightSpace::Camera, front),
+                                         picture(LightSpace::Camera, side), 2);
+  EXPECT_LT(camera.fractionOver, 0.002) << "the same lighting seen from the side";
+  const ImageDiff world = compareImages(picture(LightSpace::World, front),
+                                        picture(LightSpace::World, side), 2);
+  EXPECT_GT(world.fractionOver, 0.2) << "world lights light the sphere from elsewhere";
+}
+
+}  // namespace
+}  // namespace zs

@@ -27,6 +27,7 @@ Scene everyKeyChanged() {
   RenderSettings& r = s.render;
   r.camera = {{0.1, 4.4, -9e10}, {1, 2, 3}, {0.3, 1, 0}, Projection::Orthographic, 33.3, 2.2};
   r.lights.ambient = 0.05;
+  r.lights.space = LightSpace::Camera;
   // Every light key differs from Light{} in some light (see the test below).
   r.lights.sources = {
       {LightKind::Point, false, {1, -1, 0.5}, {-3, 2, 1e-5}, 1.25, {0.9, 0.8, 0.7}},
@@ -35,7 +36,7 @@ Scene everyKeyChanged() {
   };
   r.materials.front = {{0.2, 0.3, 0.4}, 0.11, 12.5, 0.4, 0.8};
   r.materials.back = {{0.6, 0.7, 0.8}, 0.22, 99, 0.35, 0.65};
-  r.shading = {ColorMode::Mean, 2.5};
+  r.shading = {ColorMode::Mean, 2.5, true};
   r.tracing = {TracingMethod::Sampling, 17, 1e-7 / 3, 77, 9};
   r.silhouette = {false, 0.33, {0.5, 0.25, 0.125}};
   r.border = {false, 0.0625, {0.2, 0.1, 0.05}};

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "interact/arcball.hpp"
+#include "render/camera.hpp"
 #include "app/viewer/viewer.hpp"
 
 namespace zs::app {
@@ -122,10 +123,20 @@ void Viewer::onCursor(double x, double y) {
   const DragPoints drag{dragX_, dragY_, x, y, width, height};
   if (dragButton_ == GLFW_MOUSE_BUTTON_LEFT)
     scene_.render.camera = orbitCamera(dragCamera_, drag);
-  else if (Light* key = keyLight(scene_.render.lights))
-    (key->kind == LightKind::Point ? key->position : key->direction) =
-        key->kind == LightKind::Point ? orbitPoint(scene_.render.camera, dragLight_, drag)
-                                      : orbitDirection(scene_.render.camera, dragLight_, drag);
+  else if (Light* key = keyLight(scene_.render.lights)) {
+    // A light fixed to the camera turns in the world and is given back in camera coordinates.
+    const Camera& view = scene_.render.camera;
+    const bool fixedToCamera = scene_.render.lights.space == LightSpace::Camera;
+    if (key->kind == LightKind::Point) {
+      const Vec3 start = fixedToCamera ? cameraPointToWorld(view, dragLight_) : dragLight_;
+      const Vec3 turned = orbitPoint(view, start, drag);
+      key->position = fixedToCamera ? worldPointToCamera(view, turned) : turned;
+    } else {
+      const Vec3 start = fixedToCamera ? cameraVectorToWorld(view, dragLight_) : dragLight_;
+      const Vec3 turned = orbitDirection(view, start, drag);
+      key->direction = fixedToCamera ? worldVectorToCamera(view, turned) : turned;
+    }
+  }
   dirty_ = true;
 }
 
