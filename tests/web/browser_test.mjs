@@ -179,6 +179,7 @@ const PICTURES = [
   ['gyroid', []],          // not a polynomial: interval arithmetic
   ['dupin-cyclide', ['shading.color="gauss"', 'shading.curvature_range=2']],  // curvature colours
   ['torus', ['opacity=0.5']],  // transparent: kept hits, blended
+  ['torus', ['shading.shadows=true', 'lights.space="camera"']],  // shadow rays; lights on the camera
 ];
 const PICTURE_SHARDS = 3;
 for (let k = 0; k < PICTURE_SHARDS; k++) {
