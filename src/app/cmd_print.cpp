@@ -26,7 +26,7 @@ int runPrint(const PrintArgs& args) {
   job.scene = *scene;
   job.output = args.output;
   job.dpi = args.dpi;
-  if (!print::parsePaper(args.paper, job.paper)) {
+  if (!printing::parsePaper(args.paper, job.paper)) {
     std::cerr << "error: --paper '" << args.paper << "' is not a paper size\n"
               << "hint: A4, A3 or letter\n";
     return 1;

@@ -21,7 +21,7 @@ std::string runPrintJob(const PrintJob& job) {
     return "print: " + job.output.string() + ": the page is written as .pdf or .svg\n";
   Scene scene = job.scene;
   // A square picture as wide as the page's text, at the asked resolution.
-  const int side = int(std::lround(print::pictureSide(job.paper) / 72.0 * job.dpi));
+  const int side = int(std::lround(printing::pictureSide(job.paper) / 72.0 * job.dpi));
   if (side < 16 || side > 16384) {
     return "print: a picture of " + std::to_string(side) + " pixels a side is out of range\n"
            "hint: a --dpi between 30 and 1000 for A4\n";
@@ -36,7 +36,7 @@ std::string runPrintJob(const PrintJob& job) {
   Frame frame = gl.tracer->render(scene.render, scene.domain, side, side);
   if (!frame.error.empty()) return "print: " + frame.error + "\n";
 
-  print::PageContent page;
+  printing::PageContent page;
   page.picture = std::move(frame.color);
   page.title = job.title;
   page.description = job.description;
@@ -48,7 +48,7 @@ std::string runPrintJob(const PrintJob& job) {
     for (std::size_t i = 0; i < values.size(); ++i)
       page.params.emplace_back(graph.params()[i], values[i]);
   }
-  if (std::string err = print::writePage(job.output, page, job.paper); !err.empty())
+  if (std::string err = printing::writePage(job.output, page, job.paper); !err.empty())
     return err + "\n";
   return "";
 }

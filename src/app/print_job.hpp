@@ -15,7 +15,7 @@ namespace zs::app {
 struct PrintJob {
   Scene scene;
   std::string title, description;
-  print::Paper paper = print::Paper::A4;
+  printing::Paper paper = printing::Paper::A4;
   double dpi = 300;  // of the picture on the page
   std::filesystem::path output;  // .pdf or .svg
   Backend backend = Backend::Egl;

@@ -14,7 +14,7 @@
 #include "expr/number_text.hpp"
 #include "print/typeset.hpp"
 
-namespace zs::print {
+namespace zs::printing {
 namespace {
 
 constexpr double kMargin = 42;  // points
@@ -261,4 +261,4 @@ std::string writePage(const std::filesystem::path& path, const PageContent& cont
   return "";
 }
 
-}  // namespace zs::print
+}  // namespace zs::printing

@@ -11,7 +11,7 @@
 
 #include "render/image.hpp"
 
-namespace zs::print {
+namespace zs::printing {
 
 enum class Paper { A4, A3, Letter };
 
@@ -38,4 +38,4 @@ struct PageContent {
 // Writes the page to `path`, PDF or SVG by its extension. "" or what went wrong.
 std::string writePage(const std::filesystem::path& path, const PageContent& content, Paper paper);
 
-}  // namespace zs::print
+}  // namespace zs::printing

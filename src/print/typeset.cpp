@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace zs::print {
+namespace zs::printing {
 
 void MathBox::place(const MathBox& other, double dx, double dy) {
   for (TextRun r : other.runs) {
@@ -329,4 +329,4 @@ std::vector<MathBox> typesetEquationLines(const SyntaxTree& tree, double size,
   return Setter(tree, measure).lines(size, width);
 }
 
-}  // namespace zs::print
+}  // namespace zs::printing

@@ -11,7 +11,7 @@
 
 #include "parser/parser.hpp"
 
-namespace zs::print {
+namespace zs::printing {
 
 // Coordinates in points, x to the right, y down from the box's baseline (cairo's).
 struct TextRun {
@@ -46,4 +46,4 @@ MathBox typesetEquation(const SyntaxTree& tree, double size, const MeasureText& 
 std::vector<MathBox> typesetEquationLines(const SyntaxTree& tree, double size,
                                           const MeasureText& measure, double width);
 
-}  // namespace zs::print
+}  // namespace zs::printing

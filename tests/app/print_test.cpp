@@ -24,7 +24,7 @@ TEST(Print, ThePageHoldsTheFormulaTheValuesAndThePictureOfRender) {
                   quoted(dir / "page.pdf") + " > /dev/null"),
             0);
   // The picture: a square as wide as the text, at 40 dpi.
-  const int side = int(std::lround(print::pictureSide(print::Paper::A4) / 72.0 * 40));
+  const int side = int(std::lround(printing::pictureSide(printing::Paper::A4) / 72.0 * 40));
   ASSERT_EQ(shell(zeroset + " render " + formula + " --size " + std::to_string(side) + "x" +
                   std::to_string(side) + " -o " + quoted(dir / "render.png") + " > /dev/null"),
             0);

@@ -7,7 +7,7 @@
 
 #include "print/typeset.hpp"
 
-namespace zs::print {
+namespace zs::printing {
 namespace {
 
 double fixedWidth(const std::string& text, bool, double size) {
@@ -113,4 +113,4 @@ TEST(Typeset, LongFormulasBreakBetweenTermsOfTheOutermostSum) {
 }
 
 }  // namespace
-}  // namespace zs::print
+}  // namespace zs::printing
