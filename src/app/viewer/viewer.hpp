@@ -130,6 +130,8 @@ class Viewer {
   // viewer_print.cpp: "Print page" the same way
   void startPrint();
   void finishPrint();
+  // A finished file job (mesh, print): its message in the status line and on stdout.
+  void finishFileJob(std::future<std::string>& job);
 
   ViewerOptions options_;
   std::unique_ptr<GlfwWindowContext> window_;

@@ -38,11 +38,11 @@ void Viewer::startMeshExport() {
   });
 }
 
-void Viewer::finishMeshExport() {
-  if (!meshExport_.valid() ||
-      meshExport_.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
-    return;
-  const std::string text = meshExport_.get();
+void Viewer::finishMeshExport() { finishFileJob(meshExport_); }
+
+void Viewer::finishFileJob(std::future<std::string>& job) {
+  if (!job.valid() || job.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  const std::string text = job.get();
   stats_.status = text.substr(0, text.find('\n'));
   uiFrames_ = 3;
   std::fputs(text.c_str(), stdout);

@@ -4,8 +4,6 @@
 // "printed: PATH".
 #include <GLFW/glfw3.h>
 
-#include <cstdio>
-
 #include "app/print_job.hpp"
 #include "app/repl/scene_edit.hpp"
 #include "app/viewer/viewer.hpp"
@@ -30,14 +28,6 @@ void Viewer::startPrint() {
   });
 }
 
-void Viewer::finishPrint() {
-  if (!print_.valid() || print_.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
-    return;
-  const std::string text = print_.get();
-  stats_.status = text.substr(0, text.find('\n'));
-  uiFrames_ = 3;
-  std::fputs(text.c_str(), stdout);
-  std::fflush(stdout);
-}
+void Viewer::finishPrint() { finishFileJob(print_); }
 
 }  // namespace zs::app
