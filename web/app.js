@@ -139,7 +139,7 @@ function showFirstPicture() {
                 { quick: true, whole: true })
     .then((ms) => {
       if (ms === null) return;
-      quickMsPerPixel = ms / pixels;
+      if (ms > 0) quickMsPerPixel = ms / pixels;
       statusLine.textContent = `first picture · ${canvas.width}×${canvas.height} · ${ms.toFixed(1)} ms`;
       root.dataset.firstPicture = formula;
       root.dataset.firstPictures = String(Number(root.dataset.firstPictures || 0) + 1);
@@ -161,7 +161,7 @@ function redraw() {
   const pixels = canvas.width * canvas.height;
   pending = renderer.draw((w, h) => session.frame(w, h), bg).then((ms) => {
     pending = null;
-    if (ms !== null) msPerPixel = ms / pixels;
+    if (ms !== null && ms > 0) msPerPixel = ms / pixels;
     if (redrawQueued) { redrawQueued = false; redraw(); return; }
     if (ms === null) return;  // superseded or lost: a later draw sets the state
     statusLine.textContent = `${session.method()} · ${canvas.width}×${canvas.height} · ${ms.toFixed(1)} ms`;
@@ -218,7 +218,11 @@ function buildTypedFormula() {
 function formulaEdited() {
   clearTimeout(typingTimer);
   const refusal = kiosk && session ? kiosk.refusal(formulaInput.value) : '';
-  if (refusal) { showError(refusal); return; }
+  if (refusal) {
+    showError(refusal);
+    if (scale !== 1 && session.prepared()) { scale = 1; redraw(); }  // not left at a first picture's size
+    return;
+  }
   if (session) showFirstPicture();
   typingTimer = setTimeout(buildTypedFormula, 120);
 }
@@ -500,6 +504,11 @@ canvas.addEventListener('wheel', (e) => {
 }, { passive: false });
 
 document.addEventListener('keydown', (e) => {
+  // An exhibit keeps the browser's own print, open and save dialogs shut.
+  if (kiosk && (e.ctrlKey || e.metaKey) && ['p', 'o', 's'].includes(e.key.toLowerCase())) {
+    e.preventDefault();
+    return;
+  }
   const t = e.target;
   if (t instanceof HTMLInputElement || t instanceof HTMLSelectElement || t instanceof HTMLTextAreaElement) return;
   if (!session || e.altKey || e.metaKey) return;
@@ -746,7 +755,11 @@ async function start() {
     return;
   }
   showNotes(); buildParams(); buildSettings(); redraw();
-  if (kiosk) startScene = { text: session.sceneText(), example: currentExample };
+  if (kiosk) {
+    startScene = { text: session.sceneText(), example: currentExample };
+    // The formula keyboard never focuses the field: the interpreter links now.
+    requestInterpreters();
+  }
 }
 
 // Kiosk mode: the scene the page opened with, the gallery open and the panel shown.

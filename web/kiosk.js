@@ -52,9 +52,11 @@ export function startKiosk(core, params, formulaInput, keys) {
       keys.idle();
     }
   }, 250);
-  window.addEventListener('pointerdown', () => {
+  // A click (a tap's too) is a gesture the browser lets ask for fullscreen; asked again
+  // after a refusal or after the visitor left it.
+  window.addEventListener('click', () => {
     if (!document.fullscreenElement) document.documentElement.requestFullscreen?.().catch(() => {});
-  }, { once: true });
+  });
 
   return {
     policy,

@@ -1,7 +1,7 @@
 // ---- raytrace_main.frag.glsl (render stage): follows the prelude, the generated formula
 // block (zs_F, zs_FGrad) and, for the Bernstein method, the generated ray polynomial. Owns
-// what both tracing methods share: the camera rays, the two passes (primary and one
-// reflection ray), blending, the outputs. The method's file comes after this
+// what the tracing methods share: the camera rays, the passes (the primary ray, a shadow
+// ray per light with shading.shadows, one reflection ray), blending, the outputs. The method's file comes after this
 // one and defines rtMarch(), which finds the hits of one ray (raytrace_shading.frag.glsl,
 // between the two, defines shade()):
 //   raytrace_sampling.frag.glsl   thesis Algorithm 1: sign samples + bisection per leaf
@@ -205,28 +205,23 @@ void main() {
       rtGrowth = 1.5;
       int wanted = RT_MAX_HITS;
       int shaded = pass;  // whose hits this pass shades: 0 the primary ray's, -1 none
-#ifdef RT_SHADOWS
-      float reach = 0.0;  // a shadow ray: the distance to its light
-      if (pass >= 1 && pass <= shadowPasses) {
+      if (pass >= 1) {  // a shadow or reflection ray, from the first hit
         o = ro + firstT * rd;
-        rtShadowRay(pass - 1, o, d, reach);
         tStart = max(4.0 * rt.epsilon, 1e-4 * length(rt.domainMax - rt.domainMin));  // leave the surface
         wanted = 1;
         rtFirstSegment = firstW;
-        rtGrowth = 2.0;  // as a reflection ray: mostly through empty space
+        // It mostly leaves the surface through empty space: segments twice as long each time
+        // take fewer steps there; primary rays, which mostly approach the surface, grow by 1.5.
+        rtGrowth = 2.0;
       }
+#ifdef RT_SHADOWS
+      float reach = 0.0;  // a shadow ray: the distance to its light
+      if (pass >= 1 && pass <= shadowPasses) rtShadowRay(pass - 1, o, d, reach);
 #endif
       if (pass == reflectionPass) {
         vec3 nrm = length(firstG.xyz) > 0.0 ? normalize(firstG.xyz) : -rd;
-        o = ro + firstT * rd;
         d = reflect(rd, dot(nrm, rd) < 0.0 ? nrm : -nrm);
-        tStart = max(4.0 * rt.epsilon, 1e-4 * length(rt.domainMax - rt.domainMin));  // leave the surface
-        passAlpha = 1.0; passScale = alpha * (1.0 - w); wanted = 1;
-        rtFirstSegment = firstW;
-        // A reflection ray mostly leaves the surface through empty space: segments twice as
-        // long each time take fewer steps there; primary rays, which mostly approach the
-        // surface, grow by 1.5.
-        rtGrowth = 2.0;
+        passAlpha = 1.0; passScale = alpha * (1.0 - w);
       }
       float hitT[RT_MAX_HITS];
       vec4 hitG[RT_MAX_HITS];

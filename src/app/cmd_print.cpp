@@ -16,7 +16,7 @@ struct PrintArgs {
   SceneArgs scene;
   std::string output, paper = "A4", title, description, backend = "egl";
   double dpi = 300;
-  bool titleGiven = false, descriptionGiven = false;
+  bool titleGiven = false, descriptionGiven = false;  // "" is a choice too
 };
 
 int runPrint(const PrintArgs& args) {
@@ -36,7 +36,7 @@ int runPrint(const PrintArgs& args) {
     return 1;
   }
   describeForPrint(args.scene.input, job.title, job.description);
-  if (!args.title.empty()) job.title = args.title;
+  if (args.titleGiven) job.title = args.title;
   if (args.descriptionGiven) job.description = args.description;
   if (std::string err = runPrintJob(job); !err.empty()) {
     std::cerr << (err.rfind("error", 0) == 0 ? "" : "error: ") << err;
@@ -60,7 +60,8 @@ void addPrintCommand(CLI::App& app) {
   cmd->add_option("--dpi", args->dpi, "resolution of the picture on the page (default 300)")
       ->check(CLI::Range(30.0, 1200.0));
   cmd->add_option("--title", args->title,
-                  "the heading (default: the name in the file's description line)");
+                  "the heading (default: the name in the file's description line)")
+      ->each([args](const std::string&) { args->titleGiven = true; });
   cmd->add_option("--description", args->description,
                   "the line under the heading (default: the file's description line)")
       ->each([args](const std::string&) { args->descriptionGiven = true; });

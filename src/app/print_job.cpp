@@ -1,6 +1,5 @@
 #include "app/print_job.hpp"
 
-#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -15,16 +14,14 @@
 namespace zs::app {
 
 std::string runPrintJob(const PrintJob& job) {
-  std::string ext = job.output.extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  if (ext != ".pdf" && ext != ".svg")
+  if (!printing::isPageFile(job.output))
     return "print: " + job.output.string() + ": the page is written as .pdf or .svg\n";
   Scene scene = job.scene;
   // A square picture as wide as the page's text, at the asked resolution.
   const int side = int(std::lround(printing::pictureSide(job.paper) / 72.0 * job.dpi));
   if (side < 16 || side > 16384) {
     return "print: a picture of " + std::to_string(side) + " pixels a side is out of range\n"
-           "hint: a --dpi between 30 and 1000 for A4\n";
+           "hint: a lower --dpi, or a smaller paper\n";
   }
   scene.width = scene.height = side;
   auto prepared = prepareSurface(scene);

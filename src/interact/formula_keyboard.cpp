@@ -1,6 +1,7 @@
 #include "interact/formula_keyboard.hpp"
 
 #include <algorithm>
+#include <cctype>
 
 namespace zs::interact {
 namespace {
@@ -21,14 +22,16 @@ bool isFunction(std::string_view key) {
   return std::find(kFunctions.begin(), kFunctions.end(), key) != kFunctions.end();
 }
 
-bool isKey(std::string_view key) {
-  for (const auto& row : kRows) {
-    if (!key.empty() && std::find(row.begin(), row.end(), key) != row.end()) return true;
-  }
-  return false;
-}
-
 }  // namespace
+
+std::pair<int, int> findFormulaKey(std::string_view label) {
+  for (std::size_t r = 0; r < kRows.size(); ++r) {
+    for (std::size_t c = 0; c < kRows[r].size(); ++c) {
+      if (!label.empty() && kRows[r][c] == label) return {int(r), int(c)};
+    }
+  }
+  return {-1, -1};
+}
 
 const FormulaKeyRows& formulaKeyRows() { return kRows; }
 
@@ -46,8 +49,18 @@ std::string pressFormulaKey(const std::string& text, std::string_view key) {
     while (end > 0 && (static_cast<unsigned char>(text[end - 1]) & 0xC0) == 0x80) --end;
     return text.substr(0, end > 0 ? end - 1 : 0);
   }
-  if (key == "draw" || !isKey(key)) return text;
-  return text + std::string(key) + (isFunction(key) ? "(" : "");
+  if (key == "draw" || findFormulaKey(key).first < 0) return text;
+  // A name and what follows it would run together into one longer name (a x into the
+  // parameter "ax", x 2 into "x2"): a space keeps them a product.
+  const auto isNameChar = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+  };
+  std::size_t start = text.size();
+  while (start > 0 && isNameChar(text[start - 1])) --start;
+  const bool endsInName =
+      start < text.size() && std::isalpha(static_cast<unsigned char>(text[start])) != 0;
+  const bool space = endsInName && isNameChar(key.front());
+  return text + (space ? " " : "") + std::string(key) + (isFunction(key) ? "(" : "");
 }
 
 }  // namespace zs::interact

@@ -5,6 +5,7 @@
 #include <array>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace zs::interact {
 
@@ -15,9 +16,13 @@ using FormulaKeyRows =
     std::array<std::array<std::string_view, kFormulaKeyColumns>, kFormulaKeyRows>;
 const FormulaKeyRows& formulaKeyRows();
 
-// The text after one key: `key` appended, or for "<-" the last character (or the last
-// function name with its parenthesis) removed, or for "clear" nothing left. "draw" and
-// unknown labels leave it as it is.
+// The text after one key: `key` appended (after a space where it would run into a name:
+// "a x", not the parameter "ax"), or for "<-" the last character (or the last function
+// name with its parenthesis) removed, or for "clear" nothing left. "draw" and unknown
+// labels leave it as it is.
 std::string pressFormulaKey(const std::string& text, std::string_view key);
+
+// The row and column of the key labelled `label`, or {-1, -1}.
+std::pair<int, int> findFormulaKey(std::string_view label);
 
 }  // namespace zs::interact

@@ -24,8 +24,11 @@ bool kioskAllows(Action action) {
 std::string kioskRefusal(std::string_view formula, const KioskPolicy& policy) {
   const ParseResult parsed = parseFormula(formula);
   const Formula* f = std::get_if<Formula>(&parsed);
-  if (!f) return "";
-  const std::optional<int> degree = polynomialDegree(f->graph, f->root);
+  return f ? kioskRefusal(*f, policy) : "";
+}
+
+std::string kioskRefusal(const Formula& f, const KioskPolicy& policy) {
+  const std::optional<int> degree = polynomialDegree(f.graph, f.root);
   if (!degree || *degree <= policy.maxDegree) return "";
   return "degree " + std::to_string(*degree) + " is more than this exhibit draws (at most " +
          std::to_string(policy.maxDegree) + "): try a formula of lower degree";

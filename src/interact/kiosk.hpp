@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "expr/graph.hpp"
 #include "interact/key_bindings.hpp"
 
 namespace zs::interact {
@@ -23,5 +24,7 @@ bool kioskAllows(Action action);
 // "" when `formula` may be drawn, otherwise the message for the visitor (a formula that does
 // not parse is the parser's to report, and "" here).
 std::string kioskRefusal(std::string_view formula, const KioskPolicy& policy);
+// The same for a formula already parsed.
+std::string kioskRefusal(const Formula& formula, const KioskPolicy& policy);
 
 }  // namespace zs::interact

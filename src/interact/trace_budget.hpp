@@ -27,5 +27,13 @@ inline constexpr int kFirstPictureMinScale = 2, kFirstPictureMaxScale = 4;
 // quarter of the size each way.
 inline constexpr double kDragBudgetMs = 33;
 inline constexpr int kDragMinScale = 1, kDragMaxScale = 4;
+// Before any picture has been timed, a drag is drawn at half size.
+inline constexpr int kDragUnmeasuredScale = 2;
+
+// The divisor for a picture while dragging, from the last picture's cost per pixel.
+inline int dragScale(double msPerPixel, int width, int height) {
+  if (msPerPixel <= 0) return kDragUnmeasuredScale;
+  return scaleForBudget(msPerPixel, width, height, kDragBudgetMs, kDragMinScale, kDragMaxScale);
+}
 
 }  // namespace zs::interact

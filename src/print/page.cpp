@@ -106,14 +106,20 @@ std::vector<MathBox> formulaLines(cairo_t* cr, const std::string& formula, doubl
     syntax.root = 0;
   }
   if (level != 0) {
-    // F = c: the level set drawn.
-    const SyntaxNode& root = syntax.nodes[std::size_t(syntax.root)];
-    if (root.kind != SyntaxNode::Kind::Equation) {
-      syntax.nodes.push_back({SyntaxNode::Kind::Number, Op::Const, shortestText(level)});
-      syntax.nodes.push_back({SyntaxNode::Kind::Equation, Op::Sub, "", syntax.root,
-                              int(syntax.nodes.size()) - 1});
-      syntax.root = int(syntax.nodes.size()) - 1;
+    // The level set drawn: F = c, or for F = G, F = G ± |c|.
+    const SyntaxNode root = syntax.nodes[std::size_t(syntax.root)];
+    const bool equation = root.kind == SyntaxNode::Kind::Equation;
+    syntax.nodes.push_back({SyntaxNode::Kind::Number, Op::Const,
+                            shortestText(equation ? std::fabs(level) : level)});
+    int right = int(syntax.nodes.size()) - 1;
+    if (equation) {
+      syntax.nodes.push_back({SyntaxNode::Kind::Operation, level > 0 ? Op::Add : Op::Sub, "",
+                              root.b, right});
+      right = int(syntax.nodes.size()) - 1;
     }
+    syntax.nodes.push_back({SyntaxNode::Kind::Equation, Op::Sub, "",
+                            equation ? root.a : syntax.root, right});
+    syntax.root = int(syntax.nodes.size()) - 1;
   }
   constexpr double kLargest = 20, kSmallest = 11;
   const double oneLine = typesetEquation(syntax, kLargest, measure).width;
@@ -183,11 +189,25 @@ bool parsePaper(const std::string& name, Paper& paper) {
 
 double pictureSide(Paper paper) { return paperSize(paper).width - 2 * kMargin; }
 
+namespace {
+
+std::string lowerExtension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+}  // namespace
+
+bool isPageFile(const std::filesystem::path& path) {
+  const std::string ext = lowerExtension(path);
+  return ext == ".pdf" || ext == ".svg";
+}
+
 std::string writePage(const std::filesystem::path& path, const PageContent& content,
                       Paper paper) {
   const PaperSize page = paperSize(paper);
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = lowerExtension(path);
   cairo_surface_t* target = nullptr;
   if (ext == ".pdf") target = cairo_pdf_surface_create(path.c_str(), page.width, page.height);
   else if (ext == ".svg") target = cairo_svg_surface_create(path.c_str(), page.width, page.height);

@@ -35,6 +35,9 @@ struct PageContent {
   double level = 0;  // surface.level: the page says F = level
 };
 
+// Whether `path` names a page zeroset writes: .pdf or .svg (any case).
+bool isPageFile(const std::filesystem::path& path);
+
 // Writes the page to `path`, PDF or SVG by its extension. "" or what went wrong.
 std::string writePage(const std::filesystem::path& path, const PageContent& content, Paper paper);
 

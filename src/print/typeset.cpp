@@ -75,14 +75,37 @@ class Setter {
   }
 
   void terms(int id, double size, std::vector<MathBox>& out) {
-    const SyntaxNode& n = tree_.nodes[std::size_t(id)];
-    if (n.kind == SyntaxNode::Kind::Operation && (n.op == Op::Add || n.op == Op::Sub)) {
-      terms(n.a, size, out);
-      out.push_back(joined(text(n.op == Op::Add ? " + " : " \u2212 ", false, size),
-                           slot(n.b, rightNeed(n), size).box));
-      return;
+    const std::vector<Link> links = chain(id, /*sums=*/true);
+    out.push_back(slot(links.front().operand, kSum, size).box);
+    for (std::size_t i = 1; i < links.size(); ++i) {
+      out.push_back(joined(text(links[i].op == Op::Add ? " + " : " \u2212 ", false, size),
+                           slot(links[i].operand, rightNeed(links[i]), size).box));
     }
-    out.push_back(slot(id, kSum, size).box);
+  }
+
+  // A left-deep chain of sums (or of products) as written: its operands leftmost first,
+  // each after the first with the operation before it. Without recursion: a formula may
+  // have thousands of terms, which the parser's nesting budget does not count.
+  struct Link {
+    Op op;
+    int operand;
+  };
+  std::vector<Link> chain(int id, bool sums) const {
+    auto inChain = [&](int k) {
+      const SyntaxNode& m = tree_.nodes[std::size_t(k)];
+      return m.kind == SyntaxNode::Kind::Operation &&
+             (sums ? m.op == Op::Add || m.op == Op::Sub : m.op == Op::Mul);
+    };
+    std::vector<Link> links;
+    int at = id;
+    while (inChain(at)) {
+      const SyntaxNode& m = tree_.nodes[std::size_t(at)];
+      links.push_back({m.op, m.b});
+      at = m.a;
+    }
+    links.push_back({Op::Const, at});
+    std::reverse(links.begin(), links.end());
+    return links;
   }
 
   MathBox joined(MathBox a, const MathBox& b) {
@@ -91,8 +114,8 @@ class Setter {
   }
 
   // a − (b + c), and a written x + -y shows as x + (−y).
-  int rightNeed(const SyntaxNode& sum) const {
-    return isNeg(sum.b) ? kPower : sum.op == Op::Sub ? kProduct : kSum;
+  int rightNeed(const Link& link) const {
+    return isNeg(link.operand) ? kPower : link.op == Op::Sub ? kProduct : kSum;
   }
 
   MathBox text(const std::string& s, bool italic, double size) const {
@@ -201,23 +224,27 @@ class Setter {
       }
       case Op::Add:
       case Op::Sub: {
-        append(t.box, slot(n.a, kSum, size).box);
-        append(t.box, text(n.op == Op::Add ? " + " : " \u2212 ", false, size));
-        append(t.box, slot(n.b, rightNeed(n), size).box);
+        std::vector<MathBox> pieces;
+        terms(int(&n - tree_.nodes.data()), size, pieces);
+        for (const MathBox& piece : pieces) append(t.box, piece);
         t.prec = kSum;
         return t;
       }
       case Op::Mul: {
-        const Typeset a = slot(n.a, kProduct, size);
-        const Typeset b = slot(n.b, kPower, size);
-        append(t.box, a.box);
-        // Between two numbers a dot (2·3); elsewhere a thin space (2x, x y, 2 sin x).
-        if (a.endsWithDigit && b.startsWithDigit) append(t.box, text("\u00b7", false, size));
-        else t.box.width += 0.12 * size;
-        append(t.box, b.box);
+        const std::vector<Link> links = chain(int(&n - tree_.nodes.data()), /*sums=*/false);
+        const Typeset first = slot(links.front().operand, kProduct, size);
+        t.box = first.box;
+        t.startsWithDigit = first.startsWithDigit;
+        t.endsWithDigit = first.endsWithDigit;
+        for (std::size_t i = 1; i < links.size(); ++i) {
+          const Typeset b = slot(links[i].operand, kPower, size);
+          // Before a number a dot (2·3, x·2); elsewhere a thin space (2x, x y, 2 sin x).
+          if (b.startsWithDigit) append(t.box, text("\u00b7", false, size));
+          else t.box.width += 0.12 * size;
+          append(t.box, b.box);
+          t.endsWithDigit = b.endsWithDigit;
+        }
         t.prec = kProduct;
-        t.startsWithDigit = a.startsWithDigit;
-        t.endsWithDigit = b.endsWithDigit;
         return t;
       }
       case Op::Div:

@@ -53,7 +53,7 @@ class EglContext final : public GlContext {
       error_ = eglErrorText("eglMakeCurrent");
       return false;
     }
-    if (gladLoadGL(reinterpret_cast<GLADloadfunc>(eglGetProcAddress)) == 0) {
+    if (!loadGlEntryPoints(reinterpret_cast<void* (*)(const char*)>(eglGetProcAddress))) {
       error_ = "glad could not load GL entry points through eglGetProcAddress";
       return false;
     }

@@ -3,7 +3,16 @@
 
 #include <glad/gl.h>
 
+#include <mutex>
+
 namespace zs {
+
+bool loadGlEntryPoints(void* (*getProcAddress)(const char*)) {
+  static std::mutex loading;
+  std::lock_guard lock(loading);
+  return gladLoadGL(reinterpret_cast<GLADloadfunc>(getProcAddress)) != 0;
+}
+
 
 std::string GlContext::describeCurrent() {
   auto text = [](GLenum name) {

@@ -41,6 +41,12 @@ struct ContextResult {
   std::string error;                   // why it failed; empty on success
 };
 
+// gladLoadGL through `getProcAddress`, one thread at a time: glad's entry points are process
+// globals, and the viewer makes headless contexts current on other threads (the surface
+// worker, a print) beside its window. Under libglvnd every loader hands out the same
+// dispatch stubs, so a reload by another thread never changes a pointer in use.
+bool loadGlEntryPoints(void* (*getProcAddress)(const char*));
+
 // Creates a context with no window and makes it current. Never aborts.
 ContextResult createHeadlessContext(Backend backend);
 

@@ -49,7 +49,7 @@ GlfwWindowContext::~GlfwWindowContext() {
 
 bool GlfwWindowContext::makeCurrent() {
   glfwMakeContextCurrent(window_);
-  if (gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress)) == 0) {
+  if (!loadGlEntryPoints(reinterpret_cast<void* (*)(const char*)>(glfwGetProcAddress))) {
     error_ = "glad could not load GL entry points through glfwGetProcAddress";
     return false;
   }

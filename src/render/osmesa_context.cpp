@@ -23,7 +23,7 @@ class OsMesaContext final : public GlContext {
       error_ = "OSMesaMakeCurrent failed";
       return false;
     }
-    if (gladLoadGL(reinterpret_cast<GLADloadfunc>(OSMesaGetProcAddress)) == 0) {
+    if (!loadGlEntryPoints(reinterpret_cast<void* (*)(const char*)>(OSMesaGetProcAddress))) {
       error_ = "glad could not load GL entry points through OSMesaGetProcAddress";
       return false;
     }

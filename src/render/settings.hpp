@@ -50,11 +50,12 @@ inline Domain boundingBox(const Domain& d) {
 
 enum class LightKind { Directional, Point };
 
+// Where lights are given: fixed in the world, or to the camera (Lights::space).
+enum class LightSpace { World, Camera };
+
 // One light source. A directional light shines from infinitely far along `direction`; a
 // point light from `position`, with no falloff (SURFER's lights have none either). Both keep
 // their unused vector, so switching the kind back and forth loses nothing.
-enum class LightSpace { World, Camera };
-
 struct Light {
   LightKind kind = LightKind::Directional;
   bool enabled = true;

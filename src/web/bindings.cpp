@@ -235,8 +235,7 @@ int traceScaleJs(bool first, double msPerPixel, int width, int height) {
   using namespace interact;
   return first ? scaleForBudget(msPerPixel, width, height, kFirstPictureBudgetMs,
                                 kFirstPictureMinScale, kFirstPictureMaxScale)
-               : scaleForBudget(msPerPixel, width, height, kDragBudgetMs, kDragMinScale,
-                                kDragMaxScale);
+               : dragScale(msPerPixel, width, height);
 }
 
 val formulaKeyRowsJs() {

@@ -223,8 +223,15 @@ TEST(FormulaKeyboard, KeysAppendAndBackspaceRemovesACharacterOrAFunction) {
   EXPECT_EQ(pressFormulaKey("x", "rm -rf"), "x");  // not a key
   // Every key a visitor can press has a place.
   for (const char* label : {"x", "y", "z", "^2", "sin", "<-", "clear", "draw", "pi"})
-    EXPECT_TRUE(findFormulaKey(label)) << label;
-  EXPECT_FALSE(findFormulaKey(""));
+    EXPECT_GE(interact::findFormulaKey(label).first, 0) << label;
+  EXPECT_LT(interact::findFormulaKey("").first, 0);
+  // Names do not run together: a then x is a product, not the parameter "ax".
+  EXPECT_EQ(pressFormulaKey("a", "x"), "a x");
+  EXPECT_EQ(pressFormulaKey("x", "2"), "x 2");
+  EXPECT_EQ(pressFormulaKey("x", "pi"), "x pi");
+  EXPECT_EQ(pressFormulaKey("x^2", "y"), "x^2y");
+  EXPECT_EQ(pressFormulaKey("2", "x"), "2x");
+  EXPECT_EQ(pressFormulaKey("x", "sin"), "x sin(");
   const FormulaKeyboardLayout l = formulaKeyboardLayout(1024, 768, kViewerFontSize);
   EXPECT_GE(l.key, 44.0f);  // a fingertip
   const auto [x, y] = l.centre(l.rows - 1, l.columns - 1);

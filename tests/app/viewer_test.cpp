@@ -10,6 +10,7 @@
 
 #include "app/viewer/fonts.hpp"
 #include "app/viewer/formula_keyboard.hpp"
+#include "interact/formula_keyboard.hpp"
 #include "scene/scene_io.hpp"
 #include "viewer_session.hpp"
 
@@ -333,9 +334,9 @@ TEST(Viewer, KioskKeepsTheExhibitRunningAndReturnsToTheStartWhenIdle) {
   const app::FormulaKeyboardLayout keyboard =
       app::formulaKeyboardLayout(1024, 768, app::kViewerFontSize);
   for (const char* label : {"clear", "x", "^2", "+", "y", "^2", "-", "1", "draw"}) {
-    const auto key = app::findFormulaKey(label);
-    ASSERT_TRUE(key) << label;
-    const auto [x, y] = keyboard.centre(key->first, key->second);
+    const auto [row, column] = interact::findFormulaKey(label);
+    ASSERT_GE(row, 0) << label;
+    const auto [x, y] = keyboard.centre(row, column);
     v.click(int(x), int(y));
   }
   ASSERT_FALSE(v.waitLog("built x^2+y^2-1").empty()) << v.log();

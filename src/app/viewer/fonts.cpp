@@ -27,6 +27,7 @@ std::string findViewerFont() {
 }
 
 std::string loadViewerFont(float contentScale) {
+  g_formulaFont = nullptr;  // of an earlier ImGui context, if any
   const float scale = std::clamp(contentScale, 0.5f, 4.0f);
   const std::string path = findViewerFont();
   if (path.empty()) {

@@ -10,12 +10,6 @@
 #include "interact/formula_keyboard.hpp"
 
 namespace zs::app {
-namespace {
-
-const interact::FormulaKeyRows& kRows = interact::formulaKeyRows();
-
-}  // namespace
-
 std::pair<float, float> FormulaKeyboardLayout::centre(int row, int column) const {
   return {left + padding + float(column) * (key + gapX) + key / 2,
           top + padding + float(row) * (key + gapY) + key / 2};
@@ -36,15 +30,6 @@ FormulaKeyboardLayout formulaKeyboardLayout(float displayWidth, float displayHei
   return l;
 }
 
-std::optional<std::pair<int, int>> findFormulaKey(const std::string& label) {
-  for (std::size_t r = 0; r < kRows.size(); ++r) {
-    for (std::size_t c = 0; c < kRows[r].size(); ++c) {
-      if (!label.empty() && kRows[r][c] == label) return std::pair{int(r), int(c)};
-    }
-  }
-  return std::nullopt;
-}
-
 void drawFormulaKeyboard(PanelState& state, PanelResult& result) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const FormulaKeyboardLayout l = formulaKeyboardLayout(display.x, display.y, ImGui::GetFontSize());
@@ -57,7 +42,7 @@ void drawFormulaKeyboard(PanelState& state, PanelResult& result) {
                                      ImGuiWindowFlags_AlwaysAutoResize |
                                      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings;
   if (ImGui::Begin("formula keyboard", nullptr, flags)) {
-    for (const auto& row : kRows) {
+    for (const auto& row : interact::formulaKeyRows()) {
       for (std::size_t i = 0; i < row.size(); ++i) {
         if (i > 0) ImGui::SameLine();
         const std::string label(row[i]);

@@ -4,7 +4,6 @@
 // writes into the panel's formula box at its end. Takes the panel's state; puts out what
 // typing in the box would: the edit (parsed and checked at once, so the first picture
 // follows every key) and, for the draw key, the submission.
-#include <optional>
 #include <string>
 #include <utility>
 
@@ -26,8 +25,5 @@ struct FormulaKeyboardLayout {
 };
 FormulaKeyboardLayout formulaKeyboardLayout(float displayWidth, float displayHeight,
                                             float fontSize);
-
-// The row and column of the key labelled `label` ("x", "^2", "draw"...), if there is one.
-std::optional<std::pair<int, int>> findFormulaKey(const std::string& label);
 
 }  // namespace zs::app

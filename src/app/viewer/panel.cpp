@@ -166,12 +166,15 @@ double sweepStep(double value, double lo, double hi, double dt, double seconds, 
 
 void checkFormulaText(PanelState& state) {
   ParseResult parsed = parseFormula(state.formula);
-  if (auto* err = std::get_if<ParseError>(&parsed))
+  state.formulaRefused = false;
+  if (auto* err = std::get_if<ParseError>(&parsed)) {
     state.formulaError = formatError(state.formula, *err);
-  else if (state.kiosk)
-    state.formulaError = kioskRefusal(state.formula, *state.kiosk);
-  else
+  } else if (state.kiosk) {
+    state.formulaError = kioskRefusal(std::get<Formula>(parsed), *state.kiosk);
+    state.formulaRefused = !state.formulaError.empty();
+  } else {
     state.formulaError.clear();
+  }
 }
 
 PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats) {

@@ -46,6 +46,7 @@ struct PanelState {
   // An exhibit (--kiosk): formulas above its degree are refused like a parse error, the
   // mesh export and the keys that write files are not shown, and the formula keyboard is.
   std::optional<interact::KioskPolicy> kiosk;
+  bool formulaRefused = false;  // formulaError is the kiosk's refusal, not a parse error
 };
 
 struct PanelResult {

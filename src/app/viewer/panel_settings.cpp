@@ -103,8 +103,8 @@ void shading(Shading& s) {
   int mode = static_cast<int>(s.color);  // curvature modes rebuild the shader (viewer_build.cpp)
   if (ImGui::Combo("color", &mode, "material\0gauss curvature\0mean curvature\0normal\0"))
     s.color = static_cast<ColorMode>(mode);
-  if (!needsCurvature(s.color)) return;
   ImGui::Checkbox("shadows", &s.shadows);  // a new shader variant (shading_defines.cpp)
+  if (!needsCurvature(s.color)) return;
   bool automatic = s.curvatureRange == 0;
   if (ImGui::Checkbox("automatic range", &automatic)) s.curvatureRange = automatic ? 0 : 1;
   if (!automatic) dragDouble("range", s.curvatureRange, 0.01, 1e-6, 1e6);

@@ -82,6 +82,10 @@ std::unique_ptr<Viewer> Viewer::open(const ViewerOptions& options, std::string& 
   if (options.kiosk) {
     v->panel_.kiosk = options.kiosk;
     v->openGallery();
+    // The formula keyboard never gives the formula box the focus: the interpreters for
+    // first pictures are wanted from the start.
+    v->interpretersAsked_ = true;
+    v->warmer_->wantInterpreters(v->scene_);
   }
   return v;
 }
@@ -126,10 +130,8 @@ bool Viewer::interacting() const {
 
 int Viewer::reducedScale(int width, int height) const {
   if (options_.dragScale > 0) return options_.dragScale;
-  if (msPerPixel_ <= 0) return 2;
   // The smallest divisor whose estimated trace fits a 30 fps budget.
-  return interact::scaleForBudget(msPerPixel_, width, height, interact::kDragBudgetMs,
-                                  interact::kDragMinScale, interact::kDragMaxScale);
+  return interact::dragScale(msPerPixel_, width, height);
 }
 
 void Viewer::traceIfNeeded(int width, int height) {
@@ -241,12 +243,9 @@ void Viewer::frame() {
     warmer_->wantInterpreters(scene_);
   }
   if (scene_ != before) onSceneEdited(before);
-  if (panel.formulaEdited && options_.kiosk && options_.log) {
-    if (std::string refusal = interact::kioskRefusal(panel_.formula, *options_.kiosk);
-        !refusal.empty()) {
-      std::printf("refused: %s\n", refusal.c_str());
-      std::fflush(stdout);
-    }
+  if (panel.formulaEdited && panel_.formulaRefused && options_.log) {
+    std::printf("refused: %s\n", panel_.formulaError.c_str());
+    std::fflush(stdout);
   }
   if ((panel.formulaEdited || panel.formulaSubmitted) && panel_.formulaError.empty() &&
       panel_.formula != scene_.formula) {

@@ -157,7 +157,7 @@ class Viewer {
   bool dirty_ = true, refine_ = false;
   int uiFrames_ = 3;  // frames still to draw for ImGui to settle after an event
   std::optional<std::chrono::steady_clock::time_point> buildAt_;  // debounced formula build
-  std::string quickFormula_;
+  std::string quickFormula_;  // the formula of the first picture on screen, "" if none
   bool interpretersAsked_ = false;  // the worker was asked to warm the interpreters
   std::vector<int> pressedSincePoll_, heldKeys_;  // holdQuickKeys
   struct MouseButtonEvent {
@@ -166,7 +166,7 @@ class Viewer {
     double x, y;
   };
   std::deque<MouseButtonEvent> mouseButtons_;  // replayMouseButtons
-  bool buttonsDown_[3] = {false, false, false};  // the formula of the first picture on screen, "" if none
+  bool buttonsDown_[3] = {false, false, false};  // as ImGui was last told
   std::chrono::steady_clock::time_point lastWheel_{};
   double msPerPixel_ = 0;  // from the latest trace, to pick the reduced scale
   double quickMsPerPixel_ = 0;  // the same for the latest first picture

@@ -184,7 +184,12 @@ void Viewer::returnToStartIfIdle() {
   const std::chrono::duration<double> idle = std::chrono::steady_clock::now() - lastInput_;
   if (idle.count() < options_.kiosk->idleSeconds) return;
   inputSinceStart_ = false;
+  // What a visitor left moving stops: a drag, a play button's sweep, a pending build.
   dragButton_ = -1;
+  std::fill(panel_.playing.begin(), panel_.playing.end(), 0);
+  buildAt_.reset();
+  mouseButtons_.clear();
+  std::fill(std::begin(buttonsDown_), std::end(buttonsDown_), false);
   hover_.clear();
   // Only a changed scene is loaded again (a visitor who just passed by leaves it as it was).
   if (scene_ != options_.scene || panel_.formula != options_.scene.formula) {

@@ -17,14 +17,16 @@ void Viewer::startPrint() {
   }
   PrintJob job;
   job.scene = scene_;
-  describeForPrint(sceneFile_.string(), job.title, job.description);
-  const std::string stem = sceneFile_.empty() ? "zeroset" : sceneFile_.stem().string();
+  // The file's name and description only while its formula is the one shown.
+  const bool fromFile = !sceneFile_.empty() && scene_.formula == loaded_.formula;
+  describeForPrint(fromFile ? sceneFile_.string() : "", job.title, job.description);
+  const std::string stem = fromFile ? sceneFile_.stem().string() : "zeroset";
   job.output = nextFreePath(options_.outputDir, stem + "-page", ".pdf");
   stats_.status = "printing a page...";
   print_ = std::async(std::launch::async, [job] {
     const std::string error = runPrintJob(job);
     glfwPostEmptyEvent();  // wake the loop to show it
-    return error.empty() ? "printed: " + job.output.string() + "\n" : "print failed: " + error;
+    return error.empty() ? "printed: " + job.output.string() + "\n" : error;
   });
 }
 
