@@ -114,3 +114,27 @@ TEST(Typeset, LongFormulasBreakBetweenTermsOfTheOutermostSum) {
 
 }  // namespace
 }  // namespace zs::printing
+
+namespace zs::printing {
+namespace {
+
+// Sums and products of many terms are chains the parser's nesting budget does not count:
+// typesetting them must not recurse once per term (the parser fuzzer found a stack overflow
+// at some 1500 factors).
+TEST(Typeset, LongSumsAndProductsDoNotRecursePerTerm) {
+  std::string product = "x", sum = "x";
+  for (int i = 0; i < 100000; ++i) {
+    product += "*y";
+    sum += i % 2 ? " + y" : " - 2x";
+  }
+  for (const std::string& formula : {product, sum}) {
+    auto tree = parseSyntax(formula);
+    ASSERT_TRUE(std::holds_alternative<SyntaxTree>(tree));
+    const std::vector<MathBox> lines =
+        typesetEquationLines(std::get<SyntaxTree>(tree), 20, fixedWidth, 500);
+    EXPECT_FALSE(lines.empty());
+  }
+}
+
+}  // namespace
+}  // namespace zs::printing
