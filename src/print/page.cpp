@@ -130,21 +130,7 @@ std::vector<MathBox> formulaLines(cairo_t* cr, const std::string& formula, doubl
   std::vector<MathBox> lines = typesetEquationLines(syntax, kSmallest, measure, width);
   for (MathBox& line : lines) {
     if (line.width <= width) continue;
-    MathBox scaled;
-    const double k = width / line.width;
-    for (TextRun r : line.runs) {
-      r.size *= k, r.x *= k, r.y *= k;
-      scaled.runs.push_back(r);
-    }
-    for (Stroke st : line.strokes) {
-      for (auto& [x, y] : st.points) x *= k, y *= k;
-      st.width *= k;
-      scaled.strokes.push_back(st);
-    }
-    scaled.width = width;
-    scaled.ascent = line.ascent * k;
-    scaled.descent = line.descent * k;
-    line = std::move(scaled);
+    line.scale(width / line.width);
   }
   return lines;
 }

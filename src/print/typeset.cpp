@@ -20,6 +20,15 @@ void MathBox::place(const MathBox& other, double dx, double dy) {
   descent = std::max(descent, other.descent + dy);
 }
 
+void MathBox::scale(double k) {
+  for (TextRun& r : runs) r.size *= k, r.x *= k, r.y *= k;
+  for (Stroke& s : strokes) {
+    for (auto& [x, y] : s.points) x *= k, y *= k;
+    s.width *= k;
+  }
+  width *= k, ascent *= k, descent *= k;
+}
+
 namespace {
 
 // Binding strength, as the parser's grammar: what a slot needs and what a box offers.

@@ -32,6 +32,8 @@ struct MathBox {
   std::vector<Stroke> strokes;
   // Appends `other` moved by (dx, dy), growing the extent to hold it.
   void place(const MathBox& other, double dx, double dy);
+  // Everything, text sizes and stroke widths included, `k` times as large.
+  void scale(double k);
 };
 
 // The advance width of `text` set in the roman or italic face at `size` points.
