@@ -8,6 +8,8 @@
 // That is a large part of a frame (docs/renderer.md). shader_assembly.cpp puts this
 // file into both stages, with RT_FRAME_STORAGE defined as `out` and as `in`; bools travel
 // as ints (GLSL has no bool varyings), so their uniforms are ints too. One member per line.
+// On GPU drivers and WebGL2 the fragment stage reads the uniforms itself into a struct of
+// these members instead (RT_FRAME_UNIFORMS; render/program_variant.hpp, FrameStorage).
 RT_FRAME_STORAGE RtFrame {
   flat vec3 domainMin;  // domain box (the thesis' clipping box)
   flat vec3 domainMax;  // (the bounding box of the ball for a sphere domain)

@@ -137,7 +137,12 @@ vec2 zsi_tan(vec2 a) {
     zsi_partial = true;  // a pole: unbounded, not a surface
     return vec2(-ZSI_INF, ZSI_INF);
   }
-  return zsi_outFn(vec2(tan(a.x), tan(a.y)), zsi_mag(a));
+  // Near a pole tan magnifies its argument's error by 1 + tan^2, and a GPU's tan (sin over
+  // cos, each with an absolute error) is off by about that much there: widened by it.
+  vec2 t = vec2(tan(a.x), tan(a.y));
+  vec2 slope = 1.0 + t * t;
+  float argErr = ZSI_FN_ABS + ZSI_ARG * zsi_mag(a);
+  return zsi_unNaN(t + vec2(-1.0, 1.0) * (abs(t) * ZSI_FN_REL + argErr * slope));
 }
 
 vec2 zsi_asin(vec2 a, inout bool u) {

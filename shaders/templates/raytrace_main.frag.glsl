@@ -150,11 +150,13 @@ void main() {
   // first hit (which is shaded after them); one reflection ray.
 #ifdef RT_SHADOWS
   const int shadowPasses = RT_SHADOWS;
+#define RT_PASSES (1 + RT_SHADOWS + RT_REFLECTION)
 #else
   const int shadowPasses = 0;
+#define RT_PASSES (1 + RT_REFLECTION)
 #endif
   const int reflectionPass = RT_REFLECTION != 0 ? 1 + shadowPasses : -1;
-  const int passes = 1 + shadowPasses + (RT_REFLECTION != 0 ? 1 : 0);
+  const int passes = RT_PASSES;
   float alpha = clamp(rt.opacity, 0.0, 1.0), w = RT_REFLECTION != 0 ? rt.primaryWeight : 1.0;
   float depth = uintBitsToFloat(0x7F800000u);  // +inf: no hit
   float value = uintBitsToFloat(0x7FC00000u);  // NaN: no hit
@@ -198,7 +200,13 @@ void main() {
     vec4 keptG[RT_MAX_HITS];
     rtShadowMask = 0u;
 #endif
+#if RT_PASSES > 1
     do {
+#else
+    // One pass is a block, not a loop: NVIDIA's compiler (driver 580) dropped the whole body
+    // of this do-while when its trip count was the constant 1 (no hit anywhere).
+    {
+#endif
       vec3 o = ro, d = rd;
       float tStart = beamStart, passAlpha = alpha, passScale = 1.0;
       rtFirstSegment = beamSegment;
@@ -271,7 +279,11 @@ void main() {
 #endif
       color += passScale * transmit * rt.background;  // what the kept hits let through
       }
+#if RT_PASSES > 1
     } while (++pass < passes && colorRay && firstT >= 0.0);
+#else
+    }
+#endif
 #ifdef RT_MARKERS
     // highlights.singular: the certified singular points as small spheres, drawn where they
     // are nearer than the surface (a constant loop: unrolled, constant indices).

@@ -76,10 +76,11 @@ std::string frameUniformsAndCopy(std::string_view block) {
   return uniforms + "\nvoid rtCopyFrame() {\n" + copies + "}\n";
 }
 
-// GLSL ES 3.00 has no interface blocks between stages: there the fragment shader reads the
-// uniforms itself into a global struct of the same members, at the start of main()
-// (RT_FRAME_BEGIN), and the vertex stage copies nothing.
-std::string esFrameStruct(std::string_view block) {
+// The frame's parameters read as uniforms by the fragment shader itself, into a global struct
+// of the block's members at the start of main() (RT_FRAME_BEGIN); the vertex stage copies
+// nothing. GLSL ES 3.00 has no interface blocks between stages, so WebGL2 always reads them
+// so; desktop GL does where RT_FRAME_UNIFORMS is defined (FrameStorage, render stage).
+std::string frameStruct(std::string_view block) {
   std::string s = "struct RtFrame {\n";
   for (const auto& [type, member] : frameMembers(block)) s += "  " + type + " " + member + ";\n";
   s += "};\nRtFrame rt;\n";
@@ -153,8 +154,10 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
   const std::string_view frame = shaderTemplate(kFrameTemplate);
   appendPiece(out, "shaders/templates/" + std::string(kFrameTemplate), string++,
               (dialect == ShaderDialect::Gl330
-                   ? "#define RT_FRAME_STORAGE in\n" + std::string(frame) + "#define RT_FRAME_BEGIN\n"
-                   : esFrameStruct(frame)) +
+                   ? "#ifdef RT_FRAME_UNIFORMS\n" + frameStruct(frame) +
+                         "#else\n#define RT_FRAME_STORAGE in\n" + std::string(frame) +
+                         "#define RT_FRAME_BEGIN\n#endif\n"
+                   : frameStruct(frame)) +
                   (interval ? std::string(kHasBeamDefine) : std::string()));
   if (!markers.empty()) appendPiece(out, "highlights.singular markers", string++, markers);
   appendPiece(out, "shaders/templates/" + std::string(kRaytraceTemplate), string++, raytrace);
@@ -215,10 +218,12 @@ std::string vertexShaderSource(ShaderDialect dialect) {
   const std::size_t firstLine = vertex.find('\n') + 1;
   std::string out = versionHeader(vertex, dialect);
   if (dialect == ShaderDialect::Gl330) {
+    out += "#ifdef RT_FRAME_UNIFORMS\nvoid rtCopyFrame() {}\n#else\n";
     appendPiece(out, "shaders/templates/" + std::string(kFrameTemplate), 1,
                 "#define RT_FRAME_STORAGE out\n" + std::string(frame));
     appendPiece(out, "generated from frame_params.glsl (shader_assembly.cpp)", 2,
                 frameUniformsAndCopy(frame));
+    out += "#endif\n";
   } else {
     appendPiece(out, "GLSL ES: the fragment stage reads the frame's uniforms (shader_assembly.cpp)",
                 1, "void rtCopyFrame() {}\n");

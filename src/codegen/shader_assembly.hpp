@@ -49,6 +49,9 @@ inline constexpr std::string_view kFrameTemplate = "frame_params.glsl";  // both
 // 3.00 for WebGL2. For ES the assembly replaces #version with ES's and the precisions it
 // requires, and carries the frame's parameters as uniforms the fragment stage copies into a
 // struct (ES has no interface blocks between stages); the templates are the same files.
+// Gl330 text carries both ways of passing the frame's parameters: flat varyings from the
+// vertex stage (the default) or, where RT_FRAME_UNIFORMS is defined, uniforms read as ES
+// reads them (render/program_variant.hpp, FrameStorage, chooses per GL driver).
 enum class ShaderDialect { Gl330, Es300 };
 
 // The embedded text of shaders/templates/<fileName>. An unknown name is a bug in zeroset:

@@ -32,7 +32,8 @@ unsigned ProgramCache::rebuild(std::string_view vertex, std::string_view fragmen
 
 unsigned ProgramCache::get(const ProgramVariant& v, std::string& log) {
   if (auto it = programs_.find(v); it != programs_.end()) return it->second;
-  const unsigned p = compileProgram(vertex_, withVariantDefines(fragment_, v), log);
+  const unsigned p = compileProgram(withFrameStorage(vertex_, storage_),
+                                    withFrameStorage(withVariantDefines(fragment_, v), storage_), log);
   if (!p) return 0;
   // Editing a light makes a new variant each time: keep only the current lighting's.
   for (auto it = programs_.begin(); it != programs_.end();) {
@@ -52,6 +53,12 @@ int ProgramCache::uniform(unsigned program, const char* name) {
   auto it = cache.find(name);
   if (it == cache.end()) it = cache.emplace(name, glGetUniformLocation(program, name)).first;
   return it->second;
+}
+
+void ProgramCache::setFrameStorage(FrameStorage storage) {
+  if (storage == storage_) return;
+  storage_ = storage;
+  dropAll();
 }
 
 void ProgramCache::drop(unsigned program) {

@@ -38,12 +38,17 @@ class ProgramCache {
   // The location of `name` in `program` (-1: none), looked up once per program.
   int uniform(unsigned program, const char* name);
 
+  // How the programs' stages pass the frame's parameters; a change drops every program.
+  void setFrameStorage(FrameStorage storage);
+  FrameStorage frameStorage() const { return storage_; }
+
  private:
   void drop(unsigned program);
   void dropAll();
 
   std::string vertex_, fragment_;
   bool hasBeam_ = false;
+  FrameStorage storage_ = FrameStorage::FlatVaryings;
   std::map<ProgramVariant, unsigned> programs_;
   std::unordered_map<unsigned, std::unordered_map<std::string, int>> locations_;
 };

@@ -1,6 +1,7 @@
 #include "render/program_variant.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 
 #include "render/shading_defines.hpp"
 
@@ -27,6 +28,26 @@ std::string withVariantDefines(std::string_view fragment, const ProgramVariant& 
       v.shading + "#line 2 0\n";
   source.insert(eol == std::string::npos ? source.size() : eol + 1, defines);
   return source;
+}
+
+FrameStorage frameStorageFor(std::string_view renderer) {
+  if (const char* forced = std::getenv("ZS_FRAME_STORAGE"); forced && *forced) {
+    const std::string_view f = forced;
+    if (f == "varyings") return FrameStorage::FlatVaryings;
+    if (f == "uniforms") return FrameStorage::Uniforms;
+  }
+  const bool software = renderer.find("llvmpipe") != std::string_view::npos ||
+                        renderer.find("softpipe") != std::string_view::npos;
+  return software ? FrameStorage::FlatVaryings : FrameStorage::Uniforms;
+}
+
+std::string withFrameStorage(std::string_view source, FrameStorage storage) {
+  std::string out(source);
+  if (storage == FrameStorage::FlatVaryings) return out;
+  const std::size_t eol = out.find('\n');
+  out.insert(eol == std::string::npos ? out.size() : eol + 1,
+             "#define RT_FRAME_UNIFORMS\n#line 2 0\n");
+  return out;
 }
 
 }  // namespace zs

@@ -34,4 +34,20 @@ struct ProgramVariant {
 // `fragment` (whose first line is #version) with the variant's #define lines after that line.
 std::string withVariantDefines(std::string_view fragment, const ProgramVariant& variant);
 
+// How a desktop program's stages pass the frame's parameters (shader_assembly.hpp).
+// FlatVaryings: the vertex stage reads the uniforms and hands them on as flat varyings,
+// because llvmpipe gathers a uniform at every use in the fragment shader, while it reads a
+// flat input once per group of pixels. The block needs more varying components (75) than
+// GL 3.3 promises (60). Uniforms: the fragment stage reads them itself, as on WebGL2; for
+// every other driver, where a uniform read costs no more than a varying.
+enum class FrameStorage { FlatVaryings, Uniforms };
+
+// FlatVaryings for Mesa's software rasterizers (GL_RENDERER names llvmpipe or softpipe),
+// Uniforms for everything else; ZS_FRAME_STORAGE=varyings|uniforms in the environment
+// overrides the choice (to compare the two on one driver).
+FrameStorage frameStorageFor(std::string_view renderer);
+
+// `source` (whose first line is #version) with the define that selects `storage`.
+std::string withFrameStorage(std::string_view source, FrameStorage storage);
+
 }  // namespace zs

@@ -39,7 +39,13 @@ void fillTextureBuffer(unsigned& buffer, unsigned& texture, std::span<const std:
 
 }  // namespace
 
-RayTracer::RayTracer() : preferred_(ProgramVariant::of(RenderSettings{})) {
+RayTracer::RayTracer()
+    : RayTracer(frameStorageFor(reinterpret_cast<const char*>(glGetString(GL_RENDERER))
+                                    ? reinterpret_cast<const char*>(glGetString(GL_RENDERER))
+                                    : "")) {}
+
+RayTracer::RayTracer(FrameStorage storage) : preferred_(ProgramVariant::of(RenderSettings{})) {
+  programs_.setFrameStorage(storage);
   glGenVertexArrays(1, &vao_);
 }
 

@@ -42,7 +42,10 @@ using ProgressFn = std::function<bool(int tilesDone, int tilesTotal)>;
 
 class RayTracer {
  public:
+  // Needs a current GL context: the frame's parameters travel as its driver wants them
+  // (frameStorageFor(GL_RENDERER)), or as `storage` says.
   RayTracer();
+  explicit RayTracer(FrameStorage storage);
   ~RayTracer();
   RayTracer(const RayTracer&) = delete;
   RayTracer& operator=(const RayTracer&) = delete;
@@ -52,6 +55,7 @@ class RayTracer {
   // the current program's are not compiled again.
   bool build(std::string_view vertexSource, std::string_view fragmentSource, std::string& log);
   bool ready() const { return program_ != 0; }
+  FrameStorage frameStorage() const { return programs_.frameStorage(); }
 
   // The 12-float-per-node hierarchy; "" on success, else why it was rejected (the previous
   // hierarchy stays). Nothing is hit until a hierarchy is set.

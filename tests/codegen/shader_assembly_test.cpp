@@ -42,8 +42,11 @@ TEST(ShaderAssembly, PiecesInOrderWithLineDirectives) {
   EXPECT_EQ(shader.rfind("#version 330 core\n", 0), 0u);
   const auto prelude = shader.find("float zs_F(vec3 p);");
   const auto block = shader.find("#line 1 1\n" + glsl->source);
-  const auto frame = shader.find("#line 1 2\n#define RT_FRAME_STORAGE in\n" +
-                                 std::string(shaderTemplate(kFrameTemplate)));
+  // The frame's parameters: uniforms where RT_FRAME_UNIFORMS is defined, else flat varyings.
+  const auto frame = shader.find("#line 1 2\n#ifdef RT_FRAME_UNIFORMS\n");
+  EXPECT_NE(shader.find("#else\n#define RT_FRAME_STORAGE in\n" +
+                        std::string(shaderTemplate(kFrameTemplate)), frame),
+            std::string::npos);
   const auto main = shader.find("#line 1 3\n" + std::string(shaderTemplate(kRaytraceTemplate)));
   ASSERT_NE(frame, std::string::npos);
   EXPECT_LT(block, frame);
@@ -115,12 +118,21 @@ TEST(ShaderAssembly, ProgramVariantsPassGlslangForEveryMethodAndDialect) {
         assembleFragmentShader(*glsl, {}, dialect),
         assembleFragmentShader(*glsl, emitIntervalGlsl(f.graph, f.root), {}, dialect),
         assembleFragmentShader(*glsl, *poly, {}, dialect)};
-    for (const RenderSettings& settings : {shadows, layered}) {
-      for (const std::string& source : sources) {
-        const ValidationResult result =
-            validateGlsl(withVariantDefines(source, ProgramVariant::of(settings)), Stage::Fragment);
-        EXPECT_TRUE(result.ok) << formatInternalShaderError("fragment shader variant", result);
+    // Desktop text passes the frame's parameters as flat varyings or as uniforms.
+    std::vector<FrameStorage> storages = {FrameStorage::FlatVaryings};
+    if (dialect == ShaderDialect::Gl330) storages.push_back(FrameStorage::Uniforms);
+    for (FrameStorage storage : storages) {
+      for (const RenderSettings& settings : {shadows, layered}) {
+        for (const std::string& source : sources) {
+          const ValidationResult result = validateGlsl(
+              withFrameStorage(withVariantDefines(source, ProgramVariant::of(settings)), storage),
+              Stage::Fragment);
+          EXPECT_TRUE(result.ok) << formatInternalShaderError("fragment shader variant", result);
+        }
       }
+      const ValidationResult vertex =
+          validateGlsl(withFrameStorage(vertexShaderSource(dialect), storage), Stage::Vertex);
+      EXPECT_TRUE(vertex.ok) << formatInternalShaderError("vertex shader", vertex);
     }
   }
 }

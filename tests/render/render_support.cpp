@@ -58,7 +58,8 @@ std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& erro
     error = *message;
     return nullptr;
   }
-  auto tracer = std::make_unique<RayTracer>();
+  auto tracer = spec.frameStorage ? std::make_unique<RayTracer>(*spec.frameStorage)
+                                  : std::make_unique<RayTracer>();
   if (error = loadSurface(*tracer, std::get<PreparedSurface>(prepared)); !error.empty())
     return nullptr;
   return tracer;

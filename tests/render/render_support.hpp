@@ -6,6 +6,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -42,6 +43,8 @@ struct SurfaceSpec {
   // The second derivatives (codegen/emit_hessian.hpp), which shading.color "gauss" and
   // "mean" need.
   bool hessian = false;
+  // How the frame's parameters reach the fragment stage; unset: as the driver's (RayTracer()).
+  std::optional<FrameStorage> frameStorage{};
 };
 
 // Builds a ray tracer for `spec` on the current context. Returns null with `error` set
