@@ -201,7 +201,8 @@ function applySetting(key, tomlValue) {
   const error = session.applyOverrides([`${key}=${tomlValue}`]);
   if (error) { showError(error); return; }
   clearError();
-  if (key.startsWith('camera.')) { buildSettings(); redraw(); return; }
+  // The camera and the clip planes are frame parameters: no new program or octree.
+  if (key.startsWith('camera.') || key.startsWith('clip.')) { buildSettings(); redraw(); return; }
   prepareAndDraw();
 }
 
@@ -290,7 +291,9 @@ const GROUPS = [
   ['Materials', /^materials/],
   ['Highlights', /^(silhouette|border|singular|highlights|reflection)/],
   ['Colouring', /^(shading|background)/],
+  ['Cross-sections', /^clip/],
 ];
+const MAX_CLIP_PLANES = 4;  // render/settings.hpp kMaxClipPlanes
 
 function groupOf(key) {
   for (const [name, re] of GROUPS) if (re.test(key)) return name;
@@ -315,7 +318,7 @@ function settingRow(s) {
   const id = 'set-' + s.key.replace(/\./g, '-');
   const label = document.createElement('label');
   label.htmlFor = id;
-  label.textContent = s.key.replace(/^lights\.source\.\d+\./, '');
+  label.textContent = s.key.replace(/^(lights\.source|clip\.plane)\.\d+\./, '');
   row.append(label);
   let input;
   if (s.type === 'bool') {
@@ -390,15 +393,45 @@ function buildSettings() {
     return groups.get(name);
   };
   for (const s of session.settings()) group(groupOf(s.key)).append(settingRow(s));
-  session.lights().forEach((light, i) => {
+  session.listEntries('lights.source').forEach((light, i) => {
     const set = document.createElement('fieldset');
     const legend = document.createElement('legend');
     legend.textContent = `light ${i + 1}`;
     set.append(legend, ...light.map(settingRow));
     group('Lights').append(set);
   });
+  clipPlaneRows(group('Cross-sections'));
   box.append(...groups.values());
   if (focused) box.querySelector(`[data-key="${focused}"]`)?.focus();
+}
+
+// The clip planes: one fieldset each with a remove button, and a button that adds a plane
+// (z <= 0 first). Adding and removing replace the whole list through --set.
+function clipPlaneRows(box) {
+  const planes = session.listEntries('clip.plane');
+  const inline = (plane) => '{' + plane.map((s) => `${s.key.replace(/^.*\./, '')} = ` +
+    tomlOf(s, s.type === 'bool' ? s.value[0] !== 0 : s.type === 'vec3' ? s.value : s.value[0])).join(', ') + '}';
+  const setList = (list) => applySetting('clip.plane', `[${list.join(', ')}]`);
+  planes.forEach((plane, i) => {
+    const set = document.createElement('fieldset');
+    const legend = document.createElement('legend');
+    legend.textContent = `plane ${i + 1}`;
+    const remove = document.createElement('button');
+    remove.type = 'button';
+    remove.textContent = 'remove';
+    remove.id = `clip-plane-${i + 1}-remove`;
+    remove.addEventListener('click', () => setList(planes.filter((_, j) => j !== i).map(inline)));
+    set.append(legend, ...plane.map(settingRow), remove);
+    box.append(set);
+  });
+  if (planes.length < MAX_CLIP_PLANES) {
+    const add = document.createElement('button');
+    add.type = 'button';
+    add.textContent = 'add plane';
+    add.id = 'clip-plane-add';
+    add.addEventListener('click', () => setList([...planes.map(inline), '{normal = [0, 0, 1], offset = 0}']));
+    box.append(add);
+  }
 }
 
 // ---- pointer, wheel, touch, keys -----------------------------------------------------

@@ -41,6 +41,13 @@ RT_FRAME_STORAGE RtFrame {
   flat float opacity;
   flat vec3 silhouetteColor;
   flat vec3 borderColor;
+  flat vec4 clip0;  // clip planes (unit normal, offset): the ray keeps normal . p <= offset;
+  flat vec4 clip1;  // an unused plane is (0, 0, 0, 1e30)
+  flat vec4 clip2;
+  flat vec4 clip3;
+  flat int cutOn;  // the curve where the surface meets a clip plane
+  flat float cutThreshold;
+  flat vec3 cutColor;
   flat vec3 background;
   flat int nodeCount;  // sampling only: the hierarchy walk, leaf segments, tangent roots
   flat int firstNode;

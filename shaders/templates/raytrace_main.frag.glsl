@@ -69,13 +69,34 @@ vec2 domainInterval(vec3 o, vec3 d, vec3 inv) {
   return rt.ball.w > 0.0 ? vec2(max(t.x, s.x), min(t.y, s.y)) : t;
 }
 
-// The part of the ray where hits can lie: inside the domain (box and ball) and inside the
-// padded box of the hierarchy's leaves. Every march clips its rays with it (the beam pass
-// encloses a tile's rays in that box too). Empty when x > y.
+// The part of t where the ray keeps plane . (o + t d) <= plane.w (a clip plane).
+vec2 rtClipPlane(vec4 plane, vec3 o, vec3 d, vec2 t) {
+  float nd = dot(plane.xyz, d), room = plane.w - dot(plane.xyz, o);
+  if (nd > 0.0) t.y = min(t.y, room / nd);
+  else if (nd < 0.0) t.x = max(t.x, room / nd);
+  else if (room < 0.0) t = vec2(1.0, -1.0);
+  return t;
+}
+
+// How far p lies on the kept side of the nearest clip plane (1e30 with none): the cut
+// highlight, and whether a point is cut away (negative).
+float rtCutDepth(vec3 p) {
+  return min(min(rt.clip0.w - dot(rt.clip0.xyz, p), rt.clip1.w - dot(rt.clip1.xyz, p)),
+             min(rt.clip2.w - dot(rt.clip2.xyz, p), rt.clip3.w - dot(rt.clip3.xyz, p)));
+}
+
+// The part of the ray where hits can lie: inside the domain (box and ball), on the kept side
+// of every clip plane and inside the padded box of the hierarchy's leaves. Every march clips
+// its rays with it; the beam pass encloses a tile's rays in the domain's and the leaves' box
+// only, which can only start the walk earlier. Empty when x > y.
 vec2 rtHitInterval(vec3 o, vec3 d, vec3 inv) {
   vec2 dom = domainInterval(o, d, inv);
   vec2 box = slab(rt.rootMin - rt.pad, rt.rootMax + rt.pad, o, inv);
-  return vec2(max(dom.x, box.x), min(dom.y, box.y));
+  vec2 t = vec2(max(dom.x, box.x), min(dom.y, box.y));
+  t = rtClipPlane(rt.clip0, o, d, t);
+  t = rtClipPlane(rt.clip1, o, d, t);
+  t = rtClipPlane(rt.clip2, o, d, t);
+  return rtClipPlane(rt.clip3, o, d, t);
 }
 
 // How far p lies inside the domain's boundary (negative outside): the border highlight.
@@ -294,7 +315,7 @@ void main() {
       vec3 oc = ro - rtMarkers[k].xyz;
       float b = dot(oc, rd), c = dot(oc, oc) - rtMarkers[k].w * rtMarkers[k].w;
       float disc = b * b - c * dot(rd, rd), tm = (-b - sqrt(max(disc, 0.0))) / dot(rd, rd);
-      bool hit = disc >= 0.0 && tm > 0.0 && tm < tMark;
+      bool hit = disc >= 0.0 && tm > 0.0 && tm < tMark && rtCutDepth(rtMarkers[k].xyz) >= 0.0;
       tMark = hit ? tm : tMark;
       nMark = hit ? (ro + tm * rd - rtMarkers[k].xyz) / rtMarkers[k].w : nMark;
       marked = marked || hit;

@@ -100,6 +100,11 @@ std::variant<Exported, std::string> exportJsurf(const Scene& scene) {
     out.warnings.push_back("surface.level " + shortestText(scene.level) +
                            " is written into the formula: SURFER has no level");
   }
+  const auto planes = std::count_if(scene.render.clipPlanes.begin(), scene.render.clipPlanes.end(),
+                                    [](const ClipPlane& p) { return p.enabled; });
+  if (planes > 0)
+    out.warnings.push_back(std::to_string(planes) + " clip plane" + (planes > 1 ? "s are" : " is") +
+                           " left out: SURFER has no cross-sections");
   const SurferFormula formula = surferFormula(text, out.warnings);
   if (!formula.error.empty()) return "error: cannot export to SURFER:\n" + formula.error;
   SurferScene s = toSurferScene(scene, out.warnings);

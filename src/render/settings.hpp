@@ -186,6 +186,18 @@ struct Highlight {
   bool operator==(const Highlight&) const = default;
 };
 
+// Cross-sections: a plane cuts away the side where normal . p > offset (the domain keeps
+// what no plane cuts). Normals need not be unit length; a zero normal is refused by the scene.
+struct ClipPlane {
+  bool enabled = true;
+  Vec3 normal{0, 0, 1};
+  double offset = 0;
+
+  bool operator==(const ClipPlane&) const = default;
+};
+
+inline constexpr int kMaxClipPlanes = 4;
+
 struct Reflection {
   bool enabled = true;
   double primaryWeight = 0.7;  // color = primary*w + reflected*(1-w)
@@ -203,6 +215,9 @@ struct RenderSettings {
   Highlight border{true, 0.01, {0.9, 0.9, 0.9}};
   // Certified singular points (src/singular) drawn as small spheres of this radius.
   Highlight singular{false, 0.04, {0.9, 0.15, 0.55}};
+  std::vector<ClipPlane> clipPlanes;  // at most kMaxClipPlanes
+  // The curve where the surface meets a clip plane: hits closer to a plane than this.
+  Highlight cut{true, 0.02, {0.85, 0.12, 0.1}};
   Reflection reflection;
   double opacity = 1.0;  // < 1 blends the kept hits front to back
   int samples = 1;       // N x N supersampling

@@ -22,8 +22,12 @@ std::string_view leafOf(std::string_view dotted) {
 
 // Every name a file may spell: leaves, the tables that hold them, formula and params.
 std::vector<std::string> allNames() {
-  std::vector<std::string> names{std::string(kFormulaKey), std::string(kParamsKey),
-                                 std::string(kLightSourcesKey)};
+  std::vector<std::string> names{std::string(kFormulaKey), std::string(kParamsKey)};
+  for (const ListSpec& l : listSpecs()) {
+    for (std::string_view p = l.name; !p.empty(); p = parentOf(p)) {
+      if (std::find(names.begin(), names.end(), p) == names.end()) names.emplace_back(p);
+    }
+  }
   for (const KeySpec& k : keySpecs()) {
     for (std::string_view p = k.name; !p.empty(); p = parentOf(p)) {
       if (std::find(names.begin(), names.end(), p) == names.end()) names.emplace_back(p);

@@ -59,7 +59,7 @@ class Reader {
     seen_.push_back({name, &src_, positionOf(node)});
     if (name == kFormulaKey) return formula(node);
     if (name == kParamsKey) return params(node);
-    if (name == kLightSourcesKey) return lightSources(node);
+    if (const ListSpec* list = findList(name)) return this->list(*list, node);
     if (const KeySpec* spec = findKey(name)) {
       if (spec->legacyLight >= 0) return legacyLight(*spec, node);
       return readLeaf(scene_, *spec, node, src_);
@@ -133,54 +133,69 @@ class Reader {
     return readLeaf(scene_, spec, node, src_);
   }
 
-  // [[lights.source]]: an array of tables replaces the whole list; a table of numbered
-  // entries (what --set lights.source.2.intensity=0.3 reads as) changes existing lights.
-  std::optional<SceneError> lightSources(const toml::node& node) {
-    const std::string key(kLightSourcesKey);
-    std::vector<Light>& lights = scene_.render.lights.sources;
+  // An array of tables ([[lights.source]], [[clip.plane]]) replaces the whole list; a table
+  // of numbered entries (what --set lights.source.2.intensity=0.3 reads as) changes
+  // existing entries.
+  std::optional<SceneError> list(const ListSpec& spec, const toml::node& node) {
+    const std::string key(spec.name), noun(spec.noun);
+    const std::size_t size = spec.size(scene_);
     if (const toml::table* numbered = node.as_table()) {
       for (const auto& [index, value] : inFileOrder(*numbered)) {
         const std::string name = key + "." + std::string(index->str());
-        const std::size_t n = lightNumber(index->str());
-        if (n == 0 || n > lights.size()) {
+        const std::size_t n = entryNumber(index->str());
+        if (n == 0 || n > size) {
           return src_.error(positionOf(*index), name,
-                            "the scene has no light " + std::string(index->str()),
-                            "lights are numbered from 1 to " + std::to_string(lights.size()) +
-                                ", in the order of the [[lights.source]] entries");
+                            "the scene has no " + noun + " " + std::string(index->str()),
+                            size == 0 ? "the scene has no [[" + key + "]] entries yet: add one "
+                                        "as an array, e.g. --set '" + key + "=[" +
+                                        std::string(spec.example) + "]'"
+                                      : noun + "s are numbered from 1 to " + std::to_string(size) +
+                                            ", in the order of the [[" + key + "]] entries");
         }
-        if (auto err = light(*value, name, lights[n - 1])) return err;
+        if (auto err = entry(spec, *value, name, scene_, n - 1)) return err;
       }
       return std::nullopt;
     }
     const toml::array* array = node.as_array();
     if (!array) {
       return src_.error(positionOf(node), key, key + " must be an array of tables, got " + typeName(node),
-                        "write each light as its own [[lights.source]] table");
+                        "write each " + noun + " as its own [[" + key + "]] table");
     }
-    if (legacyRead_) {
+    if (spec.name == kLightSourcesKey && legacyRead_) {
       return src_.error(positionOf(node), key,
                         "[[lights.source]] and lights.directional / lights.point both describe "
                         "the lights",
                         "list every light as a [[lights.source]] entry and drop "
                         "[lights.directional] and [lights.point]");
     }
-    if (array->size() > static_cast<std::size_t>(kMaxLights)) {
-      return src_.error(positionOf((*array)[kMaxLights]), key,
-                        "at most " + std::to_string(kMaxLights) + " lights, got " +
+    if (array->size() > spec.maxSize) {
+      return src_.error(positionOf((*array)[spec.maxSize]), key,
+                        "at most " + std::to_string(spec.maxSize) + " " + noun + "s, got " +
                             std::to_string(array->size()),
-                        "switch lights off with enabled = false rather than adding more");
+                        std::string(spec.tooManyHint));
     }
-    std::vector<Light> list(array->size());
+    Scene read = scene_;
+    spec.resize(read, array->size());
+    Scene fresh;  // a new entry starts from an entry's defaults, not from the old list's
+    spec.resize(fresh, 0);
+    spec.resize(fresh, 1);
     for (std::size_t i = 0; i < array->size(); ++i) {
-      if (auto err = light((*array)[i], key + "." + std::to_string(i + 1), list[i])) return err;
+      spec.store(fresh, read, i);
+      if (auto err = entry(spec, (*array)[i], key + "." + std::to_string(i + 1), read, i))
+        return err;
     }
-    lights = std::move(list);
-    listRead_ = true;
+    spec.resize(scene_, array->size());
+    for (std::size_t i = 0; i < array->size(); ++i) {
+      Scene scratch;
+      spec.entry(read, i, scratch);
+      spec.store(scratch, scene_, i);
+    }
+    if (spec.name == kLightSourcesKey) listRead_ = true;
     return std::nullopt;
   }
 
   // "3" -> 3; 0 for anything that is not a plain positive number.
-  static std::size_t lightNumber(std::string_view text) {
+  static std::size_t entryNumber(std::string_view text) {
     if (text.empty() || text.size() > 2) return 0;
     std::size_t n = 0;
     for (const char c : text) {
@@ -190,31 +205,32 @@ class Reader {
     return n;
   }
 
-  // The keys of one light onto `out`, through a scratch scene holding just that light (the
-  // schema's light fields address sources.front()).
-  std::optional<SceneError> light(const toml::node& node, const std::string& name, Light& out) {
+  // The keys of entry i of `spec`'s list in `target`, through a scratch scene holding just
+  // that entry (the list's key specs address its first element).
+  std::optional<SceneError> entry(const ListSpec& spec, const toml::node& node,
+                                  const std::string& name, Scene& target, std::size_t i) {
     const toml::table* table = node.as_table();
     if (!table) {
       return src_.error(positionOf(node), name, name + " must be a table, got " + typeName(node),
-                        "a light is a table: { kind = \"point\", position = [0, 0, 5] }");
+                        "a " + std::string(spec.noun) + " is a table: " + std::string(spec.example));
     }
     Scene scratch;
-    scratch.render.lights.sources = {out};
+    spec.entry(target, i, scratch);
     for (const auto& [key, value] : inFileOrder(*table)) {
       const std::string dotted = name + "." + std::string(key->str());
       seen_.push_back({dotted, &src_, positionOf(*value)});
-      const KeySpec* spec = findLightKey(key->str());
-      if (!spec) {
+      const KeySpec* keySpec = findListKey(spec, key->str());
+      if (!keySpec) {
         std::vector<std::string_view> names;
-        for (const KeySpec& k : lightKeySpecs()) names.push_back(k.name);
+        for (const KeySpec& k : spec.keys) names.push_back(k.name);
         return src_.error(positionOf(*key), dotted, "unknown key \"" + dotted + "\"",
                           choiceHint(key->str(), names));
       }
-      KeySpec named = *spec;
-      named.name = dotted;  // messages name the light
+      KeySpec named = *keySpec;
+      named.name = dotted;  // messages name the entry
       if (auto err = readLeaf(scratch, named, *value, src_)) return err;
     }
-    out = scratch.render.lights.sources.front();
+    spec.store(scratch, target, i);
     return std::nullopt;
   }
 

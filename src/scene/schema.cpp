@@ -108,6 +108,9 @@ const KeySpec kKeys[] = {
     {"highlights.border.enabled", ZS_FIELD(render.border.enabled), kAny},
     {"highlights.border.tolerance", ZS_FIELD(render.border.threshold), kNonNegative},
     {"highlights.border.color", ZS_FIELD(render.border.color), kUnit},
+    {"highlights.cut.enabled", ZS_FIELD(render.cut.enabled), kAny},
+    {"highlights.cut.tolerance", ZS_FIELD(render.cut.threshold), kNonNegative},
+    {"highlights.cut.color", ZS_FIELD(render.cut.color), kUnit},
     {"highlights.singular.enabled", ZS_FIELD(render.singular.enabled), kAny},
     {"highlights.singular.radius", ZS_FIELD(render.singular.threshold), kPositive},
     {"highlights.singular.color", ZS_FIELD(render.singular.color), kUnit},
@@ -126,7 +129,41 @@ const KeySpec kLightKeys[] = {
     {"color", ZS_FIELD(render.lights.sources.front().color), kUnit},
 };
 
+// One [[clip.plane]] entry, addressing the first plane as the light keys do.
+const KeySpec kClipPlaneKeys[] = {
+    {"enabled", ZS_FIELD(render.clipPlanes.front().enabled), kAny},
+    {"normal", ZS_FIELD(render.clipPlanes.front().normal), kAny, true},
+    {"offset", ZS_FIELD(render.clipPlanes.front().offset), kAny},
+};
+
 #undef ZS_FIELD
+
+const ListSpec kLists[] = {
+    {kLightSourcesKey, "light", kLightKeys, static_cast<std::size_t>(kMaxLights),
+     "{ kind = \"point\", position = [0, 0, 5] }",
+     "switch lights off with enabled = false rather than adding more",
+     [](const Scene& s) { return s.render.lights.sources.size(); },
+     [](Scene& s, std::size_t n) { s.render.lights.sources.resize(n); },
+     [](const Scene& from, std::size_t i, Scene& scratch) {
+       scratch.render.lights.sources = {from.render.lights.sources[i]};
+     },
+     [](const Scene& scratch, Scene& to, std::size_t i) {
+       to.render.lights.sources[i] = scratch.render.lights.sources.front();
+     },
+     "lights.space"},
+    {kClipPlanesKey, "clip plane", kClipPlaneKeys, static_cast<std::size_t>(kMaxClipPlanes),
+     "{ normal = [0, 0, 1], offset = 0.5 }",
+     "switch planes off with enabled = false, or combine the cuts you need in fewer planes",
+     [](const Scene& s) { return s.render.clipPlanes.size(); },
+     [](Scene& s, std::size_t n) { s.render.clipPlanes.resize(n); },
+     [](const Scene& from, std::size_t i, Scene& scratch) {
+       scratch.render.clipPlanes = {from.render.clipPlanes[i]};
+     },
+     [](const Scene& scratch, Scene& to, std::size_t i) {
+       to.render.clipPlanes[i] = scratch.render.clipPlanes.front();
+     },
+     ""},
+};
 
 }  // namespace
 
@@ -134,12 +171,23 @@ std::span<const KeySpec> keySpecs() {
   return kKeys;
 }
 
+std::span<const ListSpec> listSpecs() {
+  return kLists;
+}
+
+const ListSpec* findList(std::string_view dottedName) {
+  for (const ListSpec& l : kLists) {
+    if (l.name == dottedName) return &l;
+  }
+  return nullptr;
+}
+
 std::span<const KeySpec> lightKeySpecs() {
   return kLightKeys;
 }
 
-const KeySpec* findLightKey(std::string_view name) {
-  for (const KeySpec& k : kLightKeys) {
+const KeySpec* findListKey(const ListSpec& list, std::string_view name) {
+  for (const KeySpec& k : list.keys) {
     if (k.name == name) return &k;
   }
   return nullptr;
@@ -153,7 +201,10 @@ const KeySpec* findKey(std::string_view dottedName) {
 }
 
 bool isTableName(std::string_view dottedName) {
-  if (dottedName == kParamsKey || dottedName == kLightSourcesKey) return true;
+  if (dottedName == kParamsKey) return true;
+  for (const ListSpec& l : kLists) {
+    if (l.name == dottedName || l.name.starts_with(std::string(dottedName) + ".")) return true;
+  }
   return std::any_of(std::begin(kKeys), std::end(kKeys), [&](const KeySpec& k) {
     return k.name.size() > dottedName.size() && k.name.starts_with(dottedName) &&
            k.name[dottedName.size()] == '.';

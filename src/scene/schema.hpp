@@ -50,17 +50,36 @@ struct KeySpec {
 std::span<const KeySpec> keySpecs();
 const KeySpec* findKey(std::string_view dottedName);
 
-// The keys of one light of the [[lights.source]] array ("kind", "enabled", ...). Their
-// fields address render.lights.sources.front(): the reader and the writer go through a
-// scratch Scene holding just the light in question.
-std::span<const KeySpec> lightKeySpecs();
-const KeySpec* findLightKey(std::string_view name);
+// An array of tables in a scene: [[lights.source]], [[clip.plane]]. Each entry's keys
+// ("kind", "enabled", ...) have fields that address the first element of the list: the
+// reader and the writer go through a scratch Scene whose list holds just the entry in
+// question (`entry` puts element i there, `store` takes it back).
+struct ListSpec {
+  std::string_view name;          // dotted: "lights.source"
+  std::string_view noun;          // "light"
+  std::span<const KeySpec> keys;  // of one entry
+  std::size_t maxSize;
+  std::string_view example;       // one entry as an inline table, for messages
+  std::string_view tooManyHint;
+  std::size_t (*size)(const Scene&);
+  void (*resize)(Scene&, std::size_t);
+  void (*entry)(const Scene& from, std::size_t i, Scene& scratch);
+  void (*store)(const Scene& scratch, Scene& to, std::size_t i);
+  // The key of the table after whose keys the writer puts the entries ("" : at the end).
+  std::string_view writtenAfter;
+};
 
-// True for "camera", "lights", "lights.point", ...: names that hold other keys.
+std::span<const ListSpec> listSpecs();
+const ListSpec* findList(std::string_view dottedName);
+std::span<const KeySpec> lightKeySpecs();  // the keys of one [[lights.source]] entry
+const KeySpec* findListKey(const ListSpec& list, std::string_view name);
+
+// True for "camera", "lights", "lights.point", "clip", ...: names that hold other keys.
 bool isTableName(std::string_view dottedName);
 
 inline constexpr std::string_view kFormulaKey = "formula";
 inline constexpr std::string_view kParamsKey = "params";
 inline constexpr std::string_view kLightSourcesKey = "lights.source";  // [[lights.source]]
+inline constexpr std::string_view kClipPlanesKey = "clip.plane";       // [[clip.plane]]
 
 }  // namespace zs::scene_detail

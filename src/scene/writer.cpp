@@ -74,16 +74,21 @@ std::string valueText(Scene& scene, const KeySpec& spec) {
       spec.field);
 }
 
-// Right after the keys of [lights]: an empty list must be written inside that table.
-std::string lightSources(const std::vector<Light>& lights) {
-  if (lights.empty()) return "source = []\n";
+// The entries of a list as [[name]] tables. An empty list is written only where the default
+// has entries (the lights), as `leaf = []` inside the parent table the writer is in.
+std::string listText(const Scene& scene, const ListSpec& spec) {
+  const std::size_t n = spec.size(scene);
+  if (n == 0) {
+    if (spec.size(Scene{}) == 0) return {};
+    return std::string(spec.name.substr(spec.name.rfind('.') + 1)) + " = []\n";
+  }
   std::string out;
-  for (const Light& light : lights) {
-    Scene scratch;  // the light keys address sources.front() (schema.hpp)
-    scratch.render.lights.sources = {light};
-    out += "\n[[" + std::string(kLightSourcesKey) + "]]\n";
-    for (const KeySpec& spec : lightKeySpecs())
-      out += std::string(spec.name) + " = " + valueText(scratch, spec) + "\n";
+  for (std::size_t i = 0; i < n; ++i) {
+    Scene scratch;  // the entry keys address the list's first element (schema.hpp)
+    spec.entry(scene, i, scratch);
+    out += "\n[[" + std::string(spec.name) + "]]\n";
+    for (const KeySpec& key : spec.keys)
+      out += std::string(key.name) + " = " + valueText(scratch, key) + "\n";
   }
   return out;
 }
@@ -117,9 +122,12 @@ std::string saveScene(const Scene& scene) {
       table = prefix;
     }
     out += std::string(leaf) + " = " + valueText(copy, spec) + "\n";
-    // The last key of [lights]: the [[lights.source]] tables follow it.
-    if (spec.name == "lights.space") out += lightSources(scene.render.lights.sources);
+    // The last key of a list's parent table: the list's [[...]] tables follow it.
+    for (const ListSpec& list : listSpecs())
+      if (spec.name == list.writtenAfter) out += listText(scene, list);
   }
+  for (const ListSpec& list : listSpecs())
+    if (list.writtenAfter.empty()) out += listText(scene, list);
   return out;
 }
 

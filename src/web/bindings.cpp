@@ -183,9 +183,9 @@ val settingsJs(const WebSession& s) {
   return arrayOf(s.settings(), settingJs);
 }
 
-val lightsJs(const WebSession& s) {
-  return arrayOf(s.lights(),
-                 [](const std::vector<Setting>& light) { return arrayOf(light, settingJs); });
+val listEntriesJs(const WebSession& s, const std::string& list) {
+  return arrayOf(s.listEntries(list),
+                 [](const std::vector<Setting>& entry) { return arrayOf(entry, settingJs); });
 }
 
 val probeJs(const WebSession& s, int x, int y, int width, int height) {
@@ -301,7 +301,7 @@ EMSCRIPTEN_BINDINGS(zeroset) {
       .function("probe", &probeJs)
       .function("params", &paramsJs)
       .function("settings", &settingsJs)
-      .function("lights", &lightsJs)
+      .function("listEntries", &listEntriesJs)
       .function("notes", &WebSession::notes)
       .function("method", &WebSession::method);
 }

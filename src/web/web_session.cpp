@@ -281,19 +281,21 @@ std::vector<Setting> WebSession::settings() const {
   return out;
 }
 
-std::vector<std::vector<Setting>> WebSession::lights() const {
+std::vector<std::vector<Setting>> WebSession::listEntries(std::string_view name) const {
   std::vector<std::vector<Setting>> out;
-  const std::vector<Light>& sources = scene_.render.lights.sources;
-  for (std::size_t i = 0; i < sources.size(); ++i) {
-    // The light keys address the first light of a scene that holds just this one.
+  const scene_detail::ListSpec* list = scene_detail::findList(name);
+  if (!list) return out;
+  for (std::size_t i = 0; i < list->size(scene_); ++i) {
+    // The entry keys address the first element of a scene whose list holds just this one.
     Scene scratch;
-    scratch.render.lights.sources = {sources[i]};
-    std::vector<Setting> light;
-    for (const scene_detail::KeySpec& spec : scene_detail::lightKeySpecs()) {
-      light.push_back(settingOf(
-          spec, scratch, "lights.source." + std::to_string(i + 1) + "." + std::string(spec.name)));
+    list->entry(scene_, i, scratch);
+    std::vector<Setting> entry;
+    for (const scene_detail::KeySpec& spec : list->keys) {
+      entry.push_back(settingOf(spec, scratch,
+                                std::string(list->name) + "." + std::to_string(i + 1) + "." +
+                                    std::string(spec.name)));
     }
-    out.push_back(std::move(light));
+    out.push_back(std::move(entry));
   }
   return out;
 }

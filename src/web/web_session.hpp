@@ -111,9 +111,9 @@ class WebSession {
   std::string sceneText() const;
   // Every key of the scene schema with its range and current value, in file order.
   std::vector<Setting> settings() const;
-  // The light sources in order, each as its keys ("lights.source.N.KEY", N from 1, what
-  // applyOverrides takes).
-  std::vector<std::vector<Setting>> lights() const;
+  // The entries of a list of the scene ("lights.source", "clip.plane") in order, each as its
+  // keys ("lights.source.N.KEY", N from 1, what applyOverrides takes); none for another name.
+  std::vector<std::vector<Setting>> listEntries(std::string_view list) const;
   // Parameter names in the formula's order and their values (prepared surface's).
   std::vector<std::pair<std::string, double>> params() const;
   // Notes for the user: the method's fallback, a constant formula, what a .jsurf file

@@ -78,5 +78,15 @@ TEST(JsurfExport, BoxDomainBecomesTheBallThroughItsCornersWithANote) {
   EXPECT_NEAR(std::get<Imported>(back).scene.domain.radius, std::sqrt(3 * 1.5 * 1.5), 1e-12);
 }
 
+TEST(JsurfExport, ClipPlanesAreLeftOutWithANote) {
+  Scene s;
+  s.domain.shape = DomainShape::Sphere;
+  s.render.clipPlanes = {{true, {0, 0, 1}, 0.2}, {false, {1, 0, 0}, 0}, {true, {0, 1, 0}, 0}};
+  const Exported e = exportOk(s);
+  EXPECT_TRUE(std::any_of(e.warnings.begin(), e.warnings.end(), [](const std::string& w) {
+    return w.find("2 clip planes are left out") != std::string::npos;
+  }));
+}
+
 }  // namespace
 }  // namespace zs::jsurf

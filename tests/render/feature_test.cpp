@@ -57,18 +57,8 @@ class Feature : public ::testing::Test {
   static double radius(int i, int j, int size = kSize) {
     return std::hypot(i + 0.5 - size / 2.0, j + 0.5 - size / 2.0);
   }
-  // The world points of the frame's hits, from its depth map and the camera.
   static std::vector<Vec3> hitPoints(const Frame& f, const Camera& camera) {
-    std::vector<Vec3> points;
-    for (int j = 0; j < kSize; ++j)
-      for (int i = 0; i < kSize; ++i) {
-        const float t = f.depth.at(i, j);
-        if (!std::isfinite(t)) continue;
-        const Ray ray = primaryRay(camera, kSize, kSize, i, j);
-        points.push_back({ray.origin[0] + t * ray.direction[0], ray.origin[1] + t * ray.direction[1],
-                          ray.origin[2] + t * ray.direction[2]});
-      }
-    return points;
+    return test::hitPoints(f, camera);
   }
   static inline RayTracer *sphere_ = nullptr, *torus_ = nullptr, *cylinder_ = nullptr;
 };

@@ -202,6 +202,20 @@ bool pixelNear(const Image& image, int x, int y, Vec3 rgb, int tolerance) {
   return true;
 }
 
+std::vector<Vec3> hitPoints(const Frame& frame, const Camera& camera) {
+  std::vector<Vec3> points;
+  const int w = frame.depth.width, h = frame.depth.height;
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i) {
+      const float t = frame.depth.at(i, j);
+      if (!std::isfinite(t)) continue;
+      const Ray ray = primaryRay(camera, w, h, i, j);
+      points.push_back({ray.origin[0] + t * ray.direction[0], ray.origin[1] + t * ray.direction[1],
+                        ray.origin[2] + t * ray.direction[2]});
+    }
+  return points;
+}
+
 double fractionNear(const Image& image, Vec3 rgb, int tolerance) {
   std::size_t near = 0;
   for (int y = 0; y < image.height; ++y)

@@ -96,6 +96,9 @@ std::string matchReference(const std::string& name, const Image& image);
 
 std::string sourceDir();
 
+// The world points of a frame's hits, from its depth map and the camera it was drawn with.
+std::vector<Vec3> hitPoints(const Frame& frame, const Camera& camera);
+
 // Share of pixels whose RGB is within `tolerance` (0..255) of `rgb` (0..1).
 double fractionNear(const Image& image, Vec3 rgb, int tolerance = 3);
 bool pixelNear(const Image& image, int x, int y, Vec3 rgb, int tolerance = 3);

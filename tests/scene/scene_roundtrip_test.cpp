@@ -41,6 +41,9 @@ Scene everyKeyChanged() {
   r.silhouette = {false, 0.33, {0.5, 0.25, 0.125}};
   r.border = {false, 0.0625, {0.2, 0.1, 0.05}};
   r.singular = {true, 0.125, {0.3, 0.6, 0.9}};
+  r.cut = {false, 0.03125, {0.1, 0.9, 0.2}};
+  // Every clip plane key differs from ClipPlane{} in some plane.
+  r.clipPlanes = {{false, {1, 0, 0}, -0.25}, {true, {0.5, -2, 1e-7}, 1.0 / 3.0}};
   r.reflection = {false, 0.55};
   r.opacity = 0.4;
   r.samples = 3;
@@ -96,6 +99,48 @@ TEST(SceneRoundTrip, EveryLightKeyDiffersFromItsDefaultInTheFirstLight) {
         spec.field);
     EXPECT_FALSE(same) << spec.name;
   }
+}
+
+TEST(SceneRoundTrip, EveryClipPlaneKeyDiffersFromItsDefaultInTheFirstPlane) {
+  const Scene changed = everyKeyChanged();
+  const scene_detail::ListSpec* list = scene_detail::findList(scene_detail::kClipPlanesKey);
+  ASSERT_NE(list, nullptr);
+  Scene one, defaults;
+  one.render.clipPlanes = {changed.render.clipPlanes.front()};
+  defaults.render.clipPlanes = {ClipPlane{}};
+  for (const auto& spec : list->keys) {
+    const bool same = std::visit(
+        [&](const auto& ref) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(ref)>, scene_detail::EnumRef>) {
+            return ref.get(one) == ref.get(defaults);
+          } else {
+            return ref(one) == ref(defaults);
+          }
+        },
+        spec.field);
+    EXPECT_FALSE(same) << spec.name;
+  }
+}
+
+TEST(SceneRoundTrip, ClipPlanesAreWrittenAsTablesAndSetByNumber) {
+  Scene s;
+  s.render.clipPlanes = {{true, {0, 0, 1}, 0.5}, {false, {1, 1, 0}, -0.2}};
+  const std::string text = saveScene(s);
+  EXPECT_NE(text.find("\n[[clip.plane]]\nenabled = true\nnormal = [0.0, 0.0, 1.0]\noffset = 0.5\n"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(expectScene(parseScene(text, "cut.surf")), s) << text;
+  // No planes: nothing written, and a file without them has none.
+  EXPECT_EQ(saveScene(Scene{}).find("clip"), std::string::npos);
+  // A later document changes one plane by number, or replaces the list.
+  Scene changed = expectScene(parseScene(text + "\n", "cut.surf"));
+  ASSERT_FALSE(applyOverrides(changed, std::vector<std::string>{"clip.plane.2.offset=0.75", "clip.plane.2.enabled=true"}));
+  EXPECT_EQ(changed.render.clipPlanes[1].offset, 0.75);
+  EXPECT_TRUE(changed.render.clipPlanes[1].enabled);
+  EXPECT_EQ(changed.render.clipPlanes[0], s.render.clipPlanes[0]);
+  ASSERT_FALSE(applyOverrides(changed, std::vector<std::string>{"clip.plane=[{normal=[1,0,0]}]"}));
+  ASSERT_EQ(changed.render.clipPlanes.size(), 1u);
+  EXPECT_EQ(changed.render.clipPlanes[0], (ClipPlane{true, {1, 0, 0}, 0}));
 }
 
 TEST(SceneRoundTrip, NoLightsAtAllRoundTrip) {

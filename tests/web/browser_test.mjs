@@ -180,6 +180,7 @@ const PICTURES = [
   ['dupin-cyclide', ['shading.color="gauss"', 'shading.curvature_range=2']],  // curvature colours
   ['torus', ['opacity=0.5']],  // transparent: kept hits, blended
   ['torus', ['shading.shadows=true', 'lights.space="camera"']],  // shadow rays; lights on the camera
+  ['torus', ['clip.plane=[{normal=[0,1,1], offset=0.1}]']],  // a cross-section and its cut curve
 ];
 const PICTURE_SHARDS = 3;
 for (let k = 0; k < PICTURE_SHARDS; k++) {
@@ -388,6 +389,32 @@ cases['light-edit-redraws'] = async () => {
   check(/lights\.source\.1\.intensity/.test(await page.textContent('#zeroset-error')), 'a bad intensity names no key');
 };
 
+// A clip plane added in the Cross-sections panel cuts the surface (a frame parameter: no new
+// program), its offset edits through --set, and removing it restores the picture.
+cases['clip-plane-panel'] = async () => {
+  const page = await openPage(`example=torus&size=${SIZE[0]}x${SIZE[1]}`);
+  await settled(page);
+  await snapshot(page, 'whole');
+  await page.click('details[data-group="Cross-sections"] > summary');
+  await markBusy(page);
+  await page.click('#clip-plane-add');
+  await settled(page);
+  check(/\[\[clip\.plane\]\]\nenabled = true\nnormal = \[0\.0, 0\.0, 1\.0\]\noffset = 0\.0/.test(
+    await page.evaluate(() => window.zeroset.session.sceneText())), 'the plane did not reach the scene');
+  const cut = await compareWith(page, { snapshotName: 'whole' });
+  check(cut.differing > 0.02, `the plane cut nothing (${JSON.stringify(cut)})`);
+  await markBusy(page);
+  await page.fill('#set-clip-plane-1-offset', '0.2');
+  await page.dispatchEvent('#set-clip-plane-1-offset', 'change');
+  await settled(page);
+  check(/offset = 0\.2/.test(await page.evaluate(() => window.zeroset.session.sceneText())), 'the offset did not reach the scene');
+  await markBusy(page);
+  await page.click('#clip-plane-1-remove');
+  await settled(page);
+  const back = await compareWith(page, { snapshotName: 'whole' });
+  check(back.differing === 0, `removing the plane did not restore the picture (${JSON.stringify(back)})`);
+};
+
 // Hovering over the unit sphere reads its curvatures (src/probe): K = H = 1.
 cases['hover-shows-curvature'] = async () => {
   const page = await openPage(`formula=${encodeURIComponent('x^2 + y^2 + z^2 - 1')}&size=${SIZE[0]}x${SIZE[1]}`);
@@ -518,7 +545,7 @@ const GROUPS = {
   'files-and-layouts': ['drop-surf-loads', 'bad-file', 'embed-and-size', 'phone-layout'],
   pointer: ['hover-shows-curvature', 'touch-drag-turns', 'kiosk'],
   links: ['share-link', 'bad-url-parameters'],
-  panels: ['light-edit-redraws', 'lost-context-recovers'],
+  panels: ['light-edit-redraws', 'clip-plane-panel', 'lost-context-recovers'],
 };
 for (const [group, members] of Object.entries(GROUPS)) {
   cases[group] = async () => {

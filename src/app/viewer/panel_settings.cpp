@@ -3,9 +3,12 @@
 // edit, so a value typed with Ctrl+click beyond them is refused rather than saved.
 #include <imgui.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "app/viewer/panel.hpp"
 
@@ -144,6 +147,45 @@ void octreeAndDomain(Scene& scene) {
   }
 }
 
+// Cross-sections: up to kMaxClipPlanes planes, each cutting away normal . p > offset; the
+// offset slider spans the domain's bounding box along the plane's normal.
+void clipPlanes(Scene& scene) {
+  std::vector<ClipPlane>& planes = scene.render.clipPlanes;
+  const Domain box = boundingBox(scene.domain);
+  std::size_t removed = planes.size();
+  for (std::size_t i = 0; i < planes.size(); ++i) {
+    ClipPlane& plane = planes[i];
+    ImGui::PushID(int(i));
+    ImGui::Checkbox(("plane " + std::to_string(i + 1)).c_str(), &plane.enabled);
+    ImGui::SameLine();
+    for (int a = 0; a < 3; ++a) {  // the axis presets keep the plane's place
+      const char* axis[] = {"x", "y", "z"};
+      if (a) ImGui::SameLine();
+      if (ImGui::SmallButton(axis[a])) plane.normal = {a == 0 ? 1.0 : 0.0, a == 1 ? 1.0 : 0.0, a == 2 ? 1.0 : 0.0};
+    }
+    ImGui::SameLine();
+    if (ImGui::SmallButton("flip")) {
+      plane.normal = {-plane.normal[0], -plane.normal[1], -plane.normal[2]};
+      plane.offset = -plane.offset;
+    }
+    ImGui::SameLine();
+    if (ImGui::SmallButton("remove")) removed = i;
+    Vec3 normal = plane.normal;
+    if (dragVec("normal", normal, 0.01) && (normal[0] != 0 || normal[1] != 0 || normal[2] != 0))
+      plane.normal = normal;
+    // |normal| * the farthest corner's distance bounds the offsets that cut anything.
+    double reach = 0;
+    for (int a = 0; a < 3; ++a)
+      reach += std::abs(plane.normal[a]) * std::max(std::abs(box.min[a]), std::abs(box.max[a]));
+    const double hi = std::max(reach, 1e-6), lo = -hi;
+    ImGui::SliderScalar("offset", ImGuiDataType_Double, &plane.offset, &lo, &hi, "%.3f");
+    ImGui::PopID();
+  }
+  if (removed < planes.size()) planes.erase(planes.begin() + std::ptrdiff_t(removed));
+  if (int(planes.size()) < kMaxClipPlanes && ImGui::Button("add plane")) planes.push_back(ClipPlane{});
+  highlight("cut curve", scene.render.cut);
+}
+
 }  // namespace
 
 void drawSettings(Scene& scene) {
@@ -155,6 +197,7 @@ void drawSettings(Scene& scene) {
     highlight("border", scene.render.border);
     highlight("singular points", scene.render.singular);
   }
+  if (ImGui::CollapsingHeader("cross-sections")) clipPlanes(scene);
   if (ImGui::CollapsingHeader("lights")) lights(scene.render.lights);
   if (ImGui::CollapsingHeader("shading")) shading(scene.render.shading);
   if (ImGui::CollapsingHeader("materials")) {
