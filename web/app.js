@@ -303,7 +303,7 @@ function groupOf(key) {
 function tomlOf(setting, value) {
   switch (setting.type) {
     case 'bool': return value ? 'true' : 'false';
-    case 'enum': return JSON.stringify(value);
+    case 'enum': case 'function': return JSON.stringify(value);
     case 'vec3': return `[${value.map(Number).join(', ')}]`;
     default: return String(Number(value));
   }
@@ -326,6 +326,12 @@ function settingRow(s) {
     input.type = 'checkbox';
     input.checked = s.value[0] !== 0;
     input.addEventListener('change', () => applySetting(s.key, tomlOf(s, input.checked)));
+  } else if (s.type === 'function') {
+    input = document.createElement('input');
+    input.type = 'text';
+    input.spellcheck = false;
+    input.value = s.choice;
+    input.addEventListener('change', () => applySetting(s.key, tomlOf(s, input.value)));
   } else if (s.type === 'enum') {
     input = document.createElement('select');
     for (const c of s.choices) input.add(new Option(c, c, false, c === s.choice));

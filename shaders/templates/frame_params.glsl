@@ -48,6 +48,9 @@ RT_FRAME_STORAGE RtFrame {
   flat int cutOn;  // the curve where the surface meets a clip plane
   flat float cutThreshold;
   flat vec3 cutColor;
+  flat float contourSpacing;  // shading.contours (raytrace_shading.frag.glsl, RT_CONTOURS)
+  flat float contourWidth;
+  flat vec3 contourColor;
   flat vec3 background;
   flat int nodeCount;  // sampling only: the hierarchy walk, leaf segments, tangent roots
   flat int firstNode;

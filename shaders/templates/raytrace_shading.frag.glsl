@@ -84,6 +84,15 @@ vec3 shade(vec3 p, vec4 g, vec3 rd) {
 #if RT_COLOR == 3
   color = n * 0.5 + 0.5;
 #endif
+#ifdef RT_CONTOURS
+  // shading.contours: g = k * spacing within width / 2 measured along the surface, i.e. the
+  // distance to the level over the slope of g within the tangent plane.
+  vec4 level = zs_contour(p);
+  float slope = length(level.xyz - dot(level.xyz, n) * n);
+  float k = level.w / rt.contourSpacing;
+  if (abs(k - floor(k + 0.5)) * rt.contourSpacing < 0.5 * rt.contourWidth * slope)
+    color = rt.contourColor;  // false for NaN: no line where g is undefined
+#endif
   if ((rt.silhouetteOn != 0) && abs(cosine) < rt.silhouetteThreshold) color = rt.silhouetteColor;
   if ((rt.borderOn != 0) && domainDepth(p) < rt.borderThreshold) color = rt.borderColor;
   if ((rt.cutOn != 0) && rtCutDepth(p) < rt.cutThreshold) color = rt.cutColor;

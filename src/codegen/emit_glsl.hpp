@@ -33,4 +33,10 @@ GlslFormula emitFormulaGlsl(const Graph& g, NodeId f, const std::array<NodeId, 3
 // Adds the gradient of formula.root to formula.graph, then emits.
 GlslFormula emitFormulaGlsl(Formula& formula);
 
+// The contour block (shading.contours): `#define RT_CONTOURS` and
+//   vec4 zs_contour(vec3 p)   // xyz = gradient of g, w = g; w is NaN where either is undefined
+// for a function g of x, y, z. Joined to the formula block; g may not have parameters
+// (returns "" if it has: the scene refuses such a function).
+std::string emitContourGlsl(Formula& function);
+
 }  // namespace zs

@@ -142,6 +142,16 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
   // Second derivatives only for the colorings that show curvature (docs/curvature.md).
   if (needsCurvature(scene.render.shading.color))
     s.glsl.source += emitHessianGlsl(s.formula.graph, s.gradient);
+  if (const Contours& contours = scene.render.shading.contours; contours.enabled) {
+    ParseResult function = parseFormula(contours.function);
+    if (auto* err = std::get_if<ParseError>(&function))
+      return "shading.contours.function: " + formatError(contours.function, *err);
+    const std::string block = emitContourGlsl(std::get<Formula>(function));
+    if (block.empty())
+      return "shading.contours.function: " + contours.function +
+             " has parameters; it may use only x, y, z and constants\n";
+    s.glsl.source += block;
+  }
   std::string markers;
   if (scene.render.singular.enabled) {
     if (options.markedPoints) s.singularPoints = *options.markedPoints;

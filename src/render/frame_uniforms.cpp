@@ -166,6 +166,10 @@ FrameUniforms frameUniforms(const RenderSettings& s, const Domain& clip, const F
   u.integer("rtCutOn", s.cut.enabled && anyPlane);
   u.real("rtCutThreshold", s.cut.threshold);
   u.vec3("rtCutColor", s.cut.color);
+  const Contours& contours = s.shading.contours;
+  u.real("rtContourSpacing", contours.spacing > 0 && std::isfinite(contours.spacing) ? contours.spacing : 1.0);
+  u.real("rtContourWidth", std::max(contours.width, 0.0));
+  u.vec3("rtContourColor", contours.color);
   u.real("rtPrimaryWeight", std::clamp(s.reflection.primaryWeight, 0.0, 1.0));
   u.real("rtOpacity", std::clamp(s.opacity, 0.0, 1.0));
   u.vec3("rtBackground", s.background);

@@ -3,6 +3,7 @@
 // the command line and the viewer edit it, the renderer reads it. Defaults here are the
 // documented defaults of docs/surf-format.md.
 #include <array>
+#include <string>
 #include <vector>
 
 namespace zs {
@@ -134,6 +135,18 @@ enum class ColorMode { Material, Gauss, Mean, Normal };
 
 inline bool needsCurvature(ColorMode m) { return m == ColorMode::Gauss || m == ColorMode::Mean; }
 
+// Contour lines on the surface: where a function g of x, y, z (a formula without parameters)
+// is a multiple of `spacing`, in a band `width` wide measured along the surface.
+struct Contours {
+  bool enabled = false;
+  std::string function = "z";
+  double spacing = 0.1;
+  double width = 0.01;
+  Vec3 color{0.1, 0.1, 0.1};
+
+  bool operator==(const Contours&) const = default;
+};
+
 struct Shading {
   ColorMode color = ColorMode::Material;
   // The curvature shown at the ends of the color map (the map is symmetric about 0); 0 picks
@@ -142,6 +155,7 @@ struct Shading {
   // A shadow ray towards each light from the first hit, traced by the tracing method itself:
   // a light that something blocks adds no diffuse or specular there (docs/renderer.md).
   bool shadows = false;
+  Contours contours;
 
   bool operator==(const Shading&) const = default;
 };

@@ -1,6 +1,7 @@
 #include "scene/reader.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -294,17 +295,54 @@ std::optional<SceneError> crossCheck(const Scene& scene, const KeyHistory& seen,
   return std::nullopt;
 }
 
+namespace {
+
+// An error about formula[span] at its place in the source, `byteOffsets` mapping the
+// formula's bytes to the source's.
+SceneError formulaError(Span span, const SourceText& src, const std::vector<std::size_t>& byteOffsets,
+                        std::string_view key, const std::string& message, const std::string& hint) {
+  const std::size_t last = byteOffsets.size() - 1;
+  const std::size_t begin = byteOffsets[std::min(span.begin, last)];
+  const std::size_t end = std::max(begin, byteOffsets[std::min(span.end, last)]);
+  const std::string_view covered = src.text().substr(begin, end - begin);
+  const int width = covered.find('\n') == std::string_view::npos ? codePoints(covered) : 1;
+  return src.error(src.positionOf(begin), std::string(key), std::string(key) + ": " + message, hint,
+                   width);
+}
+
+}  // namespace
+
 std::optional<SceneError> checkFormula(std::string_view formula, const SourceText& src,
-                                       const std::vector<std::size_t>& byteOffsets) {
+                                       const std::vector<std::size_t>& byteOffsets,
+                                       std::string_view key) {
   const ParseResult parsed = parseFormula(formula);
   const ParseError* err = std::get_if<ParseError>(&parsed);
   if (!err) return std::nullopt;
-  const std::size_t last = byteOffsets.size() - 1;
-  const std::size_t begin = byteOffsets[std::min(err->span.begin, last)];
-  const std::size_t end = std::max(begin, byteOffsets[std::min(err->span.end, last)]);
-  const std::string_view covered = src.text().substr(begin, end - begin);
-  const int width = covered.find('\n') == std::string_view::npos ? codePoints(covered) : 1;
-  return src.error(src.positionOf(begin), "formula", "formula: " + err->message, err->hint, width);
+  return formulaError(err->span, src, byteOffsets, key, err->message, err->hint);
+}
+
+std::optional<SceneError> checkFunctionOfXyz(std::string_view text, const SourceText& src,
+                                             const std::vector<std::size_t>& byteOffsets,
+                                             std::string_view key) {
+  if (auto err = checkFormula(text, src, byteOffsets, key)) return err;
+  const ParseResult parsed = parseFormula(text);
+  const std::vector<std::string>& params = std::get<Formula>(parsed).graph.params();
+  if (params.empty()) return std::nullopt;
+  // Point at the parameter's first use as a whole word.
+  std::size_t at = 0;
+  for (std::size_t pos = text.find(params[0]); pos != std::string_view::npos;
+       pos = text.find(params[0], pos + 1)) {
+    auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    const std::size_t end = pos + params[0].size();
+    if ((pos == 0 || !word(text[pos - 1])) && (end >= text.size() || !word(text[end]))) {
+      at = pos;
+      break;
+    }
+  }
+  return formulaError({at, at + params[0].size()}, src, byteOffsets, key,
+                      "\"" + params[0] + "\" is a parameter; this function may use only x, y, z "
+                      "and constants",
+                      "write the value in its place, e.g. z - 0.5 rather than z - a");
 }
 
 std::optional<SceneError> applyDocument(Scene& scene, const toml::table& doc,

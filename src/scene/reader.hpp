@@ -40,6 +40,12 @@ std::optional<SceneError> crossCheck(const Scene& scene, const KeyHistory& seen,
 // formula's bytes were read from (`byteOffsets`: one source offset per formula byte, plus
 // one past the end), with the caret's width covering the span when it stays on one line.
 std::optional<SceneError> checkFormula(std::string_view formula, const SourceText& src,
-                                       const std::vector<std::size_t>& byteOffsets);
+                                       const std::vector<std::size_t>& byteOffsets,
+                                       std::string_view key = "formula");
+
+// The same for a function of x, y, z that may not use parameters (a FunctionRef key).
+std::optional<SceneError> checkFunctionOfXyz(std::string_view text, const SourceText& src,
+                                             const std::vector<std::size_t>& byteOffsets,
+                                             std::string_view key);
 
 }  // namespace zs::scene_detail

@@ -17,6 +17,8 @@ using IntRef = int& (*)(Scene&);
 using SizeRef = std::size_t& (*)(Scene&);
 using RealRef = double& (*)(Scene&);
 using VecRef = Vec3& (*)(Scene&);
+// A formula of x, y, z without parameters (shading.contours.function), kept as its text.
+using FunctionRef = std::string& (*)(Scene&);
 
 struct EnumRef {
   int (*get)(const Scene&);
@@ -24,7 +26,7 @@ struct EnumRef {
   std::span<const std::string_view> names;  // index = the enum's value
 };
 
-using Field = std::variant<BoolRef, IntRef, SizeRef, RealRef, VecRef, EnumRef>;
+using Field = std::variant<BoolRef, IntRef, SizeRef, RealRef, VecRef, EnumRef, FunctionRef>;
 
 // Closed or open bounds on a number, or on each component of a vector (colors).
 struct Range {

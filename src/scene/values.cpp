@@ -6,6 +6,8 @@
 #include <type_traits>
 
 #include "scene/hints.hpp"
+#include "scene/reader.hpp"
+#include "scene/string_map.hpp"
 #include "expr/number_text.hpp"
 
 namespace zs::scene_detail {
@@ -150,6 +152,12 @@ std::optional<SceneError> readLeaf(Scene& scene, const KeySpec& spec, const toml
           return readNumber(node, key, spec.range, src, ref(scene));
         } else if constexpr (std::is_same_v<Ref, VecRef>) {
           return readVector(node, spec, src, ref(scene));
+        } else if constexpr (std::is_same_v<Ref, FunctionRef>) {
+          if (!node.is_string()) return typeError(node, key, "a string", src);
+          std::string text = *node.value<std::string>();
+          const auto offsets = stringSourceMap(src.text(), src.offsetOf(positionOf(node)), text);
+          if (auto err = checkFunctionOfXyz(text, src, offsets, key)) return err;
+          ref(scene) = std::move(text);
         } else {
           static_assert(std::is_same_v<Ref, EnumRef>);
           if (!node.is_string()) return typeError(node, key, "a string", src);

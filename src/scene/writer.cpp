@@ -66,6 +66,8 @@ std::string valueText(Scene& scene, const KeySpec& spec) {
           return formatDouble(ref(scene));
         } else if constexpr (std::is_same_v<Ref, VecRef>) {
           return vectorText(ref(scene));
+        } else if constexpr (std::is_same_v<Ref, FunctionRef>) {
+          return tomlString(ref(scene));
         } else {
           static_assert(std::is_same_v<Ref, EnumRef>);
           return tomlString(ref.names[static_cast<std::size_t>(ref.get(scene))]);

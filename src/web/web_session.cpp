@@ -258,6 +258,9 @@ Setting settingOf(const scene_detail::KeySpec& spec, Scene& scene, std::string k
           s.type = "vec3";
           const Vec3& v = field(scene);
           s.value = {v[0], v[1], v[2]};
+        } else if constexpr (std::is_same_v<F, FunctionRef>) {
+          s.type = "function";
+          s.choice = field(scene);
         } else {
           s.type = "enum";
           for (std::string_view name : field.names) s.choices.emplace_back(name);

@@ -28,12 +28,12 @@ namespace zs::web {
 // One key of the .surf schema (scene/schema.hpp) as the page's panels show it.
 struct Setting {
   std::string key;        // as --set takes it: "tracing.epsilon", "lights.source.2.intensity"
-  std::string type;       // "bool", "int", "real", "vec3" or "enum"
+  std::string type;       // "bool", "int", "real", "vec3", "enum" or "function"
   double lo = 0, hi = 0;  // the allowed range (each component of a vec3)
   bool loOpen = false, hiOpen = false;
   std::vector<std::string> choices;  // enum only
   std::vector<double> value;         // the current value: 1 number (bool: 0/1), or 3
-  std::string choice;                // enum only: the current name
+  std::string choice;                // enum: the current name; function: its text
 };
 
 class WebSession {

@@ -137,6 +137,25 @@ TEST(ShaderAssembly, ProgramVariantsPassGlslangForEveryMethodAndDialect) {
   }
 }
 
+// shading.contours: the contour function's block joins the formula block and passes glslang
+// in both dialects, also for a function with domain restrictions; one with a parameter is
+// refused (the scene refuses it first).
+TEST(ShaderAssembly, ContourBlockPassesGlslangInBothDialects) {
+  std::optional<GlslFormula> glsl = generate("x^4 + y^4 + z^4 - 1");
+  ASSERT_TRUE(glsl);
+  ParseResult function = parseFormula("sqrt(z + 1) + log(x^2 + 0.1) / y");
+  const std::string block = emitContourGlsl(std::get<Formula>(function));
+  ASSERT_NE(block.find("#define RT_CONTOURS"), std::string::npos);
+  glsl->source += block;
+  for (ShaderDialect dialect : {ShaderDialect::Gl330, ShaderDialect::Es300}) {
+    const ValidationResult result =
+        validateGlsl(assembleFragmentShader(*glsl, {}, dialect), Stage::Fragment);
+    EXPECT_TRUE(result.ok) << formatInternalShaderError("fragment shader with contours", result);
+  }
+  ParseResult withParameter = parseFormula("z - a");
+  EXPECT_EQ(emitContourGlsl(std::get<Formula>(withParameter)), "");
+}
+
 TEST(ShaderAssembly, DoublePrecisionRayPolynomialIsNotAssembledForGlslEs) {
   ParseResult parsed = parseFormula("x^2 + y^2 + z^2 - 1");
   const Formula& f = std::get<Formula>(parsed);

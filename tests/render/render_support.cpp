@@ -44,6 +44,7 @@ std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& erro
   // The Hessian is emitted for the colorings that show curvature; the coloring itself is
   // the render settings' (a variant of the same program).
   if (spec.hessian) scene.render.shading.color = ColorMode::Gauss;
+  scene.render.shading.contours = spec.contours;
   PrepareOptions options;
   options.validate = false;  // the driver compiles it anyway; glslang has tests of its own
   options.bernsteinAboveLimit = spec.method == TracingMethod::Bernstein;

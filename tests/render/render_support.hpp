@@ -43,6 +43,8 @@ struct SurfaceSpec {
   // The second derivatives (codegen/emit_hessian.hpp), which shading.color "gauss" and
   // "mean" need.
   bool hessian = false;
+  // shading.contours: its function is part of the shader.
+  Contours contours{};
   // How the frame's parameters reach the fragment stage; unset: as the driver's (RayTracer()).
   std::optional<FrameStorage> frameStorage{};
 };

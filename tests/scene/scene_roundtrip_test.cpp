@@ -37,6 +37,7 @@ Scene everyKeyChanged() {
   r.materials.front = {{0.2, 0.3, 0.4}, 0.11, 12.5, 0.4, 0.8};
   r.materials.back = {{0.6, 0.7, 0.8}, 0.22, 99, 0.35, 0.65};
   r.shading = {ColorMode::Mean, 2.5, true};
+  r.shading.contours = {true, "x*y - 0.5*z", 0.25, 0.03, {0.2, 0.4, 0.6}};
   r.tracing = {TracingMethod::Sampling, 17, 1e-7 / 3, 77, 9};
   r.silhouette = {false, 0.33, {0.5, 0.25, 0.125}};
   r.border = {false, 0.0625, {0.2, 0.1, 0.05}};

@@ -181,6 +181,7 @@ const PICTURES = [
   ['torus', ['opacity=0.5']],  // transparent: kept hits, blended
   ['torus', ['shading.shadows=true', 'lights.space="camera"']],  // shadow rays; lights on the camera
   ['torus', ['clip.plane=[{normal=[0,1,1], offset=0.1}]']],  // a cross-section and its cut curve
+  ['torus', ['shading.contours.enabled=true', 'shading.contours.function="x*y"', 'shading.contours.width=0.03']],  // contour lines
 ];
 const PICTURE_SHARDS = 3;
 for (let k = 0; k < PICTURE_SHARDS; k++) {

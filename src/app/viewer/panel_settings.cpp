@@ -2,6 +2,7 @@
 // docs/surf-format.md. Bounds mirror the .surf ranges; the viewer still re-checks each
 // edit, so a value typed with Ctrl+click beyond them is refused rather than saved.
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <array>
@@ -107,6 +108,23 @@ void shading(Shading& s) {
   if (ImGui::Combo("color", &mode, "material\0gauss curvature\0mean curvature\0normal\0"))
     s.color = static_cast<ColorMode>(mode);
   ImGui::Checkbox("shadows", &s.shadows);  // a new shader variant (shading_defines.cpp)
+  // Contour lines: the switch and the function rebuild the shader (viewer_build.cpp), the
+  // spacing, width and color are frame parameters. The function is applied on Enter.
+  ImGui::PushID("contours");
+  ImGui::Checkbox("contour lines", &s.contours.enabled);
+  if (s.contours.enabled) {
+    // The text being typed, kept until Enter (one panel per process), and the scene's
+    // function it started from: a scene loaded meanwhile replaces it.
+    static std::string typed;
+    static std::string shown;
+    if (shown != s.contours.function) typed = shown = s.contours.function;
+    if (ImGui::InputText("of (x, y, z)", &typed, ImGuiInputTextFlags_EnterReturnsTrue))
+      s.contours.function = typed;
+    dragDouble("spacing", s.contours.spacing, 0.005, 1e-6, 1e6);
+    dragDouble("width", s.contours.width, 0.001, 0.0, 1e3);
+    color("line color", s.contours.color);
+  }
+  ImGui::PopID();
   if (!needsCurvature(s.color)) return;
   bool automatic = s.curvatureRange == 0;
   if (ImGui::Checkbox("automatic range", &automatic)) s.curvatureRange = automatic ? 0 : 1;

@@ -20,7 +20,11 @@ bool needsBuild(const Scene& a, const Scene& b) {
          a.octree != b.octree || a.render.tracing.method != b.render.tracing.method ||
          a.render.singular != b.render.singular ||  // the markers are part of the shader
          // so are the second derivatives that the curvature colorings need
-         needsCurvature(a.render.shading.color) != needsCurvature(b.render.shading.color);
+         needsCurvature(a.render.shading.color) != needsCurvature(b.render.shading.color) ||
+         // and the contour function
+         a.render.shading.contours.enabled != b.render.shading.contours.enabled ||
+         (a.render.shading.contours.enabled &&
+          a.render.shading.contours.function != b.render.shading.contours.function);
 }
 
 }  // namespace
