@@ -292,6 +292,7 @@ const GROUPS = [
   ['Highlights', /^(silhouette|border|singular|highlights|reflection)/],
   ['Colouring', /^(shading|background)/],
   ['Cross-sections', /^clip/],
+  ['Volume', /^(render|volume)/],
 ];
 const MAX_CLIP_PLANES = 4;  // render/settings.hpp kMaxClipPlanes
 

@@ -51,6 +51,10 @@ RT_FRAME_STORAGE RtFrame {
   flat float contourSpacing;  // shading.contours (raytrace_shading.frag.glsl, RT_CONTOURS)
   flat float contourWidth;
   flat vec3 contourColor;
+  flat float volumeDensity;  // render.mode "volume" (raytrace_volume.frag.glsl)
+  flat float volumeFalloff;
+  flat float volumeRange;
+  flat int volumeSteps;
   flat vec3 background;
   flat int nodeCount;  // sampling only: the hierarchy walk, leaf segments, tangent roots
   flat int firstNode;

@@ -85,18 +85,24 @@ float rtCutDepth(vec3 p) {
              min(rt.clip2.w - dot(rt.clip2.xyz, p), rt.clip3.w - dot(rt.clip3.xyz, p)));
 }
 
-// The part of the ray where hits can lie: inside the domain (box and ball), on the kept side
-// of every clip plane and inside the padded box of the hierarchy's leaves. Every march clips
-// its rays with it; the beam pass encloses a tile's rays in the domain's and the leaves' box
-// only, which can only start the walk earlier. Empty when x > y.
-vec2 rtHitInterval(vec3 o, vec3 d, vec3 inv) {
-  vec2 dom = domainInterval(o, d, inv);
-  vec2 box = slab(rt.rootMin - rt.pad, rt.rootMax + rt.pad, o, inv);
-  vec2 t = vec2(max(dom.x, box.x), min(dom.y, box.y));
+// The part of the ray inside the domain (box and ball) and on the kept side of every clip
+// plane: what the volume mode integrates over. Empty when x > y.
+vec2 rtDomainSpan(vec3 o, vec3 d, vec3 inv) {
+  vec2 t = domainInterval(o, d, inv);
   t = rtClipPlane(rt.clip0, o, d, t);
   t = rtClipPlane(rt.clip1, o, d, t);
   t = rtClipPlane(rt.clip2, o, d, t);
   return rtClipPlane(rt.clip3, o, d, t);
+}
+
+// The part of the ray where hits can lie: the domain span inside the padded box of the
+// hierarchy's leaves. Every march clips its rays with it; the beam pass encloses a tile's
+// rays in the domain's and the leaves' box only, which can only start the walk earlier.
+// Empty when x > y.
+vec2 rtHitInterval(vec3 o, vec3 d, vec3 inv) {
+  vec2 t = rtDomainSpan(o, d, inv);
+  vec2 box = slab(rt.rootMin - rt.pad, rt.rootMax + rt.pad, o, inv);
+  return vec2(max(t.x, box.x), min(t.y, box.y));
 }
 
 // How far p lies inside the domain's boundary (negative outside): the border highlight.
@@ -113,6 +119,10 @@ vec3 safeInverse(vec3 d) { return 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0)))
 // camera; RT_LIGHTS, RT_SHADOW_RAYS and RT_KEY_LIGHT call these (render/shading_defines.cpp).
 vec3 rtCameraVector(vec3 v) { return v.x * rt.right + v.y * rt.up - v.z * rt.forward; }
 vec3 rtCameraPoint(vec3 v) { return rt.eye + rtCameraVector(v); }
+
+#ifdef RT_VOLUME
+vec3 rtVolume(vec3 o, vec3 d, out float through);  // raytrace_volume.frag.glsl
+#endif
 
 // The color of a hit at p with (grad F, F) = g seen along rd: raytrace_shading.frag.glsl.
 // Curvature colorings leave the curvature there in rtShadeValue. With shading.shadows, bit i
@@ -163,6 +173,20 @@ void main() {
   // Pixel (i, j) from the top-left of the full image (docs/camera.md).
   vec2 fragment = gl_FragCoord.xy + rt.pixelOrigin;
   vec2 pixel = vec2(fragment.x - 0.5, rt.resolution.y - fragment.y - 0.5);
+#ifdef RT_VOLUME
+  {  // F's field instead of its zero set: one ray through the pixel's center, no hits
+    vec3 ro, rd;
+    cameraRay(pixel + 0.5, ro, rd);
+    float through;
+    vec3 volume = rtVolume(ro, rd, through);
+    rtOutColor = vec4(volume + through * rt.background, 1.0);
+    rtOutDepth = uintBitsToFloat(0x7F800000u);
+#if RT_COLOR == 1 || RT_COLOR == 2
+    rtOutValue = uintBitsToFloat(0x7FC00000u);
+#endif
+    return;
+  }
+#endif
   const int n = RT_SAMPLES, grid = n * n;
   // Depth comes from the pixel-center ray; an even N x N grid has none, so one more ray
   // (depth only) is traced there.

@@ -163,6 +163,8 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
   appendPiece(out, "shaders/templates/" + std::string(kRaytraceTemplate), string++, raytrace);
   appendPiece(out, "shaders/templates/" + std::string(kShadingTemplate), string++,
               shaderTemplate(kShadingTemplate));
+  appendPiece(out, "shaders/templates/" + std::string(kVolumeTemplate), string++,
+              shaderTemplate(kVolumeTemplate));
   appendPiece(out, "shaders/templates/" + std::string(marchName), string++, march);
   if (!firstRoots.empty())
     appendPiece(out, "shaders/templates/" + std::string(kFirstRootsTemplate), string++, firstRoots);

@@ -32,6 +32,7 @@ namespace zs {
 inline constexpr std::string_view kPreludeTemplate = "raytrace_prelude.frag.glsl";
 inline constexpr std::string_view kRaytraceTemplate = "raytrace_main.frag.glsl";
 inline constexpr std::string_view kShadingTemplate = "raytrace_shading.frag.glsl";
+inline constexpr std::string_view kVolumeTemplate = "raytrace_volume.frag.glsl";
 inline constexpr std::string_view kSamplingTemplate = "raytrace_sampling.frag.glsl";
 inline constexpr std::string_view kBernsteinTemplate = "raytrace_bernstein.frag.glsl";
 inline constexpr std::string_view kIntervalTemplate = "raytrace_interval.frag.glsl";

@@ -170,6 +170,11 @@ FrameUniforms frameUniforms(const RenderSettings& s, const Domain& clip, const F
   u.real("rtContourSpacing", contours.spacing > 0 && std::isfinite(contours.spacing) ? contours.spacing : 1.0);
   u.real("rtContourWidth", std::max(contours.width, 0.0));
   u.vec3("rtContourColor", contours.color);
+  const Volume& volume = s.volume;
+  u.real("rtVolumeDensity", std::max(volume.density, 0.0));
+  u.real("rtVolumeFalloff", volume.falloff > 0 ? volume.falloff : 1.0);
+  u.real("rtVolumeRange", volume.range > 0 ? volume.range : 1.0);
+  u.integer("rtVolumeSteps", std::clamp(volume.steps, 1, 4096));
   u.real("rtPrimaryWeight", std::clamp(s.reflection.primaryWeight, 0.0, 1.0));
   u.real("rtOpacity", std::clamp(s.opacity, 0.0, 1.0));
   u.vec3("rtBackground", s.background);

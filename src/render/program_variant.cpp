@@ -13,6 +13,7 @@ ProgramVariant ProgramVariant::of(const RenderSettings& s) {
   v.maxHits = s.opacity < 1.0 ? std::clamp(s.tracing.hits, 1, 8) : 1;
   v.reflection = s.reflection.enabled;
   v.shading = shadingDefines(s);
+  v.volume = s.mode == RenderMode::Volume;
   return v;
 }
 
@@ -25,6 +26,7 @@ std::string withVariantDefines(std::string_view fragment, const ProgramVariant& 
       std::to_string(v.maxHits) + "\n#define RT_REFLECTION " + (v.reflection ? "1" : "0") +
       "\n#define RT_BEAM_TILE " + std::to_string(kBeamTile) + "\n" +
       (v.beam ? "#define RT_BEAM\n" : "") + (v.tileMask ? "#define RT_TILE_MASK\n" : "") +
+      (v.volume ? "#define RT_VOLUME\n" : "") +
       v.shading + "#line 2 0\n";
   source.insert(eol == std::string::npos ? source.size() : eol + 1, defines);
   return source;

@@ -23,9 +23,10 @@ struct ProgramVariant {
   std::string shading;    // lights and coloring (render/shading_defines.hpp)
   bool beam = false;      // the beam pass's program (raytrace_beam.frag.glsl)
   bool tileMask = false;  // its tile mask's (the same file)
+  bool volume = false;    // render.mode "volume" (raytrace_volume.frag.glsl)
   bool operator<(const ProgramVariant& o) const {
-    return std::tie(samples, maxHits, reflection, shading, beam, tileMask) <
-           std::tie(o.samples, o.maxHits, o.reflection, o.shading, o.beam, o.tileMask);
+    return std::tie(samples, maxHits, reflection, shading, beam, tileMask, volume) <
+           std::tie(o.samples, o.maxHits, o.reflection, o.shading, o.beam, o.tileMask, o.volume);
   }
   // The frame's program for these settings.
   static ProgramVariant of(const RenderSettings& settings);

@@ -96,7 +96,7 @@ void RayTracer::setParams(std::span<const float> params) {
 
 bool RayTracer::drawBeam(const RenderSettings& settings, const Domain& domain, int width,
                          int height) {
-  if (!programs_.hasBeam() || !beamPass_) return false;
+  if (!programs_.hasBeam() || !beamPass_ || preferred_.volume) return false;  // no walk
   ProgramVariant v = preferred_;
   v.beam = true;
   std::string log;
@@ -132,7 +132,7 @@ std::string RayTracer::prepare(const RenderSettings& settings, const Domain& dom
   }
   glUseProgram(program_);
   glDisable(GL_STENCIL_TEST);  // the curvature probe and the beam shade every pixel
-  curvatureRange_ = needsCurvature(settings.shading.color)
+  curvatureRange_ = needsCurvature(settings.shading.color) && settings.mode == RenderMode::Surface
                         ? resolveCurvatureRange(settings, domain, width, height)
                         : 0;
   const bool beam = drawBeam(settings, domain, width, height);

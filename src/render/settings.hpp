@@ -219,6 +219,23 @@ struct Reflection {
   bool operator==(const Reflection&) const = default;
 };
 
+// What a frame shows: the surface F = level, or F's scalar field as a volume (emission and
+// absorption along each ray through a transfer function around the level).
+enum class RenderMode { Surface, Volume };
+
+// The volume's transfer function (docs/renderer.md, "Volume rendering"): at a sample where
+// v = F - level, the color is the diverging map of v / range (blue below the level, white at
+// it, red above) and the extinction density * exp(-(v / falloff)^2); `steps` samples along
+// the ray's span in the domain, by the midpoint rule.
+struct Volume {
+  double density = 8;
+  double falloff = 0.1;
+  double range = 0.25;
+  int steps = 256;
+
+  bool operator==(const Volume&) const = default;
+};
+
 struct RenderSettings {
   Camera camera;
   Lights lights;
@@ -236,6 +253,8 @@ struct RenderSettings {
   double opacity = 1.0;  // < 1 blends the kept hits front to back
   int samples = 1;       // N x N supersampling
   Vec3 background{1, 1, 1};
+  RenderMode mode = RenderMode::Surface;
+  Volume volume;
 
   bool operator==(const RenderSettings&) const = default;
 };

@@ -23,6 +23,7 @@ constexpr std::array<std::string_view, 4> kMethods{"auto", "bernstein", "samplin
 constexpr std::array<std::string_view, 2> kLightKinds{"directional", "point"};  // LightKind
 constexpr std::array<std::string_view, 2> kLightSpaces{"world", "camera"};  // LightSpace
 constexpr std::array<std::string_view, 4> kColorModes{"material", "gauss", "mean", "normal"};
+constexpr std::array<std::string_view, 2> kRenderModes{"surface", "volume"};  // RenderMode
 
 // A reference to one Scene member, as a plain function pointer the schema can hold.
 #define ZS_FIELD(member) +[](Scene& s) -> decltype(auto) { return (s.member); }
@@ -43,6 +44,9 @@ const EnumRef kMethodRef{
 const EnumRef kColorModeRef{
     [](const Scene& s) { return static_cast<int>(s.render.shading.color); },
     [](Scene& s, int v) { s.render.shading.color = static_cast<ColorMode>(v); }, kColorModes};
+const EnumRef kRenderModeRef{
+    [](const Scene& s) { return static_cast<int>(s.render.mode); },
+    [](Scene& s, int v) { s.render.mode = static_cast<RenderMode>(v); }, kRenderModes};
 const EnumRef kLightSpaceRef{
     [](const Scene& s) { return static_cast<int>(s.render.lights.space); },
     [](Scene& s, int v) { s.render.lights.space = static_cast<LightSpace>(v); }, kLightSpaces};
@@ -121,6 +125,11 @@ const KeySpec kKeys[] = {
     {"highlights.singular.color", ZS_FIELD(render.singular.color), kUnit},
     {"reflection.enabled", ZS_FIELD(render.reflection.enabled), kAny},
     {"reflection.primary_weight", ZS_FIELD(render.reflection.primaryWeight), kUnit},
+    {"render.mode", kRenderModeRef, kAny},
+    {"volume.density", ZS_FIELD(render.volume.density), kNonNegative},
+    {"volume.falloff", ZS_FIELD(render.volume.falloff), kPositive},
+    {"volume.range", ZS_FIELD(render.volume.range), kPositive},
+    {"volume.steps", ZS_FIELD(render.volume.steps), {1, 4096}},
 };
 
 // One [[lights.source]] entry; the fields address the first light of a scene that holds

@@ -97,7 +97,7 @@ TEST(ShaderAssembly, GlslEsShadersPassGlslangForEveryMethod) {
 
 // The program variants the renderer and the page put in front of a shader
 // (render/program_variant.hpp): shadows with their two lights, kept hits for opacity, an
-// even sample grid, no reflection; every method, both dialects.
+// even sample grid, no reflection, the volume; every method, both dialects.
 TEST(ShaderAssembly, ProgramVariantsPassGlslangForEveryMethodAndDialect) {
   const char* text = "x^4 + y^4 + z^4 - 1";
   ParseResult parsed = parseFormula(text);
@@ -111,6 +111,8 @@ TEST(ShaderAssembly, ProgramVariantsPassGlslangForEveryMethodAndDialect) {
   layered.tracing.hits = 3;
   layered.samples = 2;
   layered.reflection.enabled = false;
+  RenderSettings volume;
+  volume.mode = RenderMode::Volume;
   for (ShaderDialect dialect : {ShaderDialect::Gl330, ShaderDialect::Es300}) {
     const auto poly = emitRayPolynomialGlsl(f.graph, f.root, dialect == ShaderDialect::Gl330);
     ASSERT_TRUE(poly);
@@ -122,7 +124,7 @@ TEST(ShaderAssembly, ProgramVariantsPassGlslangForEveryMethodAndDialect) {
     std::vector<FrameStorage> storages = {FrameStorage::FlatVaryings};
     if (dialect == ShaderDialect::Gl330) storages.push_back(FrameStorage::Uniforms);
     for (FrameStorage storage : storages) {
-      for (const RenderSettings& settings : {shadows, layered}) {
+      for (const RenderSettings& settings : {shadows, layered, volume}) {
         for (const std::string& source : sources) {
           const ValidationResult result = validateGlsl(
               withFrameStorage(withVariantDefines(source, ProgramVariant::of(settings)), storage),

@@ -49,6 +49,8 @@ Scene everyKeyChanged() {
   r.opacity = 0.4;
   r.samples = 3;
   r.background = {0.01, 0.02, 0.03};
+  r.mode = RenderMode::Volume;
+  r.volume = {3.5, 0.25, 2.5, 100};
   s.width = 321;
   s.height = 123;
   return s;

@@ -182,6 +182,7 @@ const PICTURES = [
   ['torus', ['shading.shadows=true', 'lights.space="camera"']],  // shadow rays; lights on the camera
   ['torus', ['clip.plane=[{normal=[0,1,1], offset=0.1}]']],  // a cross-section and its cut curve
   ['torus', ['shading.contours.enabled=true', 'shading.contours.function="x*y"', 'shading.contours.width=0.03']],  // contour lines
+  ['torus', ['render.mode="volume"', 'background=[0.05,0.05,0.1]']],  // F's field as a volume
 ];
 const PICTURE_SHARDS = 3;
 for (let k = 0; k < PICTURE_SHARDS; k++) {

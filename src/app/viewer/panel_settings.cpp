@@ -204,6 +204,19 @@ void clipPlanes(Scene& scene) {
   highlight("cut curve", scene.render.cut);
 }
 
+// render.mode and the volume's transfer function (a new program variant for the mode;
+// the transfer function's numbers are frame parameters).
+void volume(RenderSettings& r) {
+  int mode = static_cast<int>(r.mode);
+  if (ImGui::Combo("show", &mode, "the surface F = level\0F's field as a volume\0"))
+    r.mode = static_cast<RenderMode>(mode);
+  if (r.mode != RenderMode::Volume) return;
+  dragDouble("density", r.volume.density, 0.1, 0.0, 1e4);
+  dragDouble("falloff", r.volume.falloff, 0.002, 1e-6, 1e6);
+  dragDouble("color range", r.volume.range, 0.01, 1e-6, 1e6);
+  dragInt("steps", r.volume.steps, 1, 4096);
+}
+
 }  // namespace
 
 void drawSettings(Scene& scene) {
@@ -216,6 +229,7 @@ void drawSettings(Scene& scene) {
     highlight("singular points", scene.render.singular);
   }
   if (ImGui::CollapsingHeader("cross-sections")) clipPlanes(scene);
+  if (ImGui::CollapsingHeader("volume")) volume(scene.render);
   if (ImGui::CollapsingHeader("lights")) lights(scene.render.lights);
   if (ImGui::CollapsingHeader("shading")) shading(scene.render.shading);
   if (ImGui::CollapsingHeader("materials")) {

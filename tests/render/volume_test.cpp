@@ -1,0 +1,99 @@
+// render.mode = "volume": F's field by emission and absorption, checked against the same
+// transfer function integrated in double precision along the ray (docs/renderer.md, "Volume
+// rendering": the midpoint rule's step error).
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "render_support.hpp"
+
+namespace zs {
+namespace {
+
+constexpr int kSize = 16;
+
+// The shader's color map (raytrace_volume.frag.glsl) in double.
+std::array<double, 3> volumeColor(double x) {
+  const double t = std::clamp(x, -1.0, 1.0);
+  const std::array<double, 3> white{0.96, 0.96, 0.96}, blue{0.15, 0.3, 0.85}, red{0.8, 0.1, 0.1};
+  std::array<double, 3> c{};
+  for (int k = 0; k < 3; ++k)
+    c[k] = t < 0 ? white[k] + (blue[k] - white[k]) * -t : white[k] + (red[k] - white[k]) * t;
+  return c;
+}
+
+// The ray's color over `background` for F = z along z from z0 down to z1, integrated with
+// `steps` midpoint steps in double.
+std::array<double, 3> reference(const Volume& v, double z0, double z1, int steps,
+                                const Vec3& background) {
+  std::array<double, 3> color{};
+  double through = 1;
+  const double h = (z0 - z1) / steps;
+  for (int i = 0; i < steps; ++i) {
+    const double z = z0 - (i + 0.5) * h, u = z / v.falloff;
+    const double alpha = 1 - std::exp(-v.density * std::exp(-u * u) * h);
+    const std::array<double, 3> c = volumeColor(z / v.range);
+    for (int k = 0; k < 3; ++k) color[k] += through * alpha * c[k];
+    through *= 1 - alpha;
+  }
+  for (int k = 0; k < 3; ++k) color[k] += through * background[k];
+  return color;
+}
+
+TEST(Volume, ALinearFieldMatchesTheTransferFunctionIntegratedInDouble) {
+  std::string error;
+  ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
+  // F = z seen from above: every ray crosses the band around z = 0 through the whole box.
+  auto tracer = test::makeTracer({"z", {}, 1}, error);
+  ASSERT_NE(tracer, nullptr) << error;
+  RenderSettings s = test::testSettings({0, 0, 3});
+  s.camera.projection = Projection::Orthographic;
+  s.camera.height = 2;
+  s.mode = RenderMode::Volume;
+  s.background = {0.1, 0.2, 0.3};
+  for (const Volume v : {Volume{2, 0.2, 4, 256}, Volume{40, 0.05, 0.5, 512}, Volume{0, 0.1, 1, 64}}) {
+    s.volume = v;
+    const Frame f = tracer->render(s, Domain{}, kSize, kSize);
+    ASSERT_EQ(f.error, "");
+    // The box [-1.5, 1.5]^3: each ray's span is z from 1.5 to -1.5. Against 65536 steps
+    // (the integral) and against the shader's own step count (its arithmetic).
+    const std::array<double, 3> exact = reference(v, 1.5, -1.5, 65536, s.background);
+    const std::array<double, 3> same = reference(v, 1.5, -1.5, v.steps, s.background);
+    for (int j = 0; j < kSize; j += 5) {
+      for (int i = 0; i < kSize; i += 5) {
+        const std::uint8_t* p = f.color.pixel(i, j);
+        EXPECT_TRUE(std::isinf(f.depth.at(i, j)));  // no hits in a volume
+        for (int k = 0; k < 3; ++k) {
+          EXPECT_NEAR(p[k] / 255.0, same[k], 1.5 / 255) << "density " << v.density << " channel " << k;
+          EXPECT_NEAR(p[k] / 255.0, exact[k], 3.0 / 255) << "density " << v.density << " channel " << k;
+        }
+      }
+    }
+  }
+}
+
+TEST(Volume, ClipPlanesAndTheLevelBoundWhatIsIntegrated) {
+  std::string error;
+  ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
+  auto tracer = test::makeTracer({"z", {}, 1}, error);
+  ASSERT_NE(tracer, nullptr) << error;
+  RenderSettings s = test::testSettings({0, 0, 3});
+  s.camera.projection = Projection::Orthographic;
+  s.camera.height = 2;
+  s.mode = RenderMode::Volume;
+  s.background = {0, 0, 0};
+  s.volume = {20, 0.1, 1, 256};
+  // Cutting away z > -0.5 leaves no part of the band around z = 0: only its faint tail.
+  s.clipPlanes = {{true, {0, 0, 1}, -0.5}};
+  const Frame f = tracer->render(s, Domain{}, kSize, kSize);
+  ASSERT_EQ(f.error, "");
+  const std::array<double, 3> expected = reference(s.volume, -0.5, -1.5, 256, s.background);
+  const std::uint8_t* p = f.color.pixel(kSize / 2, kSize / 2);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(p[k] / 255.0, expected[k], 1.5 / 255);
+  EXPECT_LT(p[0], 10);
+}
+
+}  // namespace
+}  // namespace zs
