@@ -56,18 +56,20 @@ TEST_P(FrameStorageTest, BothWaysDrawTheSamePictureInEveryVariant) {
   EXPECT_EQ(uniforms->frameStorage(), FrameStorage::Uniforms);
 
   // Variants that leave members of the frame block unread (reflection off: primaryWeight),
-  // read every one, or add passes.
+  // read every one, or add passes and kept hits.
   const std::vector<std::pair<const char*, std::function<void(RenderSettings&)>>> variants = {
       {"defaults", [](RenderSettings&) {}},
-      {"no reflection", [](RenderSettings& s) { s.reflection.enabled = false; }},
-      {"outline and border",
+      {"no reflection, outline and border",
        [](RenderSettings& s) {
          s.reflection.enabled = false;
          s.silhouette.enabled = true;
          s.border.enabled = true;
        }},
-      {"opacity", [](RenderSettings& s) { s.opacity = 0.5; }},
-      {"shadows", [](RenderSettings& s) { s.shading.shadows = true; }},
+      {"opacity and shadows",
+       [](RenderSettings& s) {
+         s.opacity = 0.5;
+         s.shading.shadows = true;
+       }},
   };
   constexpr int kSize = 48;
   for (const auto& [name, change] : variants) {

@@ -115,7 +115,7 @@ TEST(IntervalMethod, BumpySphere) {
 
 // Larger: grazing rays through the bumps' caps near the silhouette. On llvmpipe a lane that
 // had isolated its root in a window clipped at both ends once came out of the walk without
-// it (12 of 8464 pixels missed at this size, with or without the beam pass); the walk's body
+// it (12 of the 8464 pixels hit at this size, with or without the beam pass); the walk's body
 // is guarded since (raytrace_interval.frag.glsl).
 TEST(IntervalMethod, BumpySphereLarger) {
   Case c{"sqrt(x^2+y^2+z^2) - 1 - 0.08*sin(10*x)*sin(10*y)*sin(10*z)", "", cube(1.5),

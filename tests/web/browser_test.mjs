@@ -180,8 +180,9 @@ const PICTURES = [
   ['dupin-cyclide', ['shading.color="gauss"', 'shading.curvature_range=2']],  // curvature colours
   ['torus', ['opacity=0.5']],  // transparent: kept hits, blended
   ['torus', ['shading.shadows=true', 'lights.space="camera"']],  // shadow rays; lights on the camera
-  ['torus', ['clip.plane=[{normal=[0,1,1], offset=0.1}]']],  // a cross-section and its cut curve
-  ['torus', ['shading.contours.enabled=true', 'shading.contours.function="x*y"', 'shading.contours.width=0.03']],  // contour lines
+  // a cross-section with its cut curve, and contour lines
+  ['torus', ['clip.plane=[{normal=[0,1,1], offset=0.1}]', 'shading.contours.enabled=true',
+             'shading.contours.function="x*y"', 'shading.contours.width=0.03']],
   ['torus', ['render.mode="volume"', 'background=[0.05,0.05,0.1]']],  // F's field as a volume
 ];
 const PICTURE_SHARDS = 3;
