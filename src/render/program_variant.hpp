@@ -38,8 +38,8 @@ std::string withVariantDefines(std::string_view fragment, const ProgramVariant& 
 // How a desktop program's stages pass the frame's parameters (shader_assembly.hpp).
 // FlatVaryings: the vertex stage reads the uniforms and hands them on as flat varyings,
 // because llvmpipe gathers a uniform at every use in the fragment shader, while it reads a
-// flat input once per group of pixels. The block needs more varying components (75) than
-// GL 3.3 promises (60). Uniforms: the fragment stage reads them itself, as on WebGL2; for
+// flat input once per group of pixels. The block needs more varying components (105) than
+// GL 3.3 promises (60), and more than NVIDIA's linker places. Uniforms: the fragment stage reads them itself, as on WebGL2; for
 // every other driver, where a uniform read costs no more than a varying.
 enum class FrameStorage { FlatVaryings, Uniforms };
 

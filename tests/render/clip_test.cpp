@@ -74,11 +74,24 @@ TEST_P(ClipPlanes, TheCutCurveTakesTheCutColorAndADisabledPlaneCutsNothing) {
   const Frame cut = render(s);
   EXPECT_GT(test::fractionNear(cut.color, s.cut.color, 6), 0.005);
   EXPECT_EQ(test::fractionNear(whole.color, s.cut.color, 6), 0.0);
-  // The cut color marks hits near the plane only.
-  const std::vector<Vec3> points = test::hitPoints(cut, s.camera);
-  std::size_t near = 0;
-  for (const Vec3& p : points) near += 0.3 - p[2] < 0.05;
-  EXPECT_GT(near, 0u);
+  // The cut curve lies on the plane and on the surface: every pixel in the cut color is a
+  // hit of the unit sphere within the tolerance of z = 0.3.
+  int marked = 0;
+  for (int j = 0; j < kSize; ++j) {
+    for (int i = 0; i < kSize; ++i) {
+      if (!test::pixelNear(cut.color, i, j, s.cut.color, 6)) continue;
+      ++marked;
+      const float t = cut.depth.at(i, j);
+      ASSERT_TRUE(std::isfinite(t)) << i << "," << j;
+      const Ray ray = primaryRay(s.camera, kSize, kSize, i, j);
+      const Vec3 p{ray.origin[0] + t * ray.direction[0], ray.origin[1] + t * ray.direction[1],
+                   ray.origin[2] + t * ray.direction[2]};
+      EXPECT_NEAR(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), 1.0, 2e-3) << i << "," << j;
+      EXPECT_GE(p[2], 0.3 - s.cut.threshold - 1e-3) << i << "," << j;
+      EXPECT_LE(p[2], 0.3 + 1e-4) << i << "," << j;
+    }
+  }
+  EXPECT_GT(marked, 10);
 
   s.cut.enabled = false;
   EXPECT_EQ(test::fractionNear(render(s).color, s.cut.color, 6), 0.0);

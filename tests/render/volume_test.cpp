@@ -74,6 +74,22 @@ TEST(Volume, ALinearFieldMatchesTheTransferFunctionIntegratedInDouble) {
   }
 }
 
+TEST(Volume, IsDeterministic) {
+  std::string error;
+  ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
+  auto tracer = test::makeTracer({"sin(3*x)*cos(2*y) + z^2 - 0.5", {}, 1}, error);
+  ASSERT_NE(tracer, nullptr) << error;
+  RenderSettings s = test::testSettings({1.5, 2, 2.5});
+  s.mode = RenderMode::Volume;
+  s.background = {0, 0, 0};
+  const Frame a = tracer->render(s, Domain{}, 40, 30);
+  const Frame b = tracer->render(s, Domain{}, 40, 30);
+  ASSERT_EQ(a.error, "");
+  EXPECT_EQ(a.color.rgba, b.color.rgba);
+  EXPECT_GT(test::fractionNear(a.color, {0, 0, 0}, 2), 0.01);  // the box's outside
+  EXPECT_LT(test::fractionNear(a.color, {0, 0, 0}, 2), 0.9);   // and the field inside it
+}
+
 TEST(Volume, ClipPlanesAndTheLevelBoundWhatIsIntegrated) {
   std::string error;
   ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
