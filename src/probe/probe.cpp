@@ -103,7 +103,8 @@ SurfaceProbe::SurfaceProbe(const Formula& formula)
 SurfaceProbe::~SurfaceProbe() = default;
 
 std::variant<ProbeResult, std::string> SurfaceProbe::ray(std::span<const double> params,
-                                                         const Domain& domain, const Ray& ray) {
+                                                         const Domain& domain, const Ray& ray,
+                                                         std::span<const ClipPlane> clip) {
   IntervalEvaluator& intervals = eval_->intervals;
   PointEvaluator& values = eval_->values;
   IntervalEvaluator& slopes = eval_->slopes;
@@ -114,7 +115,20 @@ std::variant<ProbeResult, std::string> SurfaceProbe::ray(std::span<const double>
   };
 
   ProbeResult result;
-  const auto [ta, tb] = domainSpan(domain, ray);
+  auto [ta, tb] = domainSpan(domain, ray);
+  // Each enabled clip plane keeps normal . p <= offset (render/settings.hpp ClipPlane).
+  for (const ClipPlane& plane : clip) {
+    if (!plane.enabled) continue;
+    double nd = 0, no = 0;
+    for (int a = 0; a < 3; ++a) {
+      nd += plane.normal[a] * ray.direction[a];
+      no += plane.normal[a] * ray.origin[a];
+    }
+    const double room = plane.offset - no;
+    if (nd > 0) tb = std::min(tb, room / nd);
+    else if (nd < 0) ta = std::max(ta, room / nd);
+    else if (room < 0) return result;
+  }
   if (!(ta <= tb)) return result;
   // The tracer's tangent tolerance (1e-5 of the domain's diagonal): a stretch that short on
   // which F may still vanish and is bounded is a hit, as on the GPU.
@@ -227,7 +241,8 @@ std::variant<ProbeResult, std::string> SurfaceProbe::pixel(std::span<const doubl
     return "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
            std::to_string(width) + "x" + std::to_string(height) + " picture";
   }
-  return ray(params, scene.domain, primaryRay(scene.render.camera, width, height, x, y));
+  return ray(params, scene.domain, primaryRay(scene.render.camera, width, height, x, y),
+             scene.render.clipPlanes);
 }
 
 std::variant<ProbeResult, std::string> probeRay(const Formula& formula,

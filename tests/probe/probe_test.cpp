@@ -100,5 +100,26 @@ TEST(Probe, CentrePixelOfThePicture) {
   EXPECT_EQ(probeText(ProbeResult{}), "hit: false\n");
 }
 
+TEST(Probe, ClipPlanesCutTheRayAsTheTracerDoes) {
+  Scene scene;  // the unit sphere seen along the view direction from the default eye
+  const Formula f = parse(scene.formula.c_str());
+  // The plane through the origin facing the eye cuts away the near half: the centre ray
+  // meets the sphere's far side, on the inside.
+  const Vec3& e = scene.render.camera.eye;
+  scene.render.clipPlanes = {{true, e, 0}};
+  auto result = probePixel(f, {}, scene, 101, 101, 50, 50);
+  ASSERT_TRUE(std::holds_alternative<ProbeResult>(result));
+  const ProbeResult& r = std::get<ProbeResult>(result);
+  ASSERT_TRUE(r.hit);
+  EXPECT_LE(r.point[0] * e[0] + r.point[1] * e[1] + r.point[2] * e[2], 1e-9);
+  EXPECT_NEAR(std::hypot(r.point[0], r.point[1], r.point[2]), 1, 1e-9);
+  // Switched off it cuts nothing; a plane that keeps nothing leaves no hit.
+  scene.render.clipPlanes[0].enabled = false;
+  const ProbeResult near = std::get<ProbeResult>(probePixel(f, {}, scene, 101, 101, 50, 50));
+  EXPECT_GT(near.point[0] * e[0] + near.point[1] * e[1] + near.point[2] * e[2], 0);
+  scene.render.clipPlanes = {{true, {0, 0, 1}, -5}};
+  EXPECT_FALSE(std::get<ProbeResult>(probePixel(f, {}, scene, 101, 101, 50, 50)).hit);
+}
+
 }  // namespace
 }  // namespace zs
