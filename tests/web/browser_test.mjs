@@ -169,11 +169,11 @@ function matchesDesktop(example, sets = [], { page: shared } = {}) {
 }
 
 const cases = {};
-// The pictures test.sh checks: four thesis surfaces (a quadric, the cubic and two
-// quartics; all seven are in the 'gallery' case) and gallery scenes for every method and
-// feature, in shards that each stay well under 20 s on two cores.
+// The pictures test.sh checks: the seven thesis surfaces and five gallery scenes, in shards
+// that each stay well under 20 s on two cores.
 const PICTURES = [
-  ...['1-cross-channel', '2-cayley-cubic', '5-klein-quartic', '7-racor'].map((t) => [`thesis/${t}`, []]),
+  ...['1-cross-channel', '2-cayley-cubic', '3-cuboid', '4-peninsula', '5-klein-quartic',
+      '6-quartic-saddle', '7-racor'].map((t) => [`thesis/${t}`, []]),
   ['endrass-octic', []],   // above the float isolation's degree: double-float expansion
   ['labs-septic', []],     // a record surface clipped by a ball
   ['gyroid', []],          // not a polynomial: interval arithmetic
