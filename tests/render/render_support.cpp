@@ -79,10 +79,17 @@ std::pair<double, double> rayInBox(const Ray& r, const Domain& box) {
 
 double sampledFirstHit(PointEvaluator& f, const Ray& r, double t0, double t1, int samples,
                        std::span<const double> params) {
+  return sampledFirstHit(
+      [&](double x, double y, double z, double out[4]) { f.eval(x, y, z, params, {out, 4}); }, r, t0,
+      t1, samples);
+}
+
+double sampledFirstHit(const FieldWithGradient& f, const Ray& r, double t0, double t1,
+                       int samples) {
   double out[4];
   auto at = [&](double t) {  // (f, f')
-    f.eval(r.origin[0] + t * r.direction[0], r.origin[1] + t * r.direction[1],
-           r.origin[2] + t * r.direction[2], params, out);
+    f(r.origin[0] + t * r.direction[0], r.origin[1] + t * r.direction[1],
+      r.origin[2] + t * r.direction[2], out);
     return std::pair{out[0], out[1] * r.direction[0] + out[2] * r.direction[1] +
                                  out[3] * r.direction[2]};
   };
