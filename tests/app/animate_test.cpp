@@ -31,7 +31,7 @@ TEST(Animation, ReadsAParameterSweepAndSpacesFramesEvenlyWithBothEnds) {
 
 TEST(Animation, RefusesMalformedSpecsWithAHowTo) {
   for (const char* bad : {"params.a", "params.a=1", "params.a=x:1", "params.a=0:1e999",
-                          "camera.eye=0:1", "params.=0:1", "=0:1"}) {
+                          "params.=0:1", "=0:1", "clip.=0:1"}) {
     std::string error;
     EXPECT_FALSE(parseAnimation(bad, 10, error)) << bad;
     EXPECT_NE(error.find("error: --animate"), std::string::npos) << bad;
@@ -64,6 +64,31 @@ TEST(Animation, OctreeIsRebuiltOnlyForAParameterOfF) {
   EXPECT_TRUE(changesOctree(*parseAnimation("params.r=1:2", 3, error), base));
   EXPECT_FALSE(changesOctree(*parseAnimation("params.unused=1:2", 3, error), base));
   EXPECT_FALSE(changesOctree(*parseAnimation("camera.orbit=0:360", 3, error), base));
+}
+
+TEST(Animation, AnyNumberOfTheSceneGoesThroughSetsChecks) {
+  Scene base;
+  base.render.clipPlanes = {{true, {0, 0, 1}, 0}};
+  std::string error;
+  const auto sweep = parseAnimation("clip.plane.1.offset=-1:1", 5, error);
+  ASSERT_TRUE(sweep) << error;
+  EXPECT_EQ(sweep->key(), "clip.plane.1.offset");
+  Scene frame;
+  ASSERT_EQ(frameScene(*sweep, base, 3, frame), "");
+  EXPECT_DOUBLE_EQ(frame.render.clipPlanes[0].offset, 0.5);
+  EXPECT_FALSE(changesOctree(*sweep, base));  // a frame parameter
+  EXPECT_FALSE(changesOctree(*parseAnimation("volume.falloff=0.05:0.5", 5, error), base));
+  EXPECT_TRUE(changesOctree(*parseAnimation("domain.radius=1:2", 5, error), base));
+  EXPECT_TRUE(changesOctree(*parseAnimation("octree.level=1:4", 5, error), base));
+  // What --set refuses is refused with its message and the how-to: a plane the scene does
+  // not have, a vector, a value out of range.
+  for (const char* bad : {"clip.plane.2.offset=0:1", "camera.eye=0:1", "volume.density=-2:1"}) {
+    const auto anim = parseAnimation(bad, 3, error);
+    ASSERT_TRUE(anim) << bad;
+    const std::string message = frameScene(*anim, base, 0, frame);
+    EXPECT_NE(message.find("error:"), std::string::npos) << bad;
+    EXPECT_NE(message.find("hint: write KEY=FROM:TO"), std::string::npos) << bad;
+  }
 }
 
 TEST(Animation, OrbitTurnsTheEyeAboutUpThroughTheTarget) {

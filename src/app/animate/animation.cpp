@@ -14,8 +14,18 @@ namespace zs::app {
 namespace {
 
 const char* const kHowTo =
-    "hint: write KEY=FROM:TO with KEY params.NAME, surface.level or camera.orbit (degrees), e.g. "
-    "--animate params.a=0:1 or --animate camera.orbit=0:360\n";
+    "hint: write KEY=FROM:TO with KEY params.NAME, surface.level, camera.orbit (degrees) or "
+    "another number of the scene as --set names it, e.g. --animate params.a=0:1, "
+    "--animate camera.orbit=0:360 or --animate clip.plane.1.offset=-1:1\n";
+
+// Keys whose change needs a new octree, box hierarchy or shader (not only new uniforms or
+// another program variant of the same shader).
+bool rebuildsSurface(const std::string& key) {
+  for (const char* prefix : {"domain.", "octree.", "highlights.singular."}) {
+    if (key.rfind(prefix, 0) == 0) return true;
+  }
+  return false;
+}
 
 // The whole of `text` as a finite number.
 std::optional<double> number(const std::string& text) {
@@ -57,6 +67,10 @@ std::optional<Animation> parseAnimation(const std::string& text, int frames, std
     anim.kind = Animation::Kind::Level;
   } else if (key.rfind("params.", 0) == 0 && key.size() > 7) {
     anim.param = key.substr(7);
+  } else if (!key.empty() && key.rfind("params.", 0) != 0 && key.back() != '.' &&
+             key.front() != '.') {
+    anim.kind = Animation::Kind::Setting;
+    anim.param = key;
   } else {
     error = "error: --animate cannot animate '" + key + "'\n" + kHowTo;
     return std::nullopt;
@@ -92,13 +106,16 @@ std::string frameScene(const Animation& anim, const Scene& base, int i, Scene& o
   char text[64];
   std::snprintf(text, sizeof text, "%.17g", value);
   if (auto err = applyOverride(out, anim.key() + "=" + text)) {
-    return formatSceneError(*err);
+    std::string message = formatSceneError(*err);
+    if (anim.kind == Animation::Kind::Setting) message += kHowTo;
+    return message;
   }
   return {};
 }
 
 bool changesOctree(const Animation& anim, const Scene& base) {
   if (anim.kind == Animation::Kind::Level) return true;  // another surface each frame
+  if (anim.kind == Animation::Kind::Setting) return rebuildsSurface(anim.param);
   if (anim.kind != Animation::Kind::Param) return false;
   ParseResult parsed = parseFormula(base.formula);
   const Formula* f = std::get_if<Formula>(&parsed);

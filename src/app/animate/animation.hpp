@@ -3,15 +3,19 @@
 // scene follows from the loaded one. Takes the --animate text and a Scene; puts out the
 // scene of frame i and whether that frame needs its own octree. No GL here.
 //
-// KEY is params.NAME (a parameter, swept linearly from FROM to TO, both ends included) or
+// KEY is params.NAME (a parameter, swept linearly from FROM to TO, both ends included),
 // camera.orbit (the eye turned about the axis through camera.target along camera.up, by
-// FROM to TO degrees).
+// FROM to TO degrees), or any other number of the scene as --set names it
+// (clip.plane.1.offset, volume.falloff, lights.source.2.intensity, domain.radius, ...),
+// set through --set's checks each frame.
 //
 // When the octree must be rebuilt: the octree keeps the boxes where 0 may lie in F(box),
 // evaluated with the parameters' values, so a parameter that appears in F changes it and
 // every frame gets its own (a tree built for one value may drop boxes the surface reaches
 // at another: reusing it would cut holes). A parameter F does not use, and camera.orbit,
-// change no box: the octree, the box hierarchy and the shader are built once.
+// change no box: the octree, the box hierarchy and the shader are built once. Of the other
+// keys, those of the domain, the octree and the singular-point markers rebuild every frame;
+// the rest are frame parameters or program variants (clip planes, volume, lights, ...).
 #include <optional>
 #include <string>
 
@@ -20,22 +24,24 @@
 namespace zs::app {
 
 struct Animation {
-  enum class Kind { Param, Orbit, Level };
+  enum class Kind { Param, Orbit, Level, Setting };
   Kind kind = Kind::Param;
-  std::string param;  // Kind::Param: the parameter's name
+  std::string param;  // Kind::Param: the parameter's name; Kind::Setting: the key
   double from = 0, to = 1;
   int frames = 60;
 
   std::string key() const {
-    return kind == Kind::Orbit   ? "camera.orbit"
-           : kind == Kind::Level ? "surface.level"
-                                 : "params." + param;
+    return kind == Kind::Orbit     ? "camera.orbit"
+           : kind == Kind::Level   ? "surface.level"
+           : kind == Kind::Setting ? param
+                                   : "params." + param;
   }
   // The animated value of frame `i` in [0, frames): from at 0, to at frames - 1.
   double valueAt(int i) const;
 };
 
-// Reads "params.NAME=FROM:TO", "surface.level=FROM:TO" or "camera.orbit=FROM:TO"; on failure
+// Reads "params.NAME=FROM:TO", "surface.level=FROM:TO", "camera.orbit=FROM:TO" or
+// "KEY=FROM:TO" for another key (checked against the scene by frameScene); on failure
 // `error` says what is wrong and how to write it.
 std::optional<Animation> parseAnimation(const std::string& text, int frames, std::string& error);
 

@@ -148,7 +148,9 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
       }
       if (perFrameOctree) {
         error =
-            markers ? rebuildAll(surface, scene, tracer) : rebuildForParams(surface, scene, tracer);
+            markers || anim->kind == Animation::Kind::Setting  // a domain or octree key
+                ? rebuildAll(surface, scene, tracer)
+                : rebuildForParams(surface, scene, tracer);
         if (!error.empty()) {
           std::cerr << "frame " << i << ": " << error;
           return 1;
@@ -186,6 +188,8 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
               !perFrameOctree ? "octree built once (F does not change)"
               : anim->kind == Animation::Kind::Level
                   ? "octree rebuilt per frame (the level moves)"
+              : anim->kind == Animation::Kind::Setting
+                  ? "octree rebuilt per frame (the domain, the octree or the markers change)"
                   : "octree rebuilt per frame (the parameter is in F)",
               gl.context->backendName().c_str());
   if (ffmpeg) {
