@@ -39,17 +39,19 @@ class UniformList {
 };
 
 // The proxy's uniforms (fullscreen.vert.glsl); returns its vertex count.
+// `wholeDomain`: the box is the domain's (the volume mode draws F's field wherever it is),
+// not only the part that holds the hierarchy's leaves (where hits lie).
 int proxyUniforms(UniformList& u, const Camera& camera, const Domain& domain,
-                  const GpuHierarchy& hierarchy, const FrameInputs& in) {
+                  const GpuHierarchy& hierarchy, const FrameInputs& in, bool wholeDomain) {
   u.integer("rtProxy", in.proxy == Proxy::Box ? 1 : 0);
   if (in.proxy == Proxy::FullScreen) return 6;
-  if (hierarchy.count == 0) return 0;
+  if (hierarchy.count == 0 && !wholeDomain) return 0;
   // Hits lie in the domain and in the root box of the hierarchy.
   Vec3 lo{}, hi{};
   double diagonal = 0, farthest = 0;
   for (int a = 0; a < 3; ++a) {
-    lo[a] = std::max(domain.min[a], double(hierarchy.rootMin[a]));
-    hi[a] = std::min(domain.max[a], double(hierarchy.rootMax[a]));
+    lo[a] = wholeDomain ? domain.min[a] : std::max(domain.min[a], double(hierarchy.rootMin[a]));
+    hi[a] = wholeDomain ? domain.max[a] : std::min(domain.max[a], double(hierarchy.rootMax[a]));
     if (!(lo[a] <= hi[a])) return 0;
     diagonal += (hi[a] - lo[a]) * (hi[a] - lo[a]);
     const double e = std::max(std::abs(lo[a] - camera.eye[a]), std::abs(hi[a] - camera.eye[a]));
@@ -180,7 +182,7 @@ FrameUniforms frameUniforms(const RenderSettings& s, const Domain& clip, const F
   u.vec3("rtBackground", s.background);
 
   if (!in.params.empty()) u.array("zs_params", in.params);
-  result.vertices = proxyUniforms(u, s.camera, domain, hierarchy, in);
+  result.vertices = proxyUniforms(u, s.camera, domain, hierarchy, in, s.mode == RenderMode::Volume);
   return result;
 }
 

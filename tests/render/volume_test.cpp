@@ -74,6 +74,37 @@ TEST(Volume, ALinearFieldMatchesTheTransferFunctionIntegratedInDouble) {
   }
 }
 
+// The field glows wherever |F - level| is small, also outside the box of the octree's
+// leaves (which only bounds where F = level): seen from the side, F = z still shows above
+// its zero plane, and a field without any zero (F > 0 everywhere) still shows.
+TEST(Volume, TheFieldShowsBeyondWhereTheSurfaceLies) {
+  std::string error;
+  ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
+  RenderSettings s = test::testSettings({3, 0, 0});
+  s.camera.up = {0, 0, 1};
+  s.camera.projection = Projection::Orthographic;
+  s.camera.height = 2.4;
+  s.mode = RenderMode::Volume;
+  s.background = {0, 0, 0};
+  s.volume = {8, 0.5, 1, 128};
+  auto plane = test::makeTracer({"z", {}, 2}, error);
+  ASSERT_NE(plane, nullptr) << error;
+  const Frame side = plane->render(s, Domain{}, kSize, kSize);
+  ASSERT_EQ(side.error, "");
+  // The top row's rays run at z = 1.125, where the leaves (about z = 0) are far: F = 1.125
+  // along them, an optical depth of 8 exp(-(1.125 / 0.5)^2) * 3 = 0.15.
+  const std::uint8_t* p = side.color.pixel(kSize / 2, 0);
+  EXPECT_GT(p[0] + p[1] + p[2], 3 * 10) << "nothing drawn above the zero plane's leaves";
+
+  auto noZero = test::makeTracer({"x^2 + y^2 + z^2 + 0.02", {}, 2}, error);
+  ASSERT_NE(noZero, nullptr) << error;
+  s.volume = {8, 0.1, 1, 128};
+  const Frame glow = noZero->render(s, Domain{}, kSize, kSize);
+  ASSERT_EQ(glow.error, "");
+  const std::uint8_t* c = glow.color.pixel(kSize / 2, kSize / 2);
+  EXPECT_GT(c[0] + c[1] + c[2], 3 * 40) << "a field without zeros draws nothing";
+}
+
 TEST(Volume, IsDeterministic) {
   std::string error;
   ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
