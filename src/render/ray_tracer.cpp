@@ -37,12 +37,15 @@ void fillTextureBuffer(unsigned& buffer, unsigned& texture, std::span<const std:
   glBindBuffer(GL_TEXTURE_BUFFER, 0);
 }
 
+// GL_RENDERER of the current context ("" if the driver gives none).
+std::string_view rendererName() {
+  const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return name ? name : "";
+}
+
 }  // namespace
 
-RayTracer::RayTracer()
-    : RayTracer(frameStorageFor(reinterpret_cast<const char*>(glGetString(GL_RENDERER))
-                                    ? reinterpret_cast<const char*>(glGetString(GL_RENDERER))
-                                    : "")) {}
+RayTracer::RayTracer() : RayTracer(frameStorageFor(rendererName())) {}
 
 RayTracer::RayTracer(FrameStorage storage) : preferred_(ProgramVariant::of(RenderSettings{})) {
   programs_.setFrameStorage(storage);

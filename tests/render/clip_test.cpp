@@ -81,11 +81,9 @@ TEST_P(ClipPlanes, TheCutCurveTakesTheCutColorAndADisabledPlaneCutsNothing) {
     for (int i = 0; i < kSize; ++i) {
       if (!test::pixelNear(cut.color, i, j, s.cut.color, 6)) continue;
       ++marked;
-      const float t = cut.depth.at(i, j);
-      ASSERT_TRUE(std::isfinite(t)) << i << "," << j;
-      const Ray ray = primaryRay(s.camera, kSize, kSize, i, j);
-      const Vec3 p{ray.origin[0] + t * ray.direction[0], ray.origin[1] + t * ray.direction[1],
-                   ray.origin[2] + t * ray.direction[2]};
+      const std::optional<Vec3> hit = test::hitPoint(cut, s.camera, i, j);
+      ASSERT_TRUE(hit) << i << "," << j;
+      const Vec3& p = *hit;
       EXPECT_NEAR(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), 1.0, 2e-3) << i << "," << j;
       EXPECT_GE(p[2], 0.3 - s.cut.threshold - 1e-3) << i << "," << j;
       EXPECT_LE(p[2], 0.3 + 1e-4) << i << "," << j;
@@ -101,12 +99,8 @@ TEST_P(ClipPlanes, TheCutCurveTakesTheCutColorAndADisabledPlaneCutsNothing) {
   EXPECT_LE(diff.maxDifference, 1);
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, ClipPlanes,
-                         ::testing::Values(TracingMethod::Sampling, TracingMethod::Bernstein,
-                                           TracingMethod::Interval),
-                         [](const ::testing::TestParamInfo<TracingMethod>& info) {
-                           return std::string(tracingMethodName(info.param));
-                         });
+INSTANTIATE_TEST_SUITE_P(Methods, ClipPlanes, ::testing::ValuesIn(test::kEveryMethod),
+                         test::methodName);
 
 }  // namespace
 }  // namespace zs

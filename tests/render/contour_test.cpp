@@ -34,10 +34,9 @@ TEST_P(Contours, LinesLieOnTheLevelsOfTheFunction) {
   int lines = 0, checked = 0;
   for (int j = 0; j < kSize; ++j) {
     for (int i = 0; i < kSize; ++i) {
-      const float t = f.depth.at(i, j);
-      if (!std::isfinite(t)) continue;
-      const Ray ray = primaryRay(s.camera, kSize, kSize, i, j);
-      const double z = ray.origin[2] + t * ray.direction[2];
+      const std::optional<Vec3> hit = test::hitPoint(f, s.camera, i, j);
+      if (!hit) continue;
+      const double z = (*hit)[2];
       // On the sphere the normal is p, so the slope of z along the surface is sqrt(1 - z^2):
       // a line covers |z - level| < width / 2 * sqrt(1 - z^2).
       const double off = std::abs(z - 0.25 * std::round(z / 0.25));
@@ -54,12 +53,8 @@ TEST_P(Contours, LinesLieOnTheLevelsOfTheFunction) {
   EXPECT_GT(checked, kSize * kSize / 3);
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, Contours,
-                         ::testing::Values(TracingMethod::Sampling, TracingMethod::Bernstein,
-                                           TracingMethod::Interval),
-                         [](const ::testing::TestParamInfo<TracingMethod>& info) {
-                           return std::string(tracingMethodName(info.param));
-                         });
+INSTANTIATE_TEST_SUITE_P(Methods, Contours, ::testing::ValuesIn(test::kEveryMethod),
+                         test::methodName);
 
 }  // namespace
 }  // namespace zs

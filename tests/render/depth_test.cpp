@@ -104,10 +104,8 @@ TEST_P(DepthOfEveryMethod, UnitSphere) {
   checkSphereDepth(Backend::Egl, s, 48, 3, Criteria::Thesis, GetParam(), tolerance);
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, DepthOfEveryMethod,
-                         ::testing::Values(TracingMethod::Sampling, TracingMethod::Bernstein,
-                                           TracingMethod::Interval),
-                         [](const auto& info) { return std::string(tracingMethodName(info.param)); });
+INSTANTIATE_TEST_SUITE_P(Methods, DepthOfEveryMethod, ::testing::ValuesIn(test::kEveryMethod),
+                         test::methodName);
 
 }  // namespace
 }  // namespace zs

@@ -171,9 +171,8 @@ TEST_P(Exactness, SquaredSphereTouchesZeroWithoutChangingSign) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, Exactness,
-                         ::testing::Values(TracingMethod::Sampling, TracingMethod::Bernstein, TracingMethod::Interval),
-                         [](const auto& info) { return std::string(tracingMethodName(info.param)); });
+INSTANTIATE_TEST_SUITE_P(Methods, Exactness, ::testing::ValuesIn(test::kEveryMethod),
+                         test::methodName);
 
 TEST(ExactnessOfTheDefault, ChebyshevDegree12) {
   const std::string t12 = "(2048*x^12-6144*x^10+6912*x^8-3584*x^6+840*x^4-72*x^2+1)";

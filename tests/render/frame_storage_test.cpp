@@ -9,8 +9,6 @@
 #include <string>
 #include <vector>
 
-#include <glad/gl.h>
-
 #include "render_support.hpp"
 
 namespace zs {
@@ -50,8 +48,7 @@ TEST_P(FrameStorageTest, BothWaysDrawTheSamePictureInEveryVariant) {
   spec.method = c.method;
   spec.frameStorage = FrameStorage::FlatVaryings;
   auto varyings = test::makeTracer(spec, error);
-  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  if (!varyings && frameStorageFor(renderer ? renderer : "") == FrameStorage::Uniforms) {
+  if (!varyings && RayTracer().frameStorage() == FrameStorage::Uniforms) {
     // The block needs more varying components than GL promises; NVIDIA's linker says so.
     GTEST_SKIP() << "this driver cannot pass the frame's parameters as varyings (it uses "
                     "uniforms): " << error.substr(0, error.find("--- fragment"));

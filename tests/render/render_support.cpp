@@ -210,17 +210,19 @@ bool pixelNear(const Image& image, int x, int y, Vec3 rgb, int tolerance) {
   return true;
 }
 
+std::optional<Vec3> hitPoint(const Frame& frame, const Camera& camera, int i, int j) {
+  const float t = frame.depth.at(i, j);
+  if (!std::isfinite(t)) return std::nullopt;
+  const Ray ray = primaryRay(camera, frame.depth.width, frame.depth.height, i, j);
+  return Vec3{ray.origin[0] + t * ray.direction[0], ray.origin[1] + t * ray.direction[1],
+              ray.origin[2] + t * ray.direction[2]};
+}
+
 std::vector<Vec3> hitPoints(const Frame& frame, const Camera& camera) {
   std::vector<Vec3> points;
-  const int w = frame.depth.width, h = frame.depth.height;
-  for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i) {
-      const float t = frame.depth.at(i, j);
-      if (!std::isfinite(t)) continue;
-      const Ray ray = primaryRay(camera, w, h, i, j);
-      points.push_back({ray.origin[0] + t * ray.direction[0], ray.origin[1] + t * ray.direction[1],
-                        ray.origin[2] + t * ray.direction[2]});
-    }
+  for (int j = 0; j < frame.depth.height; ++j)
+    for (int i = 0; i < frame.depth.width; ++i)
+      if (const std::optional<Vec3> p = hitPoint(frame, camera, i, j)) points.push_back(*p);
   return points;
 }
 

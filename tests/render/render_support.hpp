@@ -103,7 +103,19 @@ std::string matchReference(const std::string& name, const Image& image);
 
 std::string sourceDir();
 
-// The world points of a frame's hits, from its depth map and the camera it was drawn with.
+// The three tracing methods, for suites that run over every one (INSTANTIATE_TEST_SUITE_P
+// with kEveryMethod and methodName).
+inline const std::vector<TracingMethod> kEveryMethod{TracingMethod::Sampling,
+                                                     TracingMethod::Bernstein,
+                                                     TracingMethod::Interval};
+inline constexpr auto methodName = [](const auto& info) {
+  return std::string(tracingMethodName(info.param));
+};
+
+// The world point of pixel (i, j)'s hit, from the frame's depth map and the camera it was
+// drawn with; none where the pixel's ray hit nothing.
+std::optional<Vec3> hitPoint(const Frame& frame, const Camera& camera, int i, int j);
+// Every hit's world point.
 std::vector<Vec3> hitPoints(const Frame& frame, const Camera& camera);
 
 // Share of pixels whose RGB is within `tolerance` (0..255) of `rgb` (0..1).

@@ -42,17 +42,24 @@ std::array<double, 3> reference(const Volume& v, double z0, double z1, int steps
   return color;
 }
 
+// The volume mode, looking straight down on the box from (0, 0, 3) with parallel rays that
+// each cross it from z = 1.5 to z = -1.5.
+RenderSettings fromAboveOrthographic(const Vec3& background) {
+  RenderSettings s = test::testSettings({0, 0, 3});
+  s.camera.projection = Projection::Orthographic;
+  s.camera.height = 2;
+  s.mode = RenderMode::Volume;
+  s.background = background;
+  return s;
+}
+
 TEST(Volume, ALinearFieldMatchesTheTransferFunctionIntegratedInDouble) {
   std::string error;
   ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
   // F = z seen from above: every ray crosses the band around z = 0 through the whole box.
   auto tracer = test::makeTracer({"z", {}, 1}, error);
   ASSERT_NE(tracer, nullptr) << error;
-  RenderSettings s = test::testSettings({0, 0, 3});
-  s.camera.projection = Projection::Orthographic;
-  s.camera.height = 2;
-  s.mode = RenderMode::Volume;
-  s.background = {0.1, 0.2, 0.3};
+  RenderSettings s = fromAboveOrthographic({0.1, 0.2, 0.3});
   for (const Volume v : {Volume{2, 0.2, 4, 256}, Volume{40, 0.05, 0.5, 512}, Volume{0, 0.1, 1, 64}}) {
     s.volume = v;
     const Frame f = tracer->render(s, Domain{}, kSize, kSize);
@@ -126,11 +133,7 @@ TEST(Volume, ClipPlanesAndTheLevelBoundWhatIsIntegrated) {
   ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
   auto tracer = test::makeTracer({"z", {}, 1}, error);
   ASSERT_NE(tracer, nullptr) << error;
-  RenderSettings s = test::testSettings({0, 0, 3});
-  s.camera.projection = Projection::Orthographic;
-  s.camera.height = 2;
-  s.mode = RenderMode::Volume;
-  s.background = {0, 0, 0};
+  RenderSettings s = fromAboveOrthographic({0, 0, 0});
   s.volume = {20, 0.1, 1, 256};
   // Cutting away z > -0.5 leaves no part of the band around z = 0: only its faint tail.
   s.clipPlanes = {{true, {0, 0, 1}, -0.5}};

@@ -63,22 +63,26 @@ const Scene& expectScene(const SceneResult& r) {
   return s ? *s : kEmpty;
 }
 
+// Whether key `spec` has the same value in scenes a and b.
+bool sameValue(const scene_detail::KeySpec& spec, Scene& a, Scene& b) {
+  return std::visit(
+      [&](const auto& ref) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(ref)>, scene_detail::EnumRef>) {
+          return ref.get(a) == ref.get(b);
+        } else {
+          return ref(a) == ref(b);
+        }
+      },
+      spec.field);
+}
+
 TEST(SceneRoundTrip, EveryKeyOfTheTestSceneDiffersFromItsDefault) {
   // Guards the round-trip test below: a key left at its default would round-trip trivially.
   Scene changed = everyKeyChanged();
   Scene defaults;
   for (const auto& spec : scene_detail::keySpecs()) {
     if (spec.legacyLight >= 0) continue;  // old names of the lights, checked below
-    const bool same = std::visit(
-        [&](const auto& ref) {
-          if constexpr (std::is_same_v<std::decay_t<decltype(ref)>, scene_detail::EnumRef>) {
-            return ref.get(changed) == ref.get(defaults);
-          } else {
-            return ref(changed) == ref(defaults);
-          }
-        },
-        spec.field);
-    EXPECT_FALSE(same) << spec.name;
+    EXPECT_FALSE(sameValue(spec, changed, defaults)) << spec.name;
   }
   EXPECT_NE(changed.formula, defaults.formula);
   EXPECT_NE(changed.params, defaults.params);
@@ -91,16 +95,7 @@ TEST(SceneRoundTrip, EveryLightKeyDiffersFromItsDefaultInTheFirstLight) {
   one.render.lights.sources = {changed.render.lights.sources.front()};
   defaults.render.lights.sources = {Light{}};
   for (const auto& spec : scene_detail::lightKeySpecs()) {
-    const bool same = std::visit(
-        [&](const auto& ref) {
-          if constexpr (std::is_same_v<std::decay_t<decltype(ref)>, scene_detail::EnumRef>) {
-            return ref.get(one) == ref.get(defaults);
-          } else {
-            return ref(one) == ref(defaults);
-          }
-        },
-        spec.field);
-    EXPECT_FALSE(same) << spec.name;
+    EXPECT_FALSE(sameValue(spec, one, defaults)) << spec.name;
   }
 }
 
@@ -112,16 +107,7 @@ TEST(SceneRoundTrip, EveryClipPlaneKeyDiffersFromItsDefaultInTheFirstPlane) {
   one.render.clipPlanes = {changed.render.clipPlanes.front()};
   defaults.render.clipPlanes = {ClipPlane{}};
   for (const auto& spec : list->keys) {
-    const bool same = std::visit(
-        [&](const auto& ref) {
-          if constexpr (std::is_same_v<std::decay_t<decltype(ref)>, scene_detail::EnumRef>) {
-            return ref.get(one) == ref.get(defaults);
-          } else {
-            return ref(one) == ref(defaults);
-          }
-        },
-        spec.field);
-    EXPECT_FALSE(same) << spec.name;
+    EXPECT_FALSE(sameValue(spec, one, defaults)) << spec.name;
   }
 }
 
