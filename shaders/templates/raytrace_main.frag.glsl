@@ -27,6 +27,9 @@ layout(location = 1) out float rtOutDepth;
 #ifndef RT_MAX_HITS
 #define RT_MAX_HITS 1    // hits kept per primary ray: 1 when opaque, tracing.hits otherwise
 #endif
+#ifndef RT_CLIP_PLANES
+#define RT_CLIP_PLANES 0  // cutting clip planes, in rt.clip0 .. rt.clip3
+#endif
 #ifndef RT_REFLECTION
 #define RT_REFLECTION 1  // one reflection ray off the first hit
 #endif
@@ -78,21 +81,32 @@ vec2 rtClipPlane(vec4 plane, vec3 o, vec3 d, vec2 t) {
   return t;
 }
 
-// How far p lies on the kept side of the nearest clip plane (1e30 with none): the cut
-// highlight, and whether a point is cut away (negative).
+#if RT_CLIP_PLANES > 0
+// How far p lies on the kept side of the nearest clip plane (unused slots are 1e30 away):
+// the cut highlight, and whether a point is cut away (negative).
 float rtCutDepth(vec3 p) {
   return min(min(rt.clip0.w - dot(rt.clip0.xyz, p), rt.clip1.w - dot(rt.clip1.xyz, p)),
              min(rt.clip2.w - dot(rt.clip2.xyz, p), rt.clip3.w - dot(rt.clip3.xyz, p)));
 }
+#endif
 
 // The part of the ray inside the domain (box and ball) and on the kept side of every clip
 // plane: what the volume mode integrates over. Empty when x > y.
 vec2 rtDomainSpan(vec3 o, vec3 d, vec3 inv) {
   vec2 t = domainInterval(o, d, inv);
+#if RT_CLIP_PLANES > 0
   t = rtClipPlane(rt.clip0, o, d, t);
+#endif
+#if RT_CLIP_PLANES > 1
   t = rtClipPlane(rt.clip1, o, d, t);
+#endif
+#if RT_CLIP_PLANES > 2
   t = rtClipPlane(rt.clip2, o, d, t);
-  return rtClipPlane(rt.clip3, o, d, t);
+#endif
+#if RT_CLIP_PLANES > 3
+  t = rtClipPlane(rt.clip3, o, d, t);
+#endif
+  return t;
 }
 
 // The part of the ray where hits can lie: the domain span inside the padded box of the
@@ -339,7 +353,10 @@ void main() {
       vec3 oc = ro - rtMarkers[k].xyz;
       float b = dot(oc, rd), c = dot(oc, oc) - rtMarkers[k].w * rtMarkers[k].w;
       float disc = b * b - c * dot(rd, rd), tm = (-b - sqrt(max(disc, 0.0))) / dot(rd, rd);
-      bool hit = disc >= 0.0 && tm > 0.0 && tm < tMark && rtCutDepth(rtMarkers[k].xyz) >= 0.0;
+      bool hit = disc >= 0.0 && tm > 0.0 && tm < tMark;
+#if RT_CLIP_PLANES > 0
+      hit = hit && rtCutDepth(rtMarkers[k].xyz) >= 0.0;  // a marker cut away is not drawn
+#endif
       tMark = hit ? tm : tMark;
       nMark = hit ? (ro + tm * rd - rtMarkers[k].xyz) / rtMarkers[k].w : nMark;
       marked = marked || hit;

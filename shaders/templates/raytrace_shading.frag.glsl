@@ -95,6 +95,8 @@ vec3 shade(vec3 p, vec4 g, vec3 rd) {
 #endif
   if ((rt.silhouetteOn != 0) && abs(cosine) < rt.silhouetteThreshold) color = rt.silhouetteColor;
   if ((rt.borderOn != 0) && domainDepth(p) < rt.borderThreshold) color = rt.borderColor;
+#if RT_CLIP_PLANES > 0
   if ((rt.cutOn != 0) && rtCutDepth(p) < rt.cutThreshold) color = rt.cutColor;
+#endif
   return clamp(color, 0.0, 1.0);
 }

@@ -148,24 +148,22 @@ FrameUniforms frameUniforms(const RenderSettings& s, const Domain& clip, const F
   u.integer("rtBorderOn", s.border.enabled);
   u.real("rtBorderThreshold", s.border.threshold);
   u.vec3("rtBorderColor", s.border.color);
-  // Clip planes with unit normals; an unused slot keeps everything (normal 0, offset 1e30).
-  bool anyPlane = false;
+  // The cutting planes in the first slots (RT_CLIP_PLANES of them, program_variant.cpp),
+  // with unit normals; an unused slot keeps everything (normal 0, offset 1e30).
+  const std::vector<ClipPlane> planes = cuttingPlanes(s.clipPlanes);
   for (int k = 0; k < kMaxClipPlanes; ++k) {
     double plane[4] = {0, 0, 0, 1e30};
-    if (k < int(s.clipPlanes.size()) && s.clipPlanes[k].enabled) {
-      const Vec3& n = s.clipPlanes[k].normal;
+    if (k < int(planes.size())) {
+      const Vec3& n = planes[k].normal;
       const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-      if (length > 0 && std::isfinite(length) && std::isfinite(s.clipPlanes[k].offset)) {
-        plane[0] = n[0] / length;
-        plane[1] = n[1] / length;
-        plane[2] = n[2] / length;
-        plane[3] = s.clipPlanes[k].offset / length;
-        anyPlane = true;
-      }
+      plane[0] = n[0] / length;
+      plane[1] = n[1] / length;
+      plane[2] = n[2] / length;
+      plane[3] = planes[k].offset / length;
     }
     u.vec4(("rtClip" + std::to_string(k)).c_str(), plane[0], plane[1], plane[2], plane[3]);
   }
-  u.integer("rtCutOn", s.cut.enabled && anyPlane);
+  u.integer("rtCutOn", s.cut.enabled && !planes.empty());
   u.real("rtCutThreshold", s.cut.threshold);
   u.vec3("rtCutColor", s.cut.color);
   const Contours& contours = s.shading.contours;

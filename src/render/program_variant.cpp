@@ -14,6 +14,7 @@ ProgramVariant ProgramVariant::of(const RenderSettings& s) {
   v.reflection = s.reflection.enabled;
   v.shading = shadingDefines(s);
   v.volume = s.mode == RenderMode::Volume;
+  v.clipPlanes = int(cuttingPlanes(s.clipPlanes).size());
   return v;
 }
 
@@ -27,6 +28,7 @@ std::string withVariantDefines(std::string_view fragment, const ProgramVariant& 
       "\n#define RT_BEAM_TILE " + std::to_string(kBeamTile) + "\n" +
       (v.beam ? "#define RT_BEAM\n" : "") + (v.tileMask ? "#define RT_TILE_MASK\n" : "") +
       (v.volume ? "#define RT_VOLUME\n" : "") +
+      (v.clipPlanes > 0 ? "#define RT_CLIP_PLANES " + std::to_string(v.clipPlanes) + "\n" : "") +
       v.shading + "#line 2 0\n";
   source.insert(eol == std::string::npos ? source.size() : eol + 1, defines);
   return source;

@@ -24,9 +24,13 @@ struct ProgramVariant {
   bool beam = false;      // the beam pass's program (raytrace_beam.frag.glsl)
   bool tileMask = false;  // its tile mask's (the same file)
   bool volume = false;    // render.mode "volume" (raytrace_volume.frag.glsl)
+  // Cutting clip planes (cuttingPlanes): a frame without any pays nothing for them; their
+  // places are frame parameters, so moving one compiles nothing.
+  int clipPlanes = 0;
   bool operator<(const ProgramVariant& o) const {
-    return std::tie(samples, maxHits, reflection, shading, beam, tileMask, volume) <
-           std::tie(o.samples, o.maxHits, o.reflection, o.shading, o.beam, o.tileMask, o.volume);
+    return std::tie(samples, maxHits, reflection, shading, beam, tileMask, volume, clipPlanes) <
+           std::tie(o.samples, o.maxHits, o.reflection, o.shading, o.beam, o.tileMask, o.volume,
+                    o.clipPlanes);
   }
   // The frame's program for these settings.
   static ProgramVariant of(const RenderSettings& settings);

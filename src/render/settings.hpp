@@ -3,6 +3,7 @@
 // the command line and the viewer edit it, the renderer reads it. Defaults here are the
 // documented defaults of docs/surf-format.md.
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -211,6 +212,19 @@ struct ClipPlane {
 };
 
 inline constexpr int kMaxClipPlanes = 4;
+
+// The planes that cut: enabled, with a finite offset and a finite, non-zero normal (the
+// scene refuses a zero normal; a plane built in code may still have one).
+inline std::vector<ClipPlane> cuttingPlanes(const std::vector<ClipPlane>& planes) {
+  std::vector<ClipPlane> out;
+  for (const ClipPlane& p : planes) {
+    const double n2 = p.normal[0] * p.normal[0] + p.normal[1] * p.normal[1] + p.normal[2] * p.normal[2];
+    if (p.enabled && n2 > 0 && std::isfinite(n2) && std::isfinite(p.offset) &&
+        int(out.size()) < kMaxClipPlanes)
+      out.push_back(p);
+  }
+  return out;
+}
 
 struct Reflection {
   bool enabled = true;
