@@ -27,6 +27,8 @@ packages=(
   man-db
   # the batch recipes of docs/batch.md (tests/app: shards run by GNU parallel)
   parallel
+  # the translations (po/, docs/languages.md): xgettext, msgmerge and msgfmt
+  gettext
 )
 for option in "$@"; do
   case $option in

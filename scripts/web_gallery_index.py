@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Writes the web page's gallery index (JSON, to stdout) from the examples/ folder: every
-.surf file under it as {name, title, formula, image}, thesis surfaces first, then the rest by
-name; name is the path without .surf ("thesis/2-cayley-cubic"), title the file's first
-comment line, image the picture in examples/images that README.md shows for it."""
+.surf file under it as {name, title, summary, formula, image}, thesis surfaces first, then the rest by
+name; name is the path without .surf ("thesis/2-cayley-cubic"), summary the file's first
+comment line, title its part before " — ", image the picture in examples/images that README.md shows for it."""
 import json
 import pathlib
 import sys
@@ -14,11 +14,12 @@ for path in sorted(examples.glob("thesis/*.surf")) + sorted(examples.glob("*.sur
     name = path.relative_to(examples).with_suffix("").as_posix()
     text = path.read_text(encoding="utf-8")
     first = text.splitlines()[0] if text else ""
-    title = first.lstrip("#").strip().split(" — ")[0].split(" - ")[0] if first.startswith("#") else name
+    summary = first.lstrip("#").strip() if first.startswith("#") else ""
+    title = summary.split(" — ")[0].split(" - ")[0] if summary else name
     image = name.replace("/", "-") + ".png"
     if not (examples / "images" / image).exists():
         sys.exit(f"web_gallery_index.py: {path} has no picture examples/images/{image}")
-    entries.append({"name": name, "title": title, "formula": tomllib.loads(text)["formula"],
+    entries.append({"name": name, "title": title, "summary": summary, "formula": tomllib.loads(text)["formula"],
                     "image": image})
 json.dump(entries, sys.stdout, ensure_ascii=False, indent=1)
 sys.stdout.write("\n")

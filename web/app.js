@@ -3,6 +3,7 @@
 // the core computes to the WebGL2 renderer. The URL contract is docs/web.md's.
 import { Renderer } from './renderer.js';
 import { startKiosk } from './kiosk.js';
+import { N_, tr, trf, startLanguage, setLanguage, language, languages } from './i18n.js';
 
 const $ = (id) => document.getElementById(id);
 const root = document.documentElement;
@@ -140,7 +141,7 @@ function showFirstPicture() {
     .then((ms) => {
       if (ms === null) return;
       if (ms > 0) quickMsPerPixel = ms / pixels;
-      statusLine.textContent = `first picture · ${canvas.width}×${canvas.height} · ${ms.toFixed(1)} ms`;
+      statusLine.textContent = `${tr('first picture')} · ${canvas.width}×${canvas.height} · ${ms.toFixed(1)} ms`;
       root.dataset.firstPicture = formula;
       root.dataset.firstPictures = String(Number(root.dataset.firstPictures || 0) + 1);
       root.dataset.firstPictureMs = ms.toFixed(0);
@@ -164,7 +165,7 @@ function redraw() {
     if (ms !== null && ms > 0) msPerPixel = ms / pixels;
     if (redrawQueued) { redrawQueued = false; redraw(); return; }
     if (ms === null) return;  // superseded or lost: a later draw sets the state
-    statusLine.textContent = `${session.method()} · ${canvas.width}×${canvas.height} · ${ms.toFixed(1)} ms`;
+    statusLine.textContent = `${tr(session.method())} · ${canvas.width}×${canvas.height} · ${ms.toFixed(1)} ms`;
     if (full) {
       if (firstPictureMs === null) firstPictureMs = performance.now();
       if (errorBox.hidden) setState('ready');
@@ -173,7 +174,7 @@ function redraw() {
     return ms;
   }).catch((e) => {
     pending = null;
-    showError('zeroset could not draw: ' + (e && e.message ? e.message : e));
+    showError(trf('zeroset could not draw: %s', e && e.message ? e.message : e));
   });
 }
 
@@ -262,7 +263,7 @@ function buildParams() {
     row.querySelector('label').textContent = p.name;
     const slider = row.querySelector('input[type=range]');
     const number = row.querySelector('input[type=number]');
-    number.setAttribute('aria-label', p.name + ' value');
+    number.setAttribute('aria-label', trf('%s value', p.name));
     Object.assign(slider, { min: lo, max: hi, step: (hi - lo) / 1000, value: p.value });
     number.value = p.value;
     const set = (v) => {
@@ -283,22 +284,22 @@ function buildParams() {
 }
 
 const GROUPS = [
-  ['Surface', /^surface/],
-  ['Tracing', /^(tracing|samples|opacity)/],
-  ['Domain', /^(domain|octree)/],
-  ['Camera', /^camera/],
-  ['Lights', /^lights/],
-  ['Materials', /^materials/],
-  ['Highlights', /^(silhouette|border|singular|highlights|reflection)/],
-  ['Colouring', /^(shading|background)/],
-  ['Cross-sections', /^clip/],
-  ['Volume', /^(render|volume)/],
+  [N_('Surface'), /^surface/],
+  [N_('Tracing'), /^(tracing|samples|opacity)/],
+  [N_('Domain'), /^(domain|octree)/],
+  [N_('Camera'), /^camera/],
+  [N_('Lights'), /^lights/],
+  [N_('Materials'), /^materials/],
+  [N_('Highlights'), /^(silhouette|border|singular|highlights|reflection)/],
+  [N_('Colouring'), /^(shading|background)/],
+  [N_('Cross-sections'), /^clip/],
+  [N_('Volume'), /^(render|volume)/],
 ];
 const MAX_CLIP_PLANES = 4;  // render/settings.hpp kMaxClipPlanes
 
 function groupOf(key) {
   for (const [name, re] of GROUPS) if (re.test(key)) return name;
-  return 'More';
+  return N_('More');
 }
 
 function tomlOf(setting, value) {
@@ -319,7 +320,8 @@ function settingRow(s) {
   const id = 'set-' + s.key.replace(/\./g, '-');
   const label = document.createElement('label');
   label.htmlFor = id;
-  label.textContent = s.key.replace(/^(lights\.source|clip\.plane)\.\d+\./, '');
+  label.textContent = keyLabel(s.key.replace(/^(lights\.source|clip\.plane)\.\d+\./, ''));
+  label.title = s.key;
   row.append(label);
   let input;
   if (s.type === 'bool') {
@@ -335,7 +337,7 @@ function settingRow(s) {
     input.addEventListener('change', () => applySetting(s.key, tomlOf(s, input.value)));
   } else if (s.type === 'enum') {
     input = document.createElement('select');
-    for (const c of s.choices) input.add(new Option(c, c, false, c === s.choice));
+    for (const c of s.choices) input.add(new Option(tr(c), c, false, c === s.choice));
     input.addEventListener('change', () => applySetting(s.key, tomlOf(s, input.value)));
   } else if (s.type === 'vec3' && /color/.test(s.key)) {
     input = document.createElement('input');
@@ -353,7 +355,7 @@ function settingRow(s) {
       n.type = 'number';
       n.step = 'any';
       n.value = v;
-      n.setAttribute('aria-label', `${s.key} ${'xyz'[i]}`);
+      n.setAttribute('aria-label', `${label.textContent} ${'xyz'[i]}`);
       return n;
     });
     parts.forEach((n, i) => {
@@ -393,7 +395,7 @@ function buildSettings() {
       d.dataset.group = name;
       d.open = open.has(name);
       const summary = document.createElement('summary');
-      summary.textContent = name;
+      summary.textContent = tr(name);
       d.append(summary);
       groups.set(name, d);
     }
@@ -403,7 +405,7 @@ function buildSettings() {
   session.listEntries('lights.source').forEach((light, i) => {
     const set = document.createElement('fieldset');
     const legend = document.createElement('legend');
-    legend.textContent = `light ${i + 1}`;
+    legend.textContent = trf('light %d', i + 1);
     set.append(legend, ...light.map(settingRow));
     group('Lights').append(set);
   });
@@ -422,10 +424,10 @@ function clipPlaneRows(box) {
   planes.forEach((plane, i) => {
     const set = document.createElement('fieldset');
     const legend = document.createElement('legend');
-    legend.textContent = `plane ${i + 1}`;
+    legend.textContent = trf('plane %d', i + 1);
     const remove = document.createElement('button');
     remove.type = 'button';
-    remove.textContent = 'remove';
+    remove.textContent = tr('remove');
     remove.id = `clip-plane-${i + 1}-remove`;
     remove.addEventListener('click', () => setList(planes.filter((_, j) => j !== i).map(inline)));
     set.append(legend, ...plane.map(settingRow), remove);
@@ -434,7 +436,7 @@ function clipPlaneRows(box) {
   if (planes.length < MAX_CLIP_PLANES) {
     const add = document.createElement('button');
     add.type = 'button';
-    add.textContent = 'add plane';
+    add.textContent = tr('add plane');
     add.id = 'clip-plane-add';
     add.addEventListener('click', () => setList([...planes.map(inline), '{normal = [0, 0, 1], offset = 0}']));
     box.append(add);
@@ -483,7 +485,7 @@ function showProbe(e) {
   const [w, h] = cssSize();
   const r = session.probe(x, y, Math.round(w), Math.round(h));
   const f = (v) => (Number.isFinite(v) ? v.toPrecision(4) : 'n/a');
-  statusLine.textContent = r.error ? r.error : !r.hit ? 'no surface under the cursor'
+  statusLine.textContent = r.error ? r.error : !r.hit ? tr('no surface under the cursor')
     : `(${r.point.map(f).join(', ')}) · n (${r.normal.map(f).join(', ')}) · ` +
       `K ${f(r.K)} · H ${f(r.H)} · k1 ${f(r.k1)} · k2 ${f(r.k2)}`;
 }
@@ -595,7 +597,7 @@ function loadText(text, name) {
 async function loadFile(file) {
   if (!session) return;
   if (!/\.(surf|jsurf|pic)$/i.test(file.name)) {
-    showError(`${file.name}: zeroset opens .surf and .jsurf files`);
+    showError(trf('%s: zeroset opens .surf and .jsurf files', file.name));
     return;
   }
   loadText(await file.text(), file.name);
@@ -672,7 +674,7 @@ async function loadExampleAt(i) {
   const request = ++exampleRequest;
   const text = await fetchText(`examples/${ex.name}.surf`);
   if (request !== exampleRequest) return;  // a later pick won
-  if (text === null) { showError(`example ${ex.name}: not found`); return; }
+  if (text === null) { showError(trf('example %s: not found', ex.name)); return; }
   loadText(text, ex.name + '.surf');
 }
 
@@ -685,21 +687,45 @@ async function fetchText(url) {
   }
 }
 
+// The texts the page builds itself, in the current language: the keys' list, the gallery,
+// the language selector.
+function buildTexts() {
+  $('keys').replaceChildren();
+  for (const k of core.keys()) {
+    if (kiosk && !k.kiosk) continue;
+    const li = document.createElement('li');
+    li.textContent = `${k.key}: ${tr(k.description)}`;
+    $('keys').append(li);
+  }
+  buildGallery();
+  const select = $('language');
+  select.replaceChildren(...languages().map((l) => new Option(l.name, l.code, false, l.code === language())));
+  kiosk?.translate();
+}
+
+// A setting's label: its key ("tracing.epsilon", the name .surf files and --set use), or in
+// another language its words translated ("trazado · épsilon").
+function keyLabel(key) {
+  const words = key.split('.');
+  const shown = words.map((w) => tr(w.replace(/_/g, ' ')));
+  return shown.every((w, i) => w === words[i].replace(/_/g, ' ')) ? key : shown.join(' · ');
+}
+
 function buildGallery() {
   const list = $('gallery');
   list.replaceChildren();
   examples.forEach((ex, i) => {
     const li = document.createElement('li');
-    li.dataset.search = `${ex.name} ${ex.title} ${ex.formula}`.toLowerCase();
+    li.dataset.search = `${ex.name} ${ex.title} ${tr(ex.title)} ${ex.formula}`.toLowerCase();
     const b = document.createElement('button');
     b.type = 'button';
-    b.title = ex.title || ex.name;
+    b.title = ex.summary ? tr(ex.summary) : ex.name;
     const img = document.createElement('img');
     img.loading = 'lazy';
     img.alt = '';
     img.src = `examples/images/${ex.image}`;
     const caption = document.createElement('span');
-    caption.textContent = ex.title || ex.name;
+    caption.textContent = ex.title ? tr(ex.title) : ex.name;
     b.append(img, caption);
     b.addEventListener('click', () => loadExampleAt(i));
     li.append(b);
@@ -737,19 +763,19 @@ async function start() {
   renderer = new Renderer(canvas, { onRestored: () => { uploadedGeneration = -1; redraw(); } });
   core = await coreReady;
   session = new core.Session();
+  startLanguage(core, params);
   if (params.get('kiosk') === '1') {
     kiosk = startKiosk(core, params, formulaInput,
                        { edited: formulaEdited, submit: buildTypedFormula, idle: showStartScreen });
   }
-  for (const k of core.keys()) {
-    if (kiosk && !k.kiosk) continue;
-    const li = document.createElement('li');
-    li.textContent = `${k.key}: ${k.description}`;
-    $('keys').append(li);
-  }
   const index = await indexReady;
   examples = index ? JSON.parse(index) : [];
-  buildGallery();
+  buildTexts();
+  $('language').addEventListener('change', () => {
+    setLanguage($('language').value);
+    buildTexts();
+    if (session.prepared()) { buildParams(); buildSettings(); }
+  });
 
   // The URL's scene; where it does not load, its error above the default surface.
   let error = '';
@@ -757,13 +783,13 @@ async function start() {
     try {
       error = session.loadSurf(await decodeScene(params.get('scene')), 'shared scene');
     } catch {
-      error = 'scene: this share link is damaged (it does not decode); showing the default surface';
+      error = tr('scene: this share link is damaged (it does not decode); showing the default surface');
     }
   } else if (params.has('example')) {
     const name = params.get('example');
     const at = examples.findIndex((e) => e.name === name);
     const text = at >= 0 ? await exampleReady : null;
-    if (text === null) error = `example=${name}: no such example (the gallery lists them)`;
+    if (text === null) error = trf('example=%s: no such example (the gallery lists them)', name);
     else { currentExample = at; error = session.loadSurf(text, name + '.surf'); }
   } else if (params.has('formula')) {
     error = session.loadFormula(params.get('formula'));
@@ -832,4 +858,4 @@ window.zeroset = {
   },
 };
 
-start().catch((e) => { showError('zeroset could not start: ' + (e && e.message ? e.message : e)); });
+start().catch((e) => { showError(trf('zeroset could not start: %s', e && e.message ? e.message : e)); });

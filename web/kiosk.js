@@ -10,6 +10,8 @@
 // range), builds the keyboard and starts the idle clock. `keys` are the page's handlers:
 // edited() after a key changed the formula field, submit() for the draw key, idle() when
 // the start screen is due.
+import { tr } from './i18n.js';
+
 export function startKiosk(core, params, formulaInput, keys) {
   const defaults = core.kioskDefaults();
   const number = (name, fallback, lo, hi) => {
@@ -28,9 +30,7 @@ export function startKiosk(core, params, formulaInput, keys) {
       if (!key) { board.append(document.createElement('span')); continue; }
       const b = document.createElement('button');
       b.type = 'button';
-      b.textContent = key === '<-' ? '⌫' : key;
       b.dataset.key = key;
-      b.setAttribute('aria-label', key === '<-' ? 'delete' : key);
       b.addEventListener('click', () => {
         if (key === 'draw') { keys.submit(); return; }
         formulaInput.value = core.pressFormulaKey(formulaInput.value, key);
@@ -40,6 +40,17 @@ export function startKiosk(core, params, formulaInput, keys) {
     }
   }
   board.hidden = false;
+  // The word keys (draw, clear) and the delete key's name are translated; the rest are what
+  // they type.
+  const translate = () => {
+    for (const b of board.querySelectorAll('button')) {
+      const key = b.dataset.key;
+      const word = key === 'draw' || key === 'clear';
+      b.textContent = key === '<-' ? '⌫' : word ? tr(key) : key;
+      b.setAttribute('aria-label', key === '<-' ? tr('delete') : word ? tr(key) : key);
+    }
+  };
+  translate();
 
   let lastInput = performance.now();
   let leftStart = false;  // input since the start screen
@@ -60,6 +71,7 @@ export function startKiosk(core, params, formulaInput, keys) {
 
   return {
     policy,
+    translate,
     // '' or why the exhibit does not draw `formula`.
     refusal: (formula) => core.kioskRefusal(formula, policy.maxDegree),
   };

@@ -1,5 +1,6 @@
 // `zeroset view [SCENE|FORMULA] [--set KEY=VALUE]... [--output-dir DIR] [--drag-scale N]
-// [--log] [--kiosk [--kiosk-idle S] [--kiosk-max-degree N]]`: the interactive viewer
+// [--log] [--language CODE] [--kiosk [--kiosk-idle S] [--kiosk-max-degree N]]`: the
+// interactive viewer
 // (docs/viewer.md). Without an input it opens on the first example surface.
 #include <cstdio>
 #include <cstdlib>
@@ -10,6 +11,7 @@
 #include "app/commands.hpp"
 #include "app/scene_args.hpp"
 #include "app/viewer/viewer.hpp"
+#include "i18n/translate.hpp"
 
 namespace zs::app {
 namespace {
@@ -19,11 +21,13 @@ struct ViewArgs {
   std::string outputDir;
   int dragScale = 0;
   bool log = false;
+  std::string language;  // "" : from the environment (LANGUAGE, LC_ALL, LC_MESSAGES, LANG)
   bool kiosk = false;
   interact::KioskPolicy kioskPolicy;
 };
 
 int runView(const ViewArgs& args) {
+  i18n::setLanguage(args.language.empty() ? i18n::languageFromEnvironment() : args.language);
   ViewerOptions options;
   if (args.scene.input.empty()) {
     std::vector<Example> examples = listExamples(findExamplesDir());
@@ -73,6 +77,14 @@ void addViewCommand(CLI::App& app) {
                   "resolution divisor while dragging (default: adaptive, ~30 fps)")
       ->check(CLI::Range(1, 8));
   cmd->add_flag("--log", args->log, "print events (ready, builds, key actions) on stdout");
+  std::string codes;
+  for (const i18n::Language& l : i18n::languages()) codes += (codes.empty() ? "" : ", ") + std::string(l.code);
+  cmd->add_option("--language", args->language,
+                  "language of the viewer's texts: " + codes +
+                      " (default: from LANGUAGE, LC_ALL, LC_MESSAGES or LANG, else en)")
+      ->check([](const std::string& code) {
+        return i18n::knownLanguage(code).empty() ? "no translation for '" + code + "'" : "";
+      });
   auto* kiosk = cmd->add_flag("--kiosk", args->kiosk,
                               "exhibit mode: fullscreen, gallery start screen, no quit key, "
                               "no files written, formula keyboard (docs/viewer.md)");

@@ -8,6 +8,7 @@
 #include "expr/degree.hpp"
 #include "parser/parser.hpp"
 #include "scene/scene_io.hpp"
+#include "i18n/translate.hpp"
 #include "scene/description.hpp"
 
 namespace zs::app {
@@ -25,7 +26,7 @@ GalleryEntry describeExample(const Example& example) {
   GalleryEntry entry;
   entry.name = example.name;
   if (example.file.empty()) {
-    entry.description = "Built in: thesis Table 5.1, with the thesis' best settings.";
+    entry.description = N_("Built in: thesis Table 5.1, with the thesis' best settings.");
   } else {
     std::ifstream in(example.file, std::ios::binary);
     std::ostringstream text;
@@ -52,7 +53,7 @@ GalleryEntry describeExample(const Example& example) {
       entry.degree = degree ? std::to_string(*degree) : "-";
     }
   } else {
-    entry.summary = "(does not load: run zeroset render on it to see why)";
+    entry.summary = N_("(does not load: run zeroset render on it to see why)");
   }
   return entry;
 }

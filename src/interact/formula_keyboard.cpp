@@ -1,4 +1,5 @@
 #include "interact/formula_keyboard.hpp"
+#include "i18n/translate.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -10,9 +11,9 @@ namespace {
 // starts.
 constexpr FormulaKeyRows kRows{{
     {"x", "y", "z", "a", "^2", "^", "(", ")", "<-"},
-    {"7", "8", "9", "+", "-", "sin", "cos", "sqrt", "clear"},
+    {"7", "8", "9", "+", "-", "sin", "cos", "sqrt", N_("clear")},
     {"4", "5", "6", "*", "/", "exp", "abs", "pi", ""},
-    {"1", "2", "3", "0", ".", "b", "c", "e", "draw"},
+    {"1", "2", "3", "0", ".", "b", "c", "e", N_("draw")},
 }};
 
 constexpr std::array<std::string_view, 8> kFunctions{"sin", "cos", "tan", "sqrt", "exp",

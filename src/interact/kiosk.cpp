@@ -3,6 +3,7 @@
 #include <variant>
 
 #include "expr/degree.hpp"
+#include "i18n/translate.hpp"
 #include "parser/parser.hpp"
 
 namespace zs::interact {
@@ -30,8 +31,10 @@ std::string kioskRefusal(std::string_view formula, const KioskPolicy& policy) {
 std::string kioskRefusal(const Formula& f, const KioskPolicy& policy) {
   const std::optional<int> degree = polynomialDegree(f.graph, f.root);
   if (!degree || *degree <= policy.maxDegree) return "";
-  return "degree " + std::to_string(*degree) + " is more than this exhibit draws (at most " +
-         std::to_string(policy.maxDegree) + "): try a formula of lower degree";
+  return i18n::format(
+      i18n::tr("degree %d is more than this exhibit draws (at most %d): try a formula of lower "
+               "degree"),
+      *degree, policy.maxDegree);
 }
 
 }  // namespace zs::interact

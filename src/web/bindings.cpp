@@ -4,6 +4,7 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include "i18n/translate.hpp"
 #include "interact/formula_keyboard.hpp"
 #include "interact/kiosk.hpp"
 #include "interact/parameter_range.hpp"
@@ -248,6 +249,22 @@ std::string pressFormulaKeyJs(const std::string& text, const std::string& key) {
   return interact::pressFormulaKey(text, key);
 }
 
+// The page's language (i18n/translate.hpp): the same catalogs as the viewer's; the core's
+// own messages (kiosk refusals, key effects) follow it too.
+val languagesJs() {
+  return arrayOf(i18n::languages(), [](const i18n::Language& l) {
+    val out = val::object();
+    out.set("code", std::string(l.code));
+    out.set("name", std::string(l.name));
+    return out;
+  });
+}
+
+std::string translateJs(const std::string& text) { return i18n::tr(text); }
+bool setLanguageJs(const std::string& tag) { return i18n::setLanguage(tag); }
+std::string currentLanguageJs() { return std::string(i18n::currentLanguage()); }
+std::string knownLanguageJs(const std::string& tag) { return i18n::knownLanguage(tag); }
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(zeroset) {
@@ -257,6 +274,11 @@ EMSCRIPTEN_BINDINGS(zeroset) {
   emscripten::function("kioskRefusal", &kioskRefusalJs);
   emscripten::function("formulaKeyRows", &formulaKeyRowsJs);
   emscripten::function("pressFormulaKey", &pressFormulaKeyJs);
+  emscripten::function("languages", &languagesJs);
+  emscripten::function("translate", &translateJs);
+  emscripten::function("setLanguage", &setLanguageJs);
+  emscripten::function("currentLanguage", &currentLanguageJs);
+  emscripten::function("knownLanguage", &knownLanguageJs);
   emscripten::class_<WebSession>("Session")
       .constructor<>()
       // embind passes std::string, not std::string_view

@@ -23,7 +23,10 @@ ViewerSession::ViewerSession(const std::string& name, const std::vector<std::str
   std::vector<std::string> argv{ZS_ZEROSET_EXE, "view"};
   argv.insert(argv.end(), args.begin(), args.end());
   argv.insert(argv.end(), {"--log", "--output-dir", dir_.string()});
-  child_ = std::make_unique<Child>(argv, env, Stdio::File, logFile_);
+  // English whatever the machine's locale, unless the test asks for a language.
+  std::vector<EnvChange> environment{{"LANGUAGE", "en"}};
+  environment.insert(environment.end(), env.begin(), env.end());
+  child_ = std::make_unique<Child>(argv, environment, Stdio::File, logFile_);
   if (waitLog("ready ").empty()) {
     error_ = "the viewer never showed its first frame; log:\n" + log();
     return;

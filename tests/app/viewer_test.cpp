@@ -346,5 +346,18 @@ TEST(Viewer, KioskKeepsTheExhibitRunningAndReturnsToTheStartWhenIdle) {
   ASSERT_FALSE(v.waitLog("built x^2 + y^2 + z^2 - 1").empty()) << v.log();
 }
 
+// The viewer in the language the environment asks for (docs/languages.md): the kiosk's
+// refusal and a key's effect are the core's messages, translated by the same catalogs.
+TEST(Viewer, SpeaksTheLanguageTheEnvironmentAsksFor) {
+  ViewerSession v("german", {"x^2 + y^2 + z^2 - 1", "--kiosk", "--kiosk-max-degree", "4"},
+                  {{"LANGUAGE", ""}, {"LC_ALL", ""}, {"LC_MESSAGES", ""}, {"LANG", "de_DE.UTF-8"}});
+  START(v);
+  v.click(500, 300);
+  v.key("f");
+  v.key("ctrl+a");
+  v.type("x^6 + y - 1");
+  ASSERT_FALSE(v.waitLog("refused: Grad 6").empty()) << v.log();
+}
+
 }  // namespace
 }  // namespace zs::test

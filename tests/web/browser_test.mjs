@@ -57,9 +57,10 @@ const browser = await chromium.launch({
   args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox'],
 });
 const problems = [];
-async function openPage(query, { touch = false } = {}) {
+// The browser speaks `locale` (navigator.languages), English unless a case asks otherwise.
+async function openPage(query, { touch = false, locale = 'en-US' } = {}) {
   const context = await browser.newContext({ viewport: { width: 1000, height: 700 },
-    deviceScaleFactor: 1, hasTouch: touch });
+    deviceScaleFactor: 1, hasTouch: touch, locale });
   const page = await context.newPage();
   page.on('console', (m) => { if (m.type() === 'error') problems.push(`console error: ${m.text()}`); });
   page.on('pageerror', (e) => problems.push(`uncaught exception: ${e.message}`));
@@ -540,6 +541,64 @@ cases['drop-surf-loads'] = async () => {
   const formula = await page.inputValue('#formula');
   check(formula === await page.evaluate(() => window.zeroset.session.formula()) && /x\^2/.test(formula) && formula !== 'x^2 + y^2 + z^2 - 1',
         `the dropped torus did not load (formula ${formula})`);
+};
+
+// The page's languages (docs/languages.md): the browser's language picks Spanish, lang=
+// overrides it, the menu switches to German and back, and the core's own messages (the
+// kiosk's refusal) and the keyboard's words follow. Expected texts come from po/*.po.
+function catalog(code) {
+  const messages = new Map();
+  const text = fs.readFileSync(path.join(sourceDir, 'po', `${code}.po`), 'utf8');
+  const unquote = (s) => JSON.parse(s);
+  for (const m of text.matchAll(/^msgid (".*")\nmsgstr (".*")$/gm)) messages.set(unquote(m[1]), unquote(m[2]));
+  return (english) => {
+    if (!messages.get(english)) throw new Error(`po/${code}.po has no translation of "${english}"`);
+    return messages.get(english);
+  };
+}
+cases['languages'] = async () => {
+  const es = catalog('es'), de = catalog('de');
+  const texts = (page) => page.evaluate(() => ({
+    lang: document.documentElement.lang,
+    gallery: document.querySelector('#gallery-panel summary').textContent,
+    reset: document.getElementById('reset').textContent,
+    search: document.getElementById('gallery-search').placeholder,
+    epsilon: document.querySelector('label[for="set-tracing-epsilon"]').textContent,
+    caption: document.querySelector('#gallery li span').textContent,
+  }));
+  const page = await openPage(`size=${SIZE[0]}x${SIZE[1]}`, { locale: 'es-ES' });
+  await settled(page);
+  let t = await texts(page);
+  check(t.lang === 'es', `the Spanish browser got "${t.lang}"`);
+  check(t.gallery === es('Gallery') && t.reset === es('Reset view') &&
+        t.search === es('search the gallery'), `not in Spanish: ${JSON.stringify(t)}`);
+  check(t.epsilon === `${es('tracing')} · ${es('epsilon')}`, `the epsilon label reads "${t.epsilon}"`);
+  const gallery = JSON.parse(fs.readFileSync(path.join(site, 'examples', 'index.json'), 'utf8'));
+  check(t.caption === es(gallery[0].title), `the gallery's first title reads "${t.caption}"`);
+
+  await page.selectOption('#language', 'de');
+  t = await texts(page);
+  check(t.lang === 'de' && t.gallery === de('Gallery') && t.reset === de('Reset view') &&
+        t.epsilon === `${de('tracing')} · ${de('epsilon')}`, `not in German: ${JSON.stringify(t)}`);
+  await page.selectOption('#language', 'en');
+  t = await texts(page);
+  check(t.gallery === 'Gallery' && t.epsilon === 'tracing.epsilon' && t.caption === gallery[0].title,
+        `not back in English: ${JSON.stringify(t)}`);
+
+  // lang= overrides the browser's Spanish.
+  const kiosk = await openPage(`kiosk=1&max-degree=4&lang=de&size=${SIZE[0]}x${SIZE[1]}`,
+                               { touch: true, locale: 'es-ES' });
+  await settled(kiosk);
+  check((await texts(kiosk)).gallery === de('Gallery'), 'lang=de does not override the browser');
+  const draw = await kiosk.textContent('#formula-keyboard [data-key="draw"]');
+  check(draw === de('draw'), `the draw key reads "${draw}"`);
+  for (const key of ['clear', 'x', '^', '6', '+', 'y'])
+    await kiosk.locator(`#formula-keyboard [data-key="${key}"]`).tap();
+  await kiosk.waitForFunction(() => document.documentElement.dataset.zeroset === 'error');
+  const refusal = await kiosk.textContent('#zeroset-error');
+  const wanted = de('degree %d is more than this exhibit draws (at most %d): try a formula of lower degree')
+    .replace('%d', '6').replace('%d', '4');
+  check(refusal.includes(wanted), `the refusal is not German: ${refusal}`);
 };
 
 // Cases that share one browser in test.sh (a browser's start is a second of a short case).

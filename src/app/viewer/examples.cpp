@@ -13,6 +13,7 @@
 #include <system_error>
 #include <variant>
 
+#include "i18n/translate.hpp"
 #include "scene/scene_io.hpp"
 
 namespace zs::app {
@@ -27,13 +28,13 @@ struct BuiltIn {
 
 // Thesis Table 5.1, in its order and with its names.
 constexpr std::array<BuiltIn, 7> kThesisSurfaces{{
-    {"1 cross channel", "x^2 + z^2 - y"},
-    {"2 Cayley cubic", "x^2*y + x^2*z + y^2*x + y^2*z + z^2*y + z^2*x - (2/5)*(x*y + x*z + y*z)"},
-    {"3 cuboid", "x^4 + y^4 + z^4 - 1"},
-    {"4 peninsula", "x^2 + y^3 + z^5 - 1"},
-    {"5 Klein quartic", "x^3*y + y^3*z + z^3*x"},
-    {"6 quartic saddle", "x^4 - z^4 - y"},
-    {"7 fitting surface", "x^2*y^2 + y^2*z^2 + z^2*x^2 - 1"},
+    {N_("1 cross channel"), "x^2 + z^2 - y"},
+    {N_("2 Cayley cubic"), "x^2*y + x^2*z + y^2*x + y^2*z + z^2*y + z^2*x - (2/5)*(x*y + x*z + y*z)"},
+    {N_("3 cuboid"), "x^4 + y^4 + z^4 - 1"},
+    {N_("4 peninsula"), "x^2 + y^3 + z^5 - 1"},
+    {N_("5 Klein quartic"), "x^3*y + y^3*z + z^3*x"},
+    {N_("6 quartic saddle"), "x^4 - z^4 - y"},
+    {N_("7 fitting surface"), "x^2*y^2 + y^2*z^2 + z^2*x^2 - 1"},
 }};
 
 bool isDir(const fs::path& p) {
@@ -103,6 +104,10 @@ std::variant<Scene, std::string> loadExample(const Example& example) {
   scene.render.tracing.intervals = 10;
   scene.render.tracing.epsilon = 0.01;
   return scene;
+}
+
+std::string exampleLabel(int index, int count, const std::string& name) {
+  return i18n::format(i18n::tr("%d of %d: %s"), index + 1, count, i18n::tr(name.c_str()));
 }
 
 }  // namespace zs::app

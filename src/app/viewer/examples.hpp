@@ -30,4 +30,7 @@ std::vector<Example> listExamples(const std::filesystem::path& examplesDir);
 // built-in, its formula with the thesis settings.
 std::variant<Scene, std::string> loadExample(const Example& example);
 
+// "3 of 12: name" in the current language, as the panel shows the example being looked at.
+std::string exampleLabel(int index, int count, const std::string& name);
+
 }  // namespace zs::app

@@ -1,3 +1,4 @@
+#include "i18n/translate.hpp"
 #include "app/viewer/formula_keyboard.hpp"
 
 #include <imgui.h>
@@ -41,7 +42,7 @@ void drawFormulaKeyboard(PanelState& state, PanelResult& result) {
   constexpr ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration |
                                      ImGuiWindowFlags_AlwaysAutoResize |
                                      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings;
-  if (ImGui::Begin("formula keyboard", nullptr, flags)) {
+  if (ImGui::Begin(i18n::label("formula keyboard"), nullptr, flags)) {
     for (const auto& row : interact::formulaKeyRows()) {
       for (std::size_t i = 0; i < row.size(); ++i) {
         if (i > 0) ImGui::SameLine();
@@ -50,7 +51,10 @@ void drawFormulaKeyboard(PanelState& state, PanelResult& result) {
           ImGui::Dummy(ImVec2(l.key, l.key));
           continue;
         }
-        if (!ImGui::Button(label.c_str(), ImVec2(l.key, l.key))) continue;
+        // The two word keys are shown translated; the rest are what they type.
+        const bool word = label == "draw" || label == "clear";
+        if (!ImGui::Button(word ? i18n::label(label.c_str()) : label.c_str(), ImVec2(l.key, l.key)))
+          continue;
         if (label == "draw") {
           result.formulaSubmitted = true;
           continue;

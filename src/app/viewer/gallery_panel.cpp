@@ -1,3 +1,4 @@
+#include "i18n/translate.hpp"
 #include "app/viewer/gallery_panel.hpp"
 
 #include <imgui.h>
@@ -17,13 +18,13 @@ int drawGallery(GalleryPanel& g, int current) {
       ImVec2(340, std::max(120.0f, std::min(display.y - 16, display.y * 0.6f))),
       ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.85f);
-  if (ImGui::Begin("gallery", &g.visible)) {
+  if (ImGui::Begin(i18n::label("gallery"), &g.visible)) {
     if (g.focusSearch) {
       ImGui::SetKeyboardFocusHere();
       g.focusSearch = false;
     }
     ImGui::SetNextItemWidth(-1);
-    const bool enter = ImGui::InputTextWithHint("##search", "search: name or description",
+    const bool enter = ImGui::InputTextWithHint("##search", i18n::tr("search: name or description"),
                                                 &g.search, ImGuiInputTextFlags_EnterReturnsTrue);
     int firstMatch = -1;
     ImGui::BeginChild("entries");
@@ -41,7 +42,8 @@ int drawGallery(GalleryPanel& g, int current) {
         ImGui::SameLine();
       }
       ImGui::BeginGroup();
-      const std::string label = e.name + "   degree " + e.degree;
+      const std::string label =
+          std::string(i18n::tr(e.name.c_str())) + "   " + i18n::format(i18n::tr("degree %s"), e.degree.c_str());
       if (ImGui::Selectable(label.c_str(), static_cast<int>(i) == current))
         picked = static_cast<int>(i);
       if (ImGui::IsItemHovered() && !e.description.empty()) {
@@ -52,12 +54,13 @@ int drawGallery(GalleryPanel& g, int current) {
         ImGui::EndTooltip();
       }
       ImGui::PushTextWrapPos(0);
-      ImGui::TextDisabled("%s", e.summary.empty() ? "(no description)" : e.summary.c_str());
+      ImGui::TextDisabled("%s", e.summary.empty() ? i18n::tr("(no description)")
+                                                  : i18n::tr(e.summary.c_str()));
       ImGui::PopTextWrapPos();
       ImGui::EndGroup();
       ImGui::PopID();
     }
-    if (firstMatch < 0) ImGui::TextDisabled("no example matches");
+    if (firstMatch < 0) ImGui::TextDisabled("%s", i18n::tr("no example matches"));
     ImGui::EndChild();
     if (enter && firstMatch >= 0) picked = firstMatch;
     // Give the keyboard back to the viewer, so N/P go on from the pick.

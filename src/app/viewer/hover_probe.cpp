@@ -1,3 +1,4 @@
+#include "i18n/translate.hpp"
 #include "app/viewer/hover_probe.hpp"
 
 #include <imgui.h>
@@ -57,8 +58,8 @@ void HoverProbe::draw() const {
   if (!shown_) return;
   const ProbeResult& r = *shown_;
   ImGui::BeginTooltip();
-  ImGui::Text("point  %.5g, %.5g, %.5g", r.point[0], r.point[1], r.point[2]);
-  ImGui::Text("normal %.4f, %.4f, %.4f", r.normal[0], r.normal[1], r.normal[2]);
+  ImGui::Text(i18n::tr("point  %.5g, %.5g, %.5g"), r.point[0], r.point[1], r.point[2]);
+  ImGui::Text(i18n::tr("normal %.4f, %.4f, %.4f"), r.normal[0], r.normal[1], r.normal[2]);
   ImGui::Text("|grad F| %.5g", std::hypot(r.gradient[0], r.gradient[1], r.gradient[2]));
   ImGui::Text("K %.5g   H %.5g", r.gaussian, r.mean);
   ImGui::Text("k1 %.5g   k2 %.5g", r.k1, r.k2);

@@ -13,6 +13,7 @@
 #include <variant>
 
 #include "app/viewer/fonts.hpp"
+#include "i18n/translate.hpp"
 #include "interact/key_bindings.hpp"
 #include "parser/parser.hpp"
 #include "scene/scene_io.hpp"
@@ -64,7 +65,7 @@ constexpr double kSweepSeconds = 4.0;
 void drawParams(Scene& scene, PanelState& state, PanelResult& result) {
   if (state.paramNames.empty()) return;
   ImGui::Separator();
-  ImGui::TextUnformatted("parameters");
+  ImGui::TextUnformatted(i18n::tr("parameters"));
   state.playing.resize(state.paramNames.size(), 0);
   for (std::size_t i = 0; i < state.paramNames.size(); ++i) {
     const std::string& name = state.paramNames[i];
@@ -74,7 +75,8 @@ void drawParams(Scene& scene, PanelState& state, PanelResult& result) {
     int& playing = state.playing[i];
     if (ImGui::Button(playing != 0 ? "||" : ">")) playing = playing != 0 ? 0 : 1;
     if (ImGui::IsItemHovered())
-      ImGui::SetTooltip(playing != 0 ? "stop" : "play: sweep %s back and forth", name.c_str());
+      ImGui::SetTooltip(playing != 0 ? i18n::tr("stop") : i18n::tr("play: sweep %s back and forth"),
+                        name.c_str());
     ImGui::PopID();
     ImGui::SameLine();
     if (playing != 0) {
@@ -89,14 +91,15 @@ void drawParams(Scene& scene, PanelState& state, PanelResult& result) {
 
 void drawStats(const PanelStats& s) {
   ImGui::Separator();
-  ImGui::Text("%.1f fps, frame %.1f ms", s.fps, s.frameMs);
-  ImGui::Text("trace %.1f ms at %dx%d%s", s.traceMs, s.width / std::max(1, s.traceScale),
-              s.height / std::max(1, s.traceScale), s.traceScale > 1 ? " (reduced)" : "");
-  ImGui::Text("build %.0f ms: %zu leaves, %zu boxes%s", s.buildMs, s.leaves, s.nodes,
-              s.building ? " (building...)" : "");
-  if (s.singularPoints >= 0) ImGui::Text("%d certified singular points", s.singularPoints);
-  if (!s.example.empty()) ImGui::Text("example %s", s.example.c_str());
-  if (!s.status.empty() && s.status.rfind("example ", 0) != 0)
+  ImGui::Text(i18n::tr("%.1f fps, frame %.1f ms"), s.fps, s.frameMs);
+  ImGui::Text(i18n::tr("trace %.1f ms at %dx%d%s"), s.traceMs, s.width / std::max(1, s.traceScale),
+              s.height / std::max(1, s.traceScale), s.traceScale > 1 ? i18n::tr(" (reduced)") : "");
+  ImGui::Text(i18n::tr("build %.0f ms: %zu leaves, %zu boxes%s"), s.buildMs, s.leaves, s.nodes,
+              s.building ? i18n::tr(" (building...)") : "");
+  if (s.singularPoints >= 0)
+    ImGui::Text(i18n::tr("%d certified singular points"), s.singularPoints);
+  if (!s.example.empty()) ImGui::Text(i18n::tr("example %s"), s.example.c_str());
+  if (!s.status.empty())
     ImGui::TextWrapped("%s", s.status.c_str());
 }
 
@@ -105,7 +108,8 @@ void drawStats(const PanelStats& s) {
 void drawLegend(const PanelStats& s) {
   if (s.curvatureRange <= 0) return;
   ImGui::Separator();
-  ImGui::Text("%s curvature (oriented by grad F)", s.gaussian ? "Gaussian" : "mean");
+  ImGui::TextUnformatted(s.gaussian ? i18n::tr("Gaussian curvature (oriented by grad F)")
+                                    : i18n::tr("mean curvature (oriented by grad F)"));
   const ImVec2 at = ImGui::GetCursorScreenPos();
   const float width = ImGui::GetContentRegionAvail().x, height = ImGui::GetFontSize();
   const ImU32 blue = IM_COL32(38, 77, 217, 255), white = IM_COL32(245, 245, 245, 255),
@@ -130,21 +134,46 @@ void drawLegend(const PanelStats& s) {
 void drawExports(PanelState& state, PanelResult& result) {
   ImGui::Separator();
   ImGui::SetNextItemWidth(120);
-  ImGui::SliderInt("mesh level", &state.meshLevel, 3, 10);
+  ImGui::SliderInt(i18n::label("mesh level"), &state.meshLevel, 3, 10);
   ImGui::SameLine();
-  ImGui::Checkbox("cap", &state.meshCap);
-  ImGui::SameLine();
-  if (ImGui::Button("Export mesh (M)")) result.exportMesh = true;
-  if (ImGui::Button("Print page (Ctrl+P)")) result.printPage = true;
+  ImGui::Checkbox(i18n::label("cap"), &state.meshCap);
+  // The buttons share a line where their texts (longer in some languages) fit.
+  if (ImGui::Button(i18n::label("Export mesh (M)"))) result.exportMesh = true;
+  const char* print = i18n::label("Print page (Ctrl+P)");
+  const float printWidth =
+      ImGui::CalcTextSize(print, nullptr, true).x + 2 * ImGui::GetStyle().FramePadding.x;
+  if (printWidth + ImGui::GetStyle().ItemSpacing.x <= ImGui::GetContentRegionAvail().x -
+                                                         ImGui::GetItemRectSize().x)
+    ImGui::SameLine();
+  if (ImGui::Button(print)) result.printPage = true;
+}
+
+// The language of every text of the viewer; the choice holds until the viewer closes.
+void drawLanguage() {
+  const auto all = i18n::languages();
+  int current = 0;
+  std::string items;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (all[i].code == i18n::currentLanguage()) current = int(i);
+    (items += all[i].name) += '\0';
+  }
+  if (ImGui::Combo(i18n::label("language"), &current, items.c_str()))
+    i18n::setLanguage(all[std::size_t(current)].code);
 }
 
 void drawKeys(bool kiosk) {
-  if (!ImGui::CollapsingHeader("keys and mouse")) return;
-  ImGui::TextUnformatted("left drag    rotate (arcball)");
-  ImGui::TextUnformatted("wheel        zoom");
-  ImGui::TextUnformatted("right drag   turn the key light");
+  if (!ImGui::CollapsingHeader(i18n::label("keys and mouse"))) return;
+  // Two columns: what to press, what it does (key names are the keyboard's, not translated).
+  auto row = [](const char* what, const char* does) {
+    ImGui::TextUnformatted(what);
+    ImGui::SameLine(ImGui::GetFontSize() * 7);
+    ImGui::TextUnformatted(does);
+  };
+  row(i18n::tr("left drag"), i18n::tr("rotate (arcball)"));
+  row(i18n::tr("wheel"), i18n::tr("zoom"));
+  row(i18n::tr("right drag"), i18n::tr("turn the key light"));
   for (const KeyBinding& b : keyBindings()) {
-    if (!kiosk || kioskAllows(b.action)) ImGui::Text("%-12s %s", b.keyName, b.description);
+    if (!kiosk || kioskAllows(b.action)) row(b.keyName, i18n::tr(b.description));
   }
 }
 
@@ -188,7 +217,7 @@ PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats) 
     drawFormula(state, result);
     drawParams(scene, state, result);
     // surface.level: the surface drawn is F = level (a level set of F).
-    ImGui::DragScalar("level", ImGuiDataType_Double, &scene.level, 0.01f, nullptr, nullptr,
+    ImGui::DragScalar(i18n::label("level"), ImGuiDataType_Double, &scene.level, 0.01f, nullptr, nullptr,
                       "%.4g");
     result.sliderActive = result.sliderActive || ImGui::IsItemActive();
     drawStats(stats);
@@ -196,6 +225,7 @@ PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats) 
     if (!state.kiosk) drawExports(state, result);
     drawSettings(scene);
     drawKeys(state.kiosk.has_value());
+    drawLanguage();
   }
   ImGui::End();
   result.sliderActive = ImGui::IsAnyItemActive() && !ImGui::GetIO().WantTextInput;

@@ -74,9 +74,8 @@ std::unique_ptr<Viewer> Viewer::open(const ViewerOptions& options, std::string& 
   v->sceneFile_ = options.sceneFile;
   if (options.exampleIndex >= 0 && std::size_t(options.exampleIndex) < v->examples_.size()) {
     v->exampleIndex_ = options.exampleIndex;
-    v->startLabel_ = std::to_string(options.exampleIndex + 1) + " of " +
-                     std::to_string(v->examples_.size()) + ": " +
-                     v->examples_[std::size_t(options.exampleIndex)].name;
+    v->startLabel_ = exampleLabel(options.exampleIndex, int(v->examples_.size()),
+                                  v->examples_[std::size_t(options.exampleIndex)].name);
     v->stats_.example = v->startLabel_;
   }
   if (options.kiosk) {

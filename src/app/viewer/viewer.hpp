@@ -131,7 +131,13 @@ class Viewer {
   void startPrint();
   void finishPrint();
   // A finished file job (mesh, print): its message in the status line and on stdout.
-  void finishFileJob(std::future<std::string>& job);
+  // What a finished export or print says: the whole text for stdout (English, as the CLI's)
+  // and one line for the panel, in the viewer's language.
+  struct FileJobResult {
+    std::string log;
+    std::string status;
+  };
+  void finishFileJob(std::future<FileJobResult>& job);
 
   ViewerOptions options_;
   std::unique_ptr<GlfwWindowContext> window_;
@@ -199,8 +205,8 @@ class Viewer {
   std::string startLabel_;               // the start scene's example label, if it is one
   std::chrono::steady_clock::time_point lastInput_ = std::chrono::steady_clock::now();
   bool inputSinceStart_ = false;         // kiosk: the start screen was left
-  std::future<std::string> meshExport_;  // a running export's summary
-  std::future<std::string> print_;       // a running print's message
+  std::future<FileJobResult> meshExport_;  // a running export's summary
+  std::future<FileJobResult> print_;       // a running print's message
 };
 
 }  // namespace zs::app

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "i18n/translate.hpp"
 #include "app/repl/scene_edit.hpp"
 #include "app/viewer/viewer.hpp"
 #include "parser/parser.hpp"
@@ -147,7 +148,7 @@ void Viewer::takeBuild() {
     scene_.domain = built_.domain;
     scene_.octree = built_.octree;
     panel_.formulaError = error;
-    stats_.status = "build failed; showing the last good surface";
+    stats_.status = i18n::tr("build failed; showing the last good surface");
   }
   if (options_.log) {
     std::printf(error.empty() ? "built %s\n" : "build failed %s\n", result->scene.formula.c_str());

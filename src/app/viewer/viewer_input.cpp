@@ -8,6 +8,7 @@
 
 #include "interact/arcball.hpp"
 #include "render/camera.hpp"
+#include "i18n/translate.hpp"
 #include "app/viewer/viewer.hpp"
 
 namespace zs::app {
@@ -216,13 +217,11 @@ void Viewer::showExampleAt(int index) {
     stats_.status = *err;
     return;
   }
-  const std::string label = std::to_string(exampleIndex_ + 1) + " of " + std::to_string(n) +
-                            ": " + example.name;
-  setScene(std::get<Scene>(loaded), label);
+  setScene(std::get<Scene>(loaded), exampleLabel(exampleIndex_, n, example.name));
   sceneFile_ = example.file;
-  stats_.status = "example " + label;
+  stats_.status.clear();  // the panel shows the example's label
   if (options_.log) {
-    std::printf("%s\n", stats_.status.c_str());
+    std::printf("example %d of %d: %s\n", exampleIndex_ + 1, n, example.name.c_str());
     std::fflush(stdout);
   }
 }
@@ -230,9 +229,10 @@ void Viewer::showExampleAt(int index) {
 void Viewer::runAction(Action action) {
   std::string message;
   if (options_.kiosk && !kioskAllows(action)) {
-    stats_.status = "not available in this exhibit";
+    const char* refused = N_("not available in this exhibit");
+    stats_.status = i18n::tr(refused);
     if (options_.log) {
-      std::printf("%s\n", stats_.status.c_str());
+      std::printf("%s\n", refused);
       std::fflush(stdout);
     }
     return;
@@ -254,7 +254,7 @@ void Viewer::runAction(Action action) {
     case Action::ResetView:
       scene_.render.camera = loaded_.render.camera;
       scene_.render.lights = loaded_.render.lights;
-      stats_.status = "view reset";
+      stats_.status = i18n::tr("view reset");
       dirty_ = true;
       break;
     case Action::Quit: glfwSetWindowShouldClose(window_->window(), GLFW_TRUE); break;

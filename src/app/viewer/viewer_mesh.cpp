@@ -9,12 +9,13 @@
 #include "app/mesh_export.hpp"
 #include "app/repl/scene_edit.hpp"
 #include "app/viewer/viewer.hpp"
+#include "i18n/translate.hpp"
 
 namespace zs::app {
 
 void Viewer::startMeshExport() {
   if (meshExport_.valid()) {
-    stats_.status = "a mesh export is still running";
+    stats_.status = i18n::tr("a mesh export is still running");
     return;
   }
   std::filesystem::path dir = options_.outputDir;
@@ -28,24 +29,26 @@ void Viewer::startMeshExport() {
   request.settings.level = panel_.meshLevel;
   request.settings.cap = panel_.meshCap;
   request.output = nextFreePath(dir, stem + "-level" + std::to_string(request.settings.level), ".stl").string();
-  stats_.status = "exporting a mesh at level " + std::to_string(request.settings.level) + "...";
+  stats_.status = i18n::format(i18n::tr("exporting a mesh at level %d..."), request.settings.level);
   meshExport_ = std::async(std::launch::async, [scene = scene_, request] {
     MeshExportReport report;
-    std::string text = exportMesh(scene, request, report);
-    if (text.empty()) text = meshSummary(report, request.output);
+    const std::string error = exportMesh(scene, request, report);
     glfwPostEmptyEvent();  // wake the loop to show it
-    return text;
+    if (!error.empty())
+      return FileJobResult{error, i18n::format(i18n::tr("error: %s"), error.c_str())};
+    return FileJobResult{meshSummary(report, request.output),
+                         i18n::format(i18n::tr("mesh written: %s"), request.output.c_str())};
   });
 }
 
 void Viewer::finishMeshExport() { finishFileJob(meshExport_); }
 
-void Viewer::finishFileJob(std::future<std::string>& job) {
+void Viewer::finishFileJob(std::future<FileJobResult>& job) {
   if (!job.valid() || job.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
-  const std::string text = job.get();
-  stats_.status = text.substr(0, text.find('\n'));
+  const FileJobResult result = job.get();
+  stats_.status = result.status.substr(0, result.status.find('\n'));
   uiFrames_ = 3;
-  std::fputs(text.c_str(), stdout);
+  std::fputs(result.log.c_str(), stdout);
   std::fflush(stdout);
 }
 

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "i18n/translate.hpp"
 #include "app/repl/scene_edit.hpp"
 #include "app/viewer/viewer.hpp"
 #include "render/image.hpp"
@@ -118,7 +119,9 @@ std::string Viewer::screenshot(const std::filesystem::path& path) {
   } else {
     text = "screenshot: " + path.string() + "\n";
   }
-  stats_.status = text;
+  stats_.status = text.rfind("error: ", 0) == 0
+                      ? i18n::format(i18n::tr("error: %s"), text.substr(7).c_str())
+                      : i18n::format(i18n::tr("screenshot: %s"), path.c_str());
   return text;
 }
 
@@ -135,8 +138,9 @@ void Viewer::captureWindow(int width, int height) {
     std::memcpy(&image.rgba[std::size_t(y) * stride], &rows[std::size_t(height - 1 - y) * stride], stride);
   const std::filesystem::path path = nextFreePath(options_.outputDir, "zeroset-window", ".png");
   const std::string err = writePng(path.string(), image);
-  stats_.status = err.empty() ? "window: " + path.string() : "error: " + err;
-  std::printf("%s\n", stats_.status.c_str());
+  stats_.status = err.empty() ? i18n::format(i18n::tr("window: %s"), path.c_str())
+                              : i18n::format(i18n::tr("error: %s"), err.c_str());
+  std::printf("%s\n", err.empty() ? ("window: " + path.string()).c_str() : ("error: " + err).c_str());
   std::fflush(stdout);
 }
 
@@ -145,8 +149,9 @@ std::string Viewer::save(const std::filesystem::path& path) {
   Scene saved = scene_;
   window_->framebufferSize(saved.width, saved.height);
   std::string text = writeSceneFile(path, saved);
+  stats_.status = text.empty() ? i18n::format(i18n::tr("saved: %s"), path.c_str())
+                               : i18n::format(i18n::tr("error: %s"), text.c_str());
   if (text.empty()) text = "saved: " + path.string() + "\n";
-  stats_.status = text;
   return text;
 }
 

@@ -4,6 +4,7 @@
 // "printed: PATH".
 #include <GLFW/glfw3.h>
 
+#include "i18n/translate.hpp"
 #include "app/print_job.hpp"
 #include "app/repl/scene_edit.hpp"
 #include "app/viewer/viewer.hpp"
@@ -12,7 +13,7 @@ namespace zs::app {
 
 void Viewer::startPrint() {
   if (print_.valid()) {
-    stats_.status = "a page is still printing";
+    stats_.status = i18n::tr("a page is still printing");
     return;
   }
   PrintJob job;
@@ -22,11 +23,14 @@ void Viewer::startPrint() {
   describeForPrint(fromFile ? sceneFile_.string() : "", job.title, job.description);
   const std::string stem = fromFile ? sceneFile_.stem().string() : "zeroset";
   job.output = nextFreePath(options_.outputDir, stem + "-page", ".pdf");
-  stats_.status = "printing a page...";
+  stats_.status = i18n::tr("printing a page...");
   print_ = std::async(std::launch::async, [job] {
     const std::string error = runPrintJob(job);
     glfwPostEmptyEvent();  // wake the loop to show it
-    return error.empty() ? "printed: " + job.output.string() + "\n" : error;
+    if (!error.empty())
+      return FileJobResult{error, i18n::format(i18n::tr("error: %s"), error.c_str())};
+    return FileJobResult{"printed: " + job.output.string() + "\n",
+                         i18n::format(i18n::tr("printed: %s"), job.output.c_str())};
   });
 }
 
