@@ -14,13 +14,13 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cd "$root"
 # C++: tr("..."), label("...") and N_("...") in the viewer, its gallery and the interaction
-# stage.
+# stage, and the parser (its errors reach the viewer and the page as the person types).
 xgettext --from-code=UTF-8 --language=C++ --keyword --keyword=tr --keyword=label --keyword=N_ \
-  --add-location=file --sort-by-file --omit-header -o "$tmp/cpp.pot" \
-  src/app/viewer/*.cpp src/app/gallery.cpp src/interact/*.cpp
+  --add-location=file --sort-by-file -o "$tmp/cpp.pot" \
+  src/app/viewer/*.cpp src/app/gallery.cpp src/interact/*.cpp src/parser/*.cpp
 # The page's scripts: tr('...'), trf('...', values) and N_('...').
 xgettext --from-code=UTF-8 --language=JavaScript --keyword --keyword=tr --keyword=trf --keyword=N_ \
-  --add-location=file --sort-by-file --omit-header -o "$tmp/js.pot" web/*.js
+  --add-location=file --sort-by-file -o "$tmp/js.pot" web/*.js
 python3 scripts/i18n_extract.py "$root" > "$tmp/extra.pot"
 msgcat --use-first --sort-by-file -o "$out/zeroset.pot" "$tmp/extra.pot" \
   $( [ -s "$tmp/cpp.pot" ] && echo "$tmp/cpp.pot" ) $( [ -s "$tmp/js.pot" ] && echo "$tmp/js.pot" )

@@ -1,4 +1,4 @@
-// `zeroset singular SCENE|FORMULA [--set KEY=VALUE]... [--depth N] [--csv FILE]
+// `zeroset singular SCENE|FORMULA [--set KEY=VALUE]... [--depth N] [--budget N] [--csv FILE]
 // [--json FILE]`: the certified singular points of F = 0 in the scene's domain (box or
 // sphere), with the regions that could not be certified; src/singular does the work.
 #include <cstdio>
@@ -19,6 +19,7 @@ namespace {
 struct SingularArgs {
   SceneArgs scene;
   int depth = SingularSettings{}.maxDepth;
+  std::size_t budget = SingularSettings{}.boxBudget;
   std::string csv, json;
 };
 
@@ -33,6 +34,7 @@ int runSingular(const SingularArgs& args) {
   const Formula& formula = std::get<Formula>(parsed);
   SingularSettings settings;
   settings.maxDepth = args.depth;
+  settings.boxBudget = args.budget;
   const Box box = toBox(scene->domain);
   auto found = findSingularPoints(formula, paramValues(*scene, formula.graph), box,
                                   toBall(scene->domain), settings);
@@ -70,6 +72,9 @@ void addSingularCommand(CLI::App& app) {
                   "halvings of the domain per axis before a box is reported as not certified "
                   "(default 14)")
       ->check(CLI::Range(1, 30));
+  cmd->add_option("--budget", args->budget,
+                  "boxes to test before the search gives up with an error (default 4000000)")
+      ->check(CLI::Range(std::size_t(1), std::size_t(1) << 40));
   cmd->add_option("--csv", args->csv, "also write the points and regions as CSV");
   cmd->add_option("--json", args->json, "also write the points and regions as JSON");
   cmd->callback([args] { std::exit(runSingular(*args)); });

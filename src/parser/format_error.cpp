@@ -1,6 +1,7 @@
 #include <algorithm>
 
 #include "parser/parser.hpp"
+#include "i18n/translate.hpp"
 
 namespace zs {
 
@@ -66,8 +67,8 @@ std::string formatError(std::string_view text, const ParseError& error) {
   const std::size_t caretLen = std::min(c1, to + 1) - c0;
   out += "  " + std::string(caretStart, ' ') + std::string(std::max<std::size_t>(caretLen, 1), '^') +
          "\n";
-  out += "error: " + error.message + " (at column " + std::to_string(c0 + 1) + ")\n";
-  if (!error.hint.empty()) out += "hint: " + error.hint + "\n";
+  out += i18n::format(i18n::tr("error: %s (at column %zu)"), error.message.c_str(), c0 + 1) + "\n";
+  if (!error.hint.empty()) out += i18n::format(i18n::tr("hint: %s"), error.hint.c_str()) + "\n";
   return out;
 }
 

@@ -1,4 +1,5 @@
 #include "parser/lexer.hpp"
+#include "i18n/translate.hpp"
 
 #include <cerrno>
 #include <cmath>
@@ -48,14 +49,17 @@ Token lexNumber(std::string_view s, std::size_t& i) {
   if (i < s.size() && s[i] == '.') {
     std::size_t end = i + 1;
     while (end < s.size() && (isDigit(s[end]) || s[end] == '.')) ++end;
-    return error(begin, end, "malformed number '" + std::string(s.substr(begin, end - begin)) + "'",
-                 "a number has at most one decimal point, e.g. 2.5");
+    return error(begin, end,
+                 i18n::format(i18n::tr("malformed number '%s'"),
+                              std::string(s.substr(begin, end - begin)).c_str()),
+                 i18n::tr("a number has at most one decimal point, e.g. 2.5"));
   }
   const std::string text(s.substr(begin, i - begin));
   errno = 0;
   const double v = std::strtod(text.c_str(), nullptr);
   if (errno == ERANGE && std::isinf(v)) {
-    return error(begin, i, "number '" + text + "' is too large", "numbers must be below 1.8e308");
+    return error(begin, i, i18n::format(i18n::tr("number '%s' is too large"), text.c_str()),
+                 i18n::tr("numbers must be below 1.8e308"));
   }
   Token t{Tok::Number, {begin, i}};
   t.number = v;
@@ -97,28 +101,32 @@ std::vector<Token> tokenize(std::string_view s) {
       case ',': kind = Tok::Comma; break;
       case '=': kind = Tok::Equals; break;
       case '.':
-        out.push_back(error(i, i + 1, "a '.' must be part of a number", "write 0.5 or .5"));
+        out.push_back(error(i, i + 1, i18n::tr("a '.' must be part of a number"),
+                            i18n::tr("write 0.5 or .5")));
         ++i;
         continue;
       case '\0':
-        out.push_back(error(i, i + 1, "the formula contains a NUL byte", "remove it"));
+        out.push_back(error(i, i + 1, i18n::tr("the formula contains a NUL byte"),
+                            i18n::tr("remove it")));
         ++i;
         continue;
       default: {
         const auto u = static_cast<unsigned char>(c);
         const std::size_t len = std::min(utf8Length(u), s.size() - i);
-        std::string hint = "formulas use ASCII: x y z, numbers, + - * / ^ ( ) and functions";
-        if (u >= 0x80 && s.substr(i, len) == "\xC2\xB2") hint = "write x^2 instead of x²";
-        if (u >= 0x80 && s.substr(i, len) == "\xCF\x80") hint = "write pi";
+        std::string hint =
+            i18n::tr("formulas use ASCII: x y z, numbers, + - * / ^ ( ) and functions");
+        if (u >= 0x80 && s.substr(i, len) == "\xC2\xB2") hint = i18n::tr("write x^2 instead of x²");
+        if (u >= 0x80 && s.substr(i, len) == "\xCF\x80") hint = i18n::tr("write pi");
         std::string message;
         if (u >= 0x80) {
-          message = "unexpected character '" + std::string(s.substr(i, len)) + "' (not ASCII)";
+          message = i18n::format(i18n::tr("unexpected character '%s' (not ASCII)"),
+                                 std::string(s.substr(i, len)).c_str());
         } else if (u < 0x20 || u == 0x7f) {
           char code[8];
           std::snprintf(code, sizeof code, "0x%02X", u);
-          message = std::string("unexpected control character (byte ") + code + ")";
+          message = i18n::format(i18n::tr("unexpected control character (byte %s)"), code);
         } else {
-          message = "unexpected character '" + std::string(1, c) + "'";
+          message = i18n::format(i18n::tr("unexpected character '%s'"), std::string(1, c).c_str());
         }
         out.push_back(error(i, i + len, message, hint));
         i += len;
@@ -132,10 +140,10 @@ std::vector<Token> tokenize(std::string_view s) {
   return out;
 }
 
-std::string_view describe(Tok kind) {
+const char* describe(Tok kind) {
   switch (kind) {
-    case Tok::Number: return "a number";
-    case Tok::Ident: return "a name";
+    case Tok::Number: return N_("a number");
+    case Tok::Ident: return N_("a name");
     case Tok::Plus: return "'+'";
     case Tok::Minus: return "'-'";
     case Tok::Star: return "'*'";
@@ -147,8 +155,8 @@ std::string_view describe(Tok kind) {
     case Tok::RBracket: return "']'";
     case Tok::Comma: return "','";
     case Tok::Equals: return "'='";
-    case Tok::End: return "the end of the formula";
-    case Tok::Error: return "an invalid character";
+    case Tok::End: return N_("the end of the formula");
+    case Tok::Error: return N_("an invalid character");
   }
   return "?";
 }

@@ -23,6 +23,6 @@ struct Token {
 std::vector<Token> tokenize(std::string_view text);
 
 // How a token kind is written, for messages ("expected ')'").
-std::string_view describe(Tok kind);
+const char* describe(Tok kind);  // English, marked for translation (i18n::tr)
 
 }  // namespace zs

@@ -1,4 +1,5 @@
 #include "parser/parser.hpp"
+#include "i18n/translate.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -77,15 +78,17 @@ class Parser {
     if (ok() && peek().kind == Tok::Equals) {
       const Span eq = next().span;
       if (peek().kind == Tok::End) {
-        fail(eq, "expected an expression after '='", "write F = G, e.g. x^2 + y^2 = 1");
+        fail(eq, i18n::tr("expected an expression after '='"),
+             i18n::tr("write F = G, e.g. x^2 + y^2 = 1"));
       }
       NodeId rhs = ok() ? sum() : kNoNode;
       if (ok()) lhs = b_.equation(lhs, rhs);
       if (ok() && peek().kind == Tok::Equals) {
-        fail(peek().span, "a formula has at most one '='", "write F = G, meaning F - G = 0");
+        fail(peek().span, i18n::tr("a formula has at most one '='"),
+             i18n::tr("write F = G, meaning F - G = 0"));
       }
     }
-    if (ok() && peek().kind != Tok::End) unexpected("an operator or the end of the formula");
+    if (ok() && peek().kind != Tok::End) unexpected(N_("an operator or the end of the formula"));
     if (!ok()) return *error_;
     return lhs;
   }
@@ -101,20 +104,23 @@ class Parser {
   void fail(Span span, std::string message, std::string hint) {
     if (!error_) error_ = ParseError{span, std::move(message), std::move(hint)};
   }
-  void unexpected(std::string_view expected) {
+  // `expected` is English, marked N_ where it is written; it is translated here.
+  void unexpected(const char* expected) {
     const Token& t = peek();
     if (t.kind == Tok::Error) return fail(t.span, t.message, t.hint);
-    fail(t.span, "expected " + std::string(expected) + ", found " + std::string(describe(t.kind)),
-         t.kind == Tok::Caret ? "'^' needs a base and an exponent, e.g. x^2" : "");
+    fail(t.span, i18n::format(i18n::tr("expected %s, found %s"), i18n::tr(expected),
+                              i18n::tr(describe(t.kind))),
+         t.kind == Tok::Caret ? i18n::tr("'^' needs a base and an exponent, e.g. x^2") : "");
   }
 
   struct DepthGuard {
     Parser& p;
     explicit DepthGuard(Parser& parser, Span span) : p(parser) {
       if (++p.depth_ > kMaxNesting) {
-        p.fail(span, "the formula is nested too deeply (more than " +
-                         std::to_string(kMaxNesting) + " levels)",
-               "simplify the expression or split it");
+        p.fail(span,
+               i18n::format(i18n::tr("the formula is nested too deeply (more than %d levels)"),
+                            int(kMaxNesting)),
+               i18n::tr("simplify the expression or split it"));
       }
     }
     ~DepthGuard() { --p.depth_; }
@@ -147,8 +153,8 @@ class Parser {
       } else if (startsAtom(k)) {
         // Implicit multiplication: 2x, 3(x+1), (x+1)(x-1), 2 pi, x y.
         if (k == Tok::Number && toks_[pos_ - 1].kind == Tok::Number) {
-          fail(peek().span, "two numbers in a row",
-               "write an operator between them, e.g. 2*3, or remove the space");
+          fail(peek().span, i18n::tr("two numbers in a row"),
+               i18n::tr("write an operator between them, e.g. 2*3, or remove the space"));
           return kNoNode;
         }
         const NodeId rhs = power();
@@ -186,15 +192,17 @@ class Parser {
     const std::optional<double> e = b_.constantValue(exponent);
     if (e && std::nearbyint(*e) == *e && std::fabs(*e) > kMaxIntegerExponent) {
       fail({expBegin, toks_[pos_ - 1].span.end},
-           "integer exponent " + text(expBegin, toks_[pos_ - 1].span.end) + " is too large",
-           "exponents are limited to " + std::to_string(kMaxIntegerExponent) +
-               " in magnitude; use exp(n*log(x)) for x > 0");
+           i18n::format(i18n::tr("integer exponent %s is too large"),
+                        text(expBegin, toks_[pos_ - 1].span.end).c_str()),
+           i18n::format(i18n::tr("exponents are limited to %d in magnitude; use exp(n*log(x)) "
+                                 "for x > 0"),
+                        int(kMaxIntegerExponent)));
       return kNoNode;
     }
     return b_.binary(Op::Pow, base, exponent);
   }
 
-  NodeId group(Tok close, std::string_view closeText) {
+  NodeId group(Tok close, const char* closeText) {
     const Token open = next();
     DepthGuard guard(*this, open.span);
     if (!ok()) return kNoNode;
@@ -202,8 +210,10 @@ class Parser {
     if (!ok()) return kNoNode;
     if (peek().kind != close) {
       if (peek().kind == Tok::End) {
-        fail(open.span, "this '" + std::string(text_.substr(open.span.begin, 1)) +
-                            "' is never closed", "add " + std::string(closeText));
+        fail(open.span,
+             i18n::format(i18n::tr("this '%s' is never closed"),
+                          std::string(text_.substr(open.span.begin, 1)).c_str()),
+             i18n::format(i18n::tr("add %s"), closeText));
       } else {
         unexpected(closeText);
       }
@@ -222,25 +232,28 @@ class Parser {
       case Tok::Ident: return name();
       case Tok::End:
         if (pos_ == 0) {
-          fail(t.span, "the formula is empty", "type an expression such as x^2 + y^2 + z^2 - 1");
+          fail(t.span, i18n::tr("the formula is empty"),
+               i18n::tr("type an expression such as x^2 + y^2 + z^2 - 1"));
         } else {
           const Token& prev = toks_[pos_ - 1];
-          fail(prev.span, "expected an operand after " + std::string(describe(prev.kind)),
-               "complete the expression");
+          fail(prev.span,
+               i18n::format(i18n::tr("expected an operand after %s"), i18n::tr(describe(prev.kind))),
+               i18n::tr("complete the expression"));
         }
         return kNoNode;
       case Tok::Caret: case Tok::Star: case Tok::Slash: case Tok::Equals:
         if (pos_ > 0 && (toks_[pos_ - 1].kind == Tok::Caret || toks_[pos_ - 1].kind == Tok::Star ||
                          toks_[pos_ - 1].kind == Tok::Slash)) {
-          fail(t.span, "expected an operand after " + std::string(describe(toks_[pos_ - 1].kind)) +
-                           ", found " + std::string(describe(t.kind)),
-               "remove the extra operator");
+          fail(t.span,
+               i18n::format(i18n::tr("expected an operand after %s, found %s"),
+                            i18n::tr(describe(toks_[pos_ - 1].kind)), i18n::tr(describe(t.kind))),
+               i18n::tr("remove the extra operator"));
           return kNoNode;
         }
-        unexpected("an operand");
+        unexpected(N_("an operand"));
         return kNoNode;
       default:
-        unexpected("an operand (a number, x, y, z, a name or '(')");
+        unexpected(N_("an operand (a number, x, y, z, a name or '(')"));
         return kNoNode;
     }
   }
@@ -254,8 +267,10 @@ class Parser {
     if (id == "e") return b_.namedConstant(id, std::numbers::e);
     if (auto op = functionByName(id)) {
       if (!call) {
-        fail(t.span, "function '" + std::string(id) + "' needs its argument in parentheses",
-             "write " + std::string(id) + "(x)");
+        fail(t.span,
+             i18n::format(i18n::tr("function '%s' needs its argument in parentheses"),
+                          std::string(id).c_str()),
+             i18n::format(i18n::tr("write %s(x)"), std::string(id).c_str()));
         return kNoNode;
       }
       return callArgs(*op, t);
@@ -278,8 +293,8 @@ class Parser {
         if (peek().kind != Tok::Comma) {
           const std::string fn(text_.substr(nameTok.span.begin, nameTok.span.end - nameTok.span.begin));
           fail(peek().kind == Tok::End ? open.span : peek().span,
-               fn + "() takes " + std::to_string(arity) + " arguments",
-               "write " + fn + "(a, b)");
+               i18n::format(i18n::tr("%s() takes %d arguments"), fn.c_str(), int(arity)),
+               i18n::format(i18n::tr("write %s(a, b)"), fn.c_str()));
           return kNoNode;
         }
         next();
@@ -290,12 +305,15 @@ class Parser {
     if (peek().kind != Tok::RParen) {
       const std::string fn(text_.substr(nameTok.span.begin, nameTok.span.end - nameTok.span.begin));
       if (peek().kind == Tok::Comma) {
-        fail(peek().span, fn + "() takes " + std::to_string(arity) + " argument" +
-                              (arity == 1 ? "" : "s"), "remove the extra arguments");
+        fail(peek().span,
+             arity == 1 ? i18n::format(i18n::tr("%s() takes 1 argument"), fn.c_str())
+                        : i18n::format(i18n::tr("%s() takes %d arguments"), fn.c_str(), int(arity)),
+             i18n::tr("remove the extra arguments"));
       } else if (peek().kind == Tok::End) {
-        fail(open.span, "this '(' is never closed", "add ')'");
+        fail(open.span, i18n::format(i18n::tr("this '%s' is never closed"), "("),
+             i18n::format(i18n::tr("add %s"), "')'"));
       } else {
-        unexpected("')'");
+        unexpected("')'");  // not words: the same in every language
       }
       return kNoNode;
     }
@@ -316,8 +334,9 @@ class Parser {
 ParseResult parseFormula(std::string_view text) {
   if (text.size() > kMaxFormulaBytes) {
     return ParseError{{kMaxFormulaBytes, text.size()},
-                      "the formula is longer than " + std::to_string(kMaxFormulaBytes) + " bytes",
-                      "shorten it, or use parameters for repeated parts"};
+                      i18n::format(i18n::tr("the formula is longer than %zu bytes"),
+                                   std::size_t(kMaxFormulaBytes)),
+                      i18n::tr("shorten it, or use parameters for repeated parts")};
   }
   std::vector<Token> tokens = tokenize(text);
   // Lexical errors come first so they are reported even inside otherwise broken syntax.

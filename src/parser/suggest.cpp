@@ -1,4 +1,5 @@
 #include "parser/suggest.hpp"
+#include "i18n/translate.hpp"
 
 #include <algorithm>
 
@@ -66,28 +67,31 @@ std::vector<std::string_view> functionNames() {
 
 std::optional<NameProblem> diagnoseName(std::string_view name, bool call) {
   if (name.size() > 1 && onlyCoordinates(name)) {
-    return NameProblem{"'" + std::string(name) + "' is not a name",
-                       "write " + spelledProduct(name) + " for a product of coordinates"};
+    return NameProblem{
+        i18n::format(i18n::tr("'%s' is not a name"), std::string(name).c_str()),
+        i18n::format(i18n::tr("write %s for a product of coordinates"), spelledProduct(name).c_str())};
   }
   if (name.size() > 1 && onlyCoordinates(name.substr(0, 1)) &&
       std::all_of(name.begin() + 1, name.end(), [](char c) { return c >= '0' && c <= '9'; })) {
     const std::string v(name.substr(0, 1)), n(name.substr(1));
-    return NameProblem{"'" + std::string(name) + "' is not a name",
-                       "write " + v + "^" + n + " for a power or " + v + "*" + n + " for a product"};
+    return NameProblem{
+        i18n::format(i18n::tr("'%s' is not a name"), std::string(name).c_str()),
+        i18n::format(i18n::tr("write %s for a power or %s for a product"), (v + "^" + n).c_str(),
+                     (v + "*" + n).c_str())};
   }
   for (std::string_view fn : functionNames()) {
     if (name.size() > fn.size() && name.substr(0, fn.size()) == fn &&
         onlyCoordinates(name.substr(fn.size()))) {
       const std::string arg = spelledProduct(name.substr(fn.size()));
-      return NameProblem{"'" + std::string(name) + "' is not a name",
-                         "write " + std::string(fn) + "(" + arg + ")"};
+      return NameProblem{i18n::format(i18n::tr("'%s' is not a name"), std::string(name).c_str()),
+                         i18n::format(i18n::tr("write %s"), (std::string(fn) + "(" + arg + ")").c_str())};
     }
   }
   if (call && name.size() >= 2) {
     if (auto best = closestName(name, functionNames())) {
-      return NameProblem{"unknown function '" + std::string(name) + "' \u2014 did you mean " + *best +
-                             "?",
-                         "the functions are listed in docs/formula.md"};
+      return NameProblem{i18n::format(i18n::tr("unknown function '%s' \u2014 did you mean %s?"),
+                                      std::string(name).c_str(), best->c_str()),
+                         i18n::tr("the functions are listed in docs/formula.md")};
     }
   }
   return std::nullopt;

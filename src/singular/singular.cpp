@@ -14,10 +14,22 @@ namespace zs {
 
 namespace {
 
-// Tape outputs: F, the gradient, the Hessian row by row.
-constexpr std::size_t kF = 0, kGrad = 1, kHess = 4, kOutputs = 13;
+// Tape outputs: F, the gradient, the Hessian row by row, and the third derivatives
+// F_ijk for i <= j <= k (kThird + thirdIndex(i, j, k)).
+constexpr std::size_t kF = 0, kGrad = 1, kHess = 4, kThird = 13, kOutputs = 23;
 
-// F, grad F and the Hessian of one formula, as intervals over boxes and as doubles at points.
+// Where F_ijk sits among the ten third derivatives, for any order of i, j, k.
+constexpr std::size_t thirdIndex(std::size_t i, std::size_t j, std::size_t k) {
+  // Sorted: a <= b <= c; the ten triples in lexicographic order.
+  const std::size_t a = std::min({i, j, k}), c = std::max({i, j, k}), b = i + j + k - a - c;
+  constexpr std::size_t firstOf[3] = {0, 6, 9};  // triples starting with 0, 1, 2
+  constexpr std::size_t second[3][3] = {{0, 3, 5}, {0, 0, 2}, {0, 0, 0}};
+  return firstOf[a] + second[a][b] + (c - b);
+}
+
+// F, grad F and the Hessian of one formula, as intervals over boxes and as doubles at points;
+// over boxes also the third derivatives, which only the Taylor forms need (a second tape
+// without them keeps the many evaluations at points cheap).
 class Problem {
  public:
   Problem(const Formula& formula, std::span<const double> params)
@@ -25,30 +37,48 @@ class Problem {
     Graph g = formula.graph;
     const std::array<NodeId, 3> grad = gradient(g, formula.root);
     std::vector<NodeId> roots{formula.root, grad[0], grad[1], grad[2]};
-    for (NodeId gi : grad) {
-      const std::array<NodeId, 3> row = gradient(g, gi);
-      roots.insert(roots.end(), row.begin(), row.end());
+    std::array<std::array<NodeId, 3>, 3> hessian;
+    for (std::size_t i = 0; i < 3; ++i) {
+      hessian[i] = gradient(g, grad[i]);
+      roots.insert(roots.end(), hessian[i].begin(), hessian[i].end());
     }
-    tape_ = compileTape(g, roots);
-    intervals_.emplace(tape_);
-    points_.emplace(tape_);
+    base_ = compileTape(g, roots);
+    // The third derivatives, each once: d/dk of H_ij for i <= j <= k.
+    roots.resize(kOutputs, kNoNode);
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t j = i; j < 3; ++j) {
+        const std::array<NodeId, 3> d = gradient(g, hessian[i][j]);
+        for (std::size_t k = j; k < 3; ++k) roots[kThird + thirdIndex(i, j, k)] = d[k];
+      }
+    full_ = compileTape(g, roots);
+    overBoxes_.emplace(full_);
+    overPoints_.emplace(base_);
+    points_.emplace(base_);
   }
 
+  // Everything, third derivatives included, over a box.
   std::array<Interval, kOutputs> over(const Box& box) {
     std::array<Interval, kOutputs> out;
-    intervals_->eval(box, params_, out);
+    overBoxes_->eval(box, params_, out);
+    return out;
+  }
+  // F, grad F and the Hessian at a point, enclosed (the third derivatives are left empty).
+  std::array<Interval, kOutputs> enclosedAt(const std::array<double, 3>& p) {
+    std::array<Interval, kOutputs> out;
+    out.fill(Interval::empty());
+    overPoints_->eval(Box{p, p}, params_, std::span(out).first(kThird));
     return out;
   }
   std::array<double, kOutputs> at(const std::array<double, 3>& p) {
-    std::array<double, kOutputs> out;
-    points_->eval(p[0], p[1], p[2], params_, out);
+    std::array<double, kOutputs> out{};
+    points_->eval(p[0], p[1], p[2], params_, std::span(out).first(kThird));
     return out;
   }
 
  private:
   std::vector<double> params_;
-  Tape tape_;
-  std::optional<IntervalEvaluator> intervals_;
+  Tape base_, full_;
+  std::optional<IntervalEvaluator> overBoxes_, overPoints_;
   std::optional<PointEvaluator> points_;
 };
 
@@ -98,6 +128,14 @@ bool strictlyInside(const Box& inner, const Box& outer) {
   return true;
 }
 
+bool within(const Box& inner, const Box& outer) {
+  for (std::size_t a = 0; a < 3; ++a)
+    if (!(inner.min[a] >= outer.min[a] && inner.max[a] <= outer.max[a])) return false;
+  return true;
+}
+
+bool holds(const Box& b, const std::array<double, 3>& p) { return within(Box{p, p}, b); }
+
 Mat3 hessianAt(const std::array<double, kOutputs>& v) {
   Mat3 h;
   for (std::size_t i = 0; i < 3; ++i)
@@ -125,27 +163,120 @@ std::array<double, 3> refine(Problem& problem, std::array<double, 3> p, const Bo
   return p;
 }
 
-// False when interval arithmetic proves F or a component of grad F has no zero in x. Each
-// is bounded twice, directly and by its mean-value form about the middle m of x,
-// f(x) in f(m) + f'(x) (x - m), which the derivatives at hand make cheap and which is far
-// tighter on small boxes, where the direct bound suffers from dependency; the intersection of
-// two enclosures is an enclosure.
-bool mayHoldSingularPoint(Problem& problem, const Box& x) {
-  const auto over = problem.over(x);
-  const std::array<double, 3> m = middle(x);
-  const auto atM = problem.over(Box{m, m});
-  std::array<Interval, 3> dx;
-  for (std::size_t j = 0; j < 3; ++j)
-    dx[j] = ia::sub(Interval{x.min[j], x.max[j]}, Interval::point(m[j]));
-  auto meanValue = [&](std::size_t value, std::size_t firstDerivative) {
-    Interval mv = atM[value];
-    for (std::size_t j = 0; j < 3; ++j) mv = ia::add(mv, ia::mul(over[firstDerivative + j], dx[j]));
-    return intersect(over[value], mv);
+// Newton's method on grad F = 0 from m, free to leave the box; nothing when it does not settle
+// within a few steps (no critical point near m, or a degenerate one).
+std::optional<std::array<double, 3>> newtonPoint(Problem& problem, std::array<double, 3> p) {
+  for (int it = 0; it < 12; ++it) {
+    const auto v = problem.at(p);
+    const std::optional<Mat3> inv = inverse(hessianAt(v));
+    if (!inv) return std::nullopt;
+    double step = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+      double d = 0;
+      for (std::size_t c = 0; c < 3; ++c) d += (*inv)[i][c] * v[kGrad + c];
+      p[i] -= d;
+      step = std::max(step, std::abs(d));
+    }
+    if (!std::isfinite(step)) return std::nullopt;
+    if (step <= 1e-13 * (1 + std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]))) return p;
+  }
+  return std::nullopt;
+}
+
+std::array<Interval, kOutputs> tightened(Problem& problem, const Box& x,
+                                         const std::array<double, 3>& m);
+
+Box cubeAround(const std::array<double, 3>& p, double radius) {
+  return Box{{p[0] - radius, p[1] - radius, p[2] - radius},
+             {p[0] + radius, p[1] + radius, p[2] + radius}};
+}
+
+// Krawczyk on cubes centred on a Newton point p. A box met by the octree holds its critical
+// point anywhere, often near a face, where K pokes out of the box long after K has become
+// small; a cube centred on the point has the whole margin on every side. The first radius
+// that certifies is doubled while it still certifies, so that the region proven to hold no
+// other zero of grad F is as large as the Hessian's interval allows: the search then drops
+// every box inside it. Nothing when no radius certifies (a degenerate Hessian).
+std::optional<Box> uniquenessCube(Problem& problem, const std::array<double, 3>& p, double width) {
+  const std::optional<Mat3> y = inverse(hessianAt(problem.at(p)));
+  if (!y) return std::nullopt;
+  const auto atP = problem.enclosedAt(p);
+  auto certifies = [&](double radius) {
+    const Box b = cubeAround(p, radius);
+    return strictlyInside(krawczyk(b, p, *y, atP, tightened(problem, b, p)), b);
   };
+  const double floor = 1e-12 * (1 + std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]));
+  double radius = width / 64;
+  while (radius > floor && !certifies(radius)) radius /= 16;
+  if (!(radius > floor)) return std::nullopt;
+  for (int grow = 0; grow < 12 && certifies(2 * radius); ++grow) radius *= 2;
+  return cubeAround(p, radius);
+}
+
+// F, grad F and the Hessian over x, each the intersection of enclosures (an intersection of
+// enclosures is an enclosure): the direct interval evaluation, the mean-value form
+// f(m) + f'(x) d, and the second-order Taylor form f(m) + f'(m) d + d' f''(x) d / 2, with m
+// the middle of x and d = x - m. The direct bound of a polynomial of high degree suffers
+// from dependency and cancellation (the Sarti dodecic is a difference of two terms of size
+// |p|^12); the Taylor forms bound only what varies over x, and the higher the order the
+// smaller the box where they win. The Hessian gets the mean-value form with the third
+// derivatives.
+std::array<Interval, kOutputs> tightened(Problem& problem, const Box& x,
+                                         const std::array<double, 3>& m) {
+  std::array<Interval, kOutputs> over = problem.over(x);
+  const auto atM = problem.enclosedAt(m);
+  std::array<Interval, 3> d;
+  for (std::size_t j = 0; j < 3; ++j)
+    d[j] = ia::sub(Interval{x.min[j], x.max[j]}, Interval::point(m[j]));
+  // d' A d / 2 for a symmetric A given by a(j, k): the squares are non-negative, and the
+  // cross terms count twice.
+  auto halfQuadratic = [&](auto a) {
+    Interval sum = Interval::point(0);
+    for (std::size_t j = 0; j < 3; ++j) {
+      sum = ia::add(sum, ia::mul(ia::mul(Interval::point(0.5), a(j, j)), ia::powi(d[j], 2)));
+      for (std::size_t k = j + 1; k < 3; ++k)
+        sum = ia::add(sum, ia::mul(a(j, k), ia::mul(d[j], d[k])));
+    }
+    return sum;
+  };
+  auto linear = [&](auto a, const std::array<Interval, kOutputs>& from) {
+    Interval sum = Interval::point(0);
+    for (std::size_t j = 0; j < 3; ++j) sum = ia::add(sum, ia::mul(a(j, from), d[j]));
+    return sum;
+  };
+  std::array<Interval, kOutputs> out = over;
+  // F
+  const Interval fMean = ia::add(atM[kF], linear([](std::size_t j, const auto& v) { return v[kGrad + j]; }, over));
+  const Interval fTaylor =
+      ia::add(ia::add(atM[kF], linear([](std::size_t j, const auto& v) { return v[kGrad + j]; }, atM)),
+              halfQuadratic([&](std::size_t j, std::size_t k) { return over[kHess + 3 * j + k]; }));
+  out[kF] = intersect(intersect(over[kF], fMean), fTaylor);
+  // grad F
+  for (std::size_t c = 0; c < 3; ++c) {
+    auto hessianRow = [c](std::size_t j, const auto& v) { return v[kHess + 3 * c + j]; };
+    const Interval mean = ia::add(atM[kGrad + c], linear(hessianRow, over));
+    const Interval taylor =
+        ia::add(ia::add(atM[kGrad + c], linear(hessianRow, atM)),
+                halfQuadratic([&](std::size_t j, std::size_t k) { return over[kThird + thirdIndex(c, j, k)]; }));
+    out[kGrad + c] = intersect(intersect(over[kGrad + c], mean), taylor);
+  }
+  // The Hessian
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) {
+      const Interval mean = ia::add(
+          atM[kHess + 3 * i + j],
+          linear([i, j](std::size_t k, const auto& v) { return v[kThird + thirdIndex(i, j, k)]; }, over));
+      out[kHess + 3 * i + j] = intersect(over[kHess + 3 * i + j], mean);
+    }
+  return out;
+}
+
+// False when interval arithmetic proves F or a component of grad F has no zero in x.
+bool mayHoldSingularPoint(Problem& problem, const Box& x) {
+  const auto bounds = tightened(problem, x, middle(x));
   auto holdsZero = [](Interval v) { return !v.isEmpty() && v.containsZero(); };
-  if (!holdsZero(meanValue(kF, kGrad))) return false;
-  for (std::size_t c = 0; c < 3; ++c)
-    if (!holdsZero(meanValue(kGrad + c, kHess + 3 * c))) return false;
+  for (std::size_t c = 0; c < 4; ++c)
+    if (!holdsZero(bounds[kF + c])) return false;
   return true;
 }
 
@@ -166,6 +297,41 @@ std::variant<SingularResult, std::string> findSingularPoints(const Formula& form
   SingularResult result;
   const double size = widest(domain);
 
+  // Boxes proven to hold exactly one zero of grad F, whose zero has been dealt with.
+  std::vector<Box> unique;
+  auto claimedBy = [&](const Box& x) {
+    return std::any_of(unique.begin(), unique.end(), [&](const Box& u) { return within(x, u); });
+  };
+  // A certified zero p of grad F, unique in `box`: a singular point when F vanishes there.
+  auto accept = [&](const std::array<double, 3>& p, const Box& box) {
+    const auto v = problem.at(p);
+    const Mat3 h = hessianAt(v);
+    const std::array<double, 3> lambda = eigenvalues(h);
+    const double scale = std::max({1.0, std::abs(lambda[0]), std::abs(lambda[2])});
+    if (!(std::abs(v[kF]) <= settings.fTolerance * scale)) return;
+    // In the closed domain, to rounding: a node on a face of the domain is kept.
+    const double slack = 1e-9 * size;
+    if (ball && std::hypot(p[0] - ball->center[0], p[1] - ball->center[1],
+                           p[2] - ball->center[2]) > ball->radius + slack)
+      return;
+    for (std::size_t a = 0; a < 3; ++a)
+      if (!(p[a] >= domain.min[a] - slack && p[a] <= domain.max[a] + slack)) return;
+    for (const SingularPoint& q : result.points)
+      if (std::hypot(q.point[0] - p[0], q.point[1] - p[1], q.point[2] - p[2]) <= 1e-7 * size)
+        return;
+    SingularPoint sp;
+    sp.point = p;
+    sp.boxWidth = widest(box);
+    sp.f = v[kF];
+    sp.eigenvalues = lambda;
+    for (double l : lambda) {
+      if (std::abs(l) <= 1e-9 * scale) ++sp.zero;
+      else if (l > 0) ++sp.positive;
+      else ++sp.negative;
+    }
+    result.points.push_back(sp);
+  };
+
   // Depth-first; boxes are split a little off their middle so that points on symmetry
   // planes of the domain (x = 0 of [-2, 2]^3) do not fall on a split face at once.
   std::vector<std::pair<Box, int>> stack{{domain, 0}};
@@ -174,9 +340,11 @@ std::variant<SingularResult, std::string> findSingularPoints(const Formula& form
     stack.pop_back();
     if (++result.boxesTested > settings.boxBudget)
       return "singular point search stopped after " + std::to_string(settings.boxBudget) +
-             " boxes; shrink the domain or lower the depth";
+             " boxes; shrink the domain, lower --depth or raise --budget";
     if (ball && boxOutsideBall(x, *ball)) continue;
     if (!mayHoldSingularPoint(problem, x)) continue;
+
+    if (claimedBy(x)) continue;  // its only zero of grad F is a point already found
 
     // Krawczyk on a slightly inflated copy, so a zero on a face of x is certified too (by
     // both neighbours: duplicates are merged below).
@@ -184,51 +352,37 @@ std::variant<SingularResult, std::string> findSingularPoints(const Formula& form
     const std::array<double, 3> m = middle(xi);
     const std::optional<Mat3> y = inverse(hessianAt(problem.at(m)));
     if (y) {
-      const auto atM = problem.over(Box{m, m});
-      const auto overXi = problem.over(xi);
-      const Box k = krawczyk(xi, m, *y, atM, overXi);
+      const auto atM = problem.enclosedAt(m);
+      const Box k = krawczyk(xi, m, *y, atM, tightened(problem, xi, m));
       const std::optional<Box> both = meet(k, xi);
       if (!both) continue;  // no zero of grad F in xi
       if (strictlyInside(k, xi)) {
+        unique.push_back(xi);
         const Interval fk = problem.over(k)[kF];
         if (fk.isEmpty() || !fk.containsZero()) continue;  // a critical point off the surface
-        const std::array<double, 3> p = refine(problem, m, k);
-        const auto v = problem.at(p);
-        const Mat3 h = hessianAt(v);
-        const std::array<double, 3> lambda = eigenvalues(h);
-        const double scale = std::max({1.0, std::abs(lambda[0]), std::abs(lambda[2])});
-        if (!(std::abs(v[kF]) <= settings.fTolerance * scale)) continue;
-        // In the closed domain, to rounding: a node on a face of the domain is kept.
-        const double slack = 1e-9 * size;
-        if (ball && std::hypot(p[0] - ball->center[0], p[1] - ball->center[1],
-                               p[2] - ball->center[2]) > ball->radius + slack)
-          continue;
-        bool inDomain = true;
-        for (std::size_t a = 0; a < 3; ++a)
-          inDomain = inDomain && p[a] >= domain.min[a] - slack && p[a] <= domain.max[a] + slack;
-        if (!inDomain) continue;
-        bool known = false;
-        for (const SingularPoint& q : result.points)
-          known = known || std::hypot(q.point[0] - p[0], q.point[1] - p[1], q.point[2] - p[2]) <=
-                               1e-7 * size;
-        if (known) continue;
-        SingularPoint sp;
-        sp.point = p;
-        sp.boxWidth = widest(k);
-        sp.f = v[kF];
-        sp.eigenvalues = lambda;
-        for (double l : lambda) {
-          if (std::abs(l) <= 1e-9 * scale) ++sp.zero;
-          else if (l > 0) ++sp.positive;
-          else ++sp.negative;
-        }
-        result.points.push_back(sp);
+        accept(refine(problem, m, k), k);
         continue;
       }
       // Every zero of grad F in x lies in k too: keep only the part of x that k covers.
       const std::optional<Box> shrunk = meet(x, k);
       if (!shrunk) continue;
       x = *shrunk;
+      if (claimedBy(x)) continue;  // near a found point, k is small and often inside its cube
+      // A Newton point in x proven unique in a cube around it: the point is found, and the
+      // part of x the cube covers needs no more search.
+      const std::optional<std::array<double, 3>> p = newtonPoint(problem, m);
+      if (p && holds(xi, *p)) {
+        bool known = false;
+        for (const Box& u : unique) known = known || holds(u, *p);
+        if (!known) {
+          if (const std::optional<Box> cube = uniquenessCube(problem, *p, widest(x))) {
+            unique.push_back(*cube);
+            const Interval fc = problem.over(*cube)[kF];
+            if (!fc.isEmpty() && fc.containsZero()) accept(*p, *cube);
+            if (within(x, *cube)) continue;
+          }
+        }
+      }
     }
     if (depth >= settings.maxDepth) {
       result.uncertified.push_back(x);

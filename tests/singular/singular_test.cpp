@@ -4,6 +4,7 @@
 // must be reported as not certified (a curve of singular points, a cusp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <variant>
@@ -85,6 +86,43 @@ TEST(Singular, ChebyshevSexticPlusOneHasFiftyFourNodes) {
   const SingularResult none = find(t6, 1.1);
   EXPECT_TRUE(none.points.empty());
   EXPECT_TRUE(none.uncertified.empty());
+}
+
+TEST(Singular, ChmutovOcticHasAllItsNodesCertified) {
+  // T8 + T8 + T8 + 1 (examples/chmutov-octic.surf): 144 nodes, 3 x 4 x 4 x 3 as for the
+  // sextic above. Degree 8 over-estimates: the nodes are certified in cubes around Newton
+  // points, not in the octree's boxes.
+  const std::string t8 = "(128*x^8 - 256*x^6 + 160*x^4 - 32*x^2 + 1)";
+  auto in = [&](char v) {
+    std::string t = t8;
+    std::replace(t.begin(), t.end(), 'x', v);
+    return t;
+  };
+  expectNodes(in('x') + " + " + in('y') + " + " + in('z') + " + 1", 1.05, 144);
+}
+
+TEST(Singular, AnIllConditionedNodeLeavesNoRegionAroundIt) {
+  // The Endrass octic's node at (1, 1, 1.5) has Hessian eigenvalues -5.4e4, -350 and 1024:
+  // boxes that touch its certified cube were once left as regions at the maximum depth.
+  // Depth 11 of this 0.4-wide box gives the smallest boxes of its scene, [-1.6, 1.6]^3 at
+  // the default depth 14.
+  const ParseResult parsed = parseFormula(
+      "64*(x^2 - 1)*(y^2 - 1)*((x + y)^2 - 2)*((x - y)^2 - 2) - (-4*(1 + sqrt(2))*(x^2 + "
+      "y^2)^2 + (8*(2 + sqrt(2))*z^2 + 2*(2 + 7*sqrt(2)))*(x^2 + y^2) - 16*z^4 + 8*(1 - "
+      "2*sqrt(2))*z^2 - (1 + 12*sqrt(2)))^2");
+  ASSERT_TRUE(std::holds_alternative<Formula>(parsed));
+  const Box box{{0.8, 0.8, 1.3}, {1.2, 1.2, 1.6}};
+  SingularSettings settings;
+  settings.maxDepth = 11;
+  auto r = findSingularPoints(std::get<Formula>(parsed), {}, box, std::nullopt, settings);
+  ASSERT_TRUE(std::holds_alternative<SingularResult>(r));
+  const SingularResult& found = std::get<SingularResult>(r);
+  ASSERT_EQ(found.points.size(), 1u);
+  EXPECT_TRUE(found.points[0].isNode());
+  EXPECT_NEAR(found.points[0].point[0], 1.0, 1e-12);
+  EXPECT_NEAR(found.points[0].point[1], 1.0, 1e-12);
+  EXPECT_NEAR(found.points[0].point[2], 1.5, 1e-12);
+  EXPECT_TRUE(found.uncertified.empty());
 }
 
 TEST(Singular, SmoothSurfacesHaveNone) {

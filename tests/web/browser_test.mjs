@@ -544,8 +544,8 @@ cases['drop-surf-loads'] = async () => {
 };
 
 // The page's languages (docs/languages.md): the browser's language picks Spanish, lang=
-// overrides it, the menu switches to German and back, and the core's own messages (the
-// kiosk's refusal) and the keyboard's words follow. Expected texts come from po/*.po.
+// overrides it, the menu switches to German and back, and the core's own messages (a parse
+// error, the kiosk's refusal) and the keyboard's words follow. Expected texts come from po/*.po.
 function catalog(code) {
   const messages = new Map();
   const text = fs.readFileSync(path.join(sourceDir, 'po', `${code}.po`), 'utf8');
@@ -576,6 +576,12 @@ cases['languages'] = async () => {
   const gallery = JSON.parse(fs.readFileSync(path.join(site, 'examples', 'index.json'), 'utf8'));
   check(t.caption === es(gallery[0].title), `the gallery's first title reads "${t.caption}"`);
 
+  // A mistake as the person types it, explained in their language (the parser's messages).
+  await page.fill('#formula', 'x^2 +');
+  await page.waitForFunction(() => !document.getElementById('zeroset-error').hidden);
+  const mistake = await page.textContent('#zeroset-error');
+  check(mistake.includes(es('complete the expression')), `the parse error is not Spanish: ${mistake}`);
+  await page.fill('#formula', 'x^2 + y^2 + z^2 - 1');
   await page.selectOption('#language', 'de');
   t = await texts(page);
   check(t.lang === 'de' && t.gallery === de('Gallery') && t.reset === de('Reset view') &&
