@@ -7,7 +7,10 @@ scene's keys and choices (docs/surf-format.md's tables), which the page's settin
 i18n_extract.py ROOT. scripts/update-po.sh runs it; docs/languages.md explains the marks."""
 import html.parser
 import pathlib
+import re
 import sys
+
+from gallery_texts import summary_and_title
 
 root = pathlib.Path(sys.argv[1])
 messages = {}  # msgid -> list of "file:line" references, in order of first appearance
@@ -51,7 +54,6 @@ for page in sorted((root / "web").glob("*.html")):
 
 # `| `camera.fov_y` | number | ...`: each word of the key ("fov y"), and the choices of a
 # word key ("`"perspective"`, `"orthographic"`").
-import re
 for number, row in enumerate((root / "docs" / "surf-format.md").read_text(encoding="utf-8").splitlines(), 1):
     m = re.match(r"\| `([a-z_.0-9]+)` \| (\w+) \| ([^|]*)\|", row)
     if not m:
@@ -65,13 +67,10 @@ for number, row in enumerate((root / "docs" / "surf-format.md").read_text(encodi
 
 examples = root / "examples"
 for path in sorted(examples.glob("thesis/*.surf")) + sorted(examples.glob("*.surf")):
-    first = path.read_text(encoding="utf-8").splitlines()[0]
-    if not first.startswith("#"):
-        continue
-    line = first.lstrip("#").strip()
+    summary, title = summary_and_title(path.read_text(encoding="utf-8"), "")
     where = f"{path.relative_to(root).as_posix()}:1"
-    add(line, where)
-    add(line.split(" \u2014 ")[0].split(" - ")[0], where)
+    add(summary, where)
+    add(title, where)
 
 
 def quote(s):

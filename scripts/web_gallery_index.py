@@ -8,14 +8,14 @@ import pathlib
 import sys
 import tomllib
 
+from gallery_texts import summary_and_title
+
 examples = pathlib.Path(sys.argv[1])
 entries = []
 for path in sorted(examples.glob("thesis/*.surf")) + sorted(examples.glob("*.surf")):
     name = path.relative_to(examples).with_suffix("").as_posix()
     text = path.read_text(encoding="utf-8")
-    first = text.splitlines()[0] if text else ""
-    summary = first.lstrip("#").strip() if first.startswith("#") else ""
-    title = summary.split(" — ")[0].split(" - ")[0] if summary else name
+    summary, title = summary_and_title(text, name)
     image = name.replace("/", "-") + ".png"
     if not (examples / "images" / image).exists():
         sys.exit(f"web_gallery_index.py: {path} has no picture examples/images/{image}")

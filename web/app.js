@@ -698,6 +698,7 @@ function buildTexts() {
     $('keys').append(li);
   }
   buildGallery();
+  filterGallery();
   const select = $('language');
   select.replaceChildren(...languages().map((l) => new Option(l.name, l.code, false, l.code === language())));
   kiosk?.translate();
@@ -716,7 +717,8 @@ function buildGallery() {
   list.replaceChildren();
   examples.forEach((ex, i) => {
     const li = document.createElement('li');
-    li.dataset.search = `${ex.name} ${ex.title} ${tr(ex.title)} ${ex.formula}`.toLowerCase();
+    li.dataset.search = [ex.name, ex.title, ex.summary, tr(ex.title), tr(ex.summary || ''), ex.formula]
+      .join(' ').toLowerCase();
     const b = document.createElement('button');
     b.type = 'button';
     b.title = ex.summary ? tr(ex.summary) : ex.name;
@@ -732,10 +734,12 @@ function buildGallery() {
     list.append(li);
   });
 }
-$('gallery-search').addEventListener('input', () => {
+// The gallery's search, in English and in the page's language.
+function filterGallery() {
   const q = $('gallery-search').value.toLowerCase().trim();
   for (const li of $('gallery').children) li.hidden = q !== '' && !li.dataset.search.includes(q);
-});
+}
+$('gallery-search').addEventListener('input', filterGallery);
 
 // ---- start ---------------------------------------------------------------------------
 
@@ -822,7 +826,7 @@ async function start() {
   }
   showNotes(); buildParams(); buildSettings(); redraw();
   if (kiosk) {
-    startScene = { text: session.sceneText(), example: currentExample };
+    startScene = { text: session.sceneText(), example: currentExample, language: language() };
     // The formula keyboard never focuses the field: the interpreter links now.
     requestInterpreters();
   }
@@ -831,6 +835,11 @@ async function start() {
 // Kiosk mode: the scene the page opened with, the gallery open and the panel shown.
 function showStartScreen() {
   if (!session || !startScene) return;
+  // The exhibit's language for the next visitor.
+  if (language() !== startScene.language && setLanguage(startScene.language)) {
+    buildTexts();
+    buildSettings();
+  }
   currentExample = startScene.example;
   $('gallery-search').value = '';
   for (const li of $('gallery').children) li.hidden = false;

@@ -6,10 +6,10 @@
 #include <sstream>
 
 #include "expr/degree.hpp"
-#include "parser/parser.hpp"
-#include "scene/scene_io.hpp"
 #include "i18n/translate.hpp"
+#include "parser/parser.hpp"
 #include "scene/description.hpp"
+#include "scene/scene_io.hpp"
 
 namespace zs::app {
 namespace {
@@ -67,8 +67,10 @@ std::vector<GalleryEntry> describeExamples(const std::vector<Example>& examples)
 
 bool galleryMatches(const GalleryEntry& entry, const std::string& needle) {
   const std::string n = lower(needle);
+  // The summary as the panel shows it, in the viewer's language, too.
   return lower(entry.name).find(n) != std::string::npos ||
-         lower(entry.description).find(n) != std::string::npos;
+         lower(entry.description).find(n) != std::string::npos ||
+         lower(i18n::tr(entry.summary)).find(n) != std::string::npos;
 }
 
 }  // namespace zs::app

@@ -24,7 +24,8 @@ struct GalleryEntry {
 GalleryEntry describeExample(const Example& example);
 std::vector<GalleryEntry> describeExamples(const std::vector<Example>& examples);
 
-// Case-insensitive: does `needle` occur in the entry's name, summary or description?
+// Case-insensitive: does `needle` occur in the entry's name, description, or its summary in
+// the current language? (ASCII letters only are folded.)
 bool galleryMatches(const GalleryEntry& entry, const std::string& needle);
 
 }  // namespace zs::app

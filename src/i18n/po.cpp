@@ -1,14 +1,13 @@
 #include "i18n/po.hpp"
 
-#include <cctype>
 #include <optional>
-#include <vector>
+#include <unordered_set>
 
 namespace zs::i18n {
 namespace {
 
-// The quoted string that starts at text[i] (after optional blanks), with its escapes undone;
-// nothing when the line holds no well-formed string.
+// The quoted string that starts `line` (after optional blanks), with its escapes undone;
+// nothing, and `error` says why, when the line holds no well-formed string.
 std::optional<std::string> quoted(std::string_view line, std::string& error) {
   std::size_t i = 0;
   while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
@@ -80,9 +79,12 @@ std::variant<Catalog, PoError> parsePo(std::string_view text) {
   int idLine = 0;  // where the message being read starts
   std::optional<std::string> header;
 
+  std::unordered_set<std::string> seen;
+  std::optional<int> duplicate;  // the line of the first msgid seen twice
   auto finish = [&]() {
     if (haveId && haveStr) {
       if (id.empty()) header = str;
+      else if (!seen.insert(id).second) duplicate = duplicate.value_or(idLine);
       else if (!fuzzy && !str.empty()) catalog.messages[id] = str;
     }
     id.clear();
@@ -99,7 +101,11 @@ std::variant<Catalog, PoError> parsePo(std::string_view text) {
     at = end == std::string_view::npos ? text.size() + 1 : end + 1;
     ++lineNumber;
     while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.remove_suffix(1);
-    if (line.empty()) continue;
+    if (line.empty()) {  // messages are separated by blank lines: flags do not carry over
+      if (haveStr) finish();
+      else if (!haveId) fuzzy = false;
+      continue;
+    }
     std::string error;
     if (line[0] == '#') {
       // Flags belong to the next message; obsolete ones ("#~", kept by msgmerge for the
@@ -149,6 +155,8 @@ std::variant<Catalog, PoError> parsePo(std::string_view text) {
   }
   if (haveId && !haveStr) return PoError{idLine, "this msgid has no msgstr"};
   finish();
+  if (duplicate)
+    return PoError{*duplicate, "this msgid is in the file twice; keep one (msgfmt refuses it too)"};
   if (header) catalog.language = headerField(*header, "Language");
   return catalog;
 }

@@ -44,7 +44,7 @@ const Loaded& loaded() {
 
 struct State {
   std::mutex mutex;
-  std::string code = "en";
+  std::string_view code = "en";  // into languages(), which lives as long as the program
   const Catalog* catalog = nullptr;
   std::unordered_map<std::string, std::string> labels;  // of the current language
 };
@@ -70,9 +70,17 @@ std::string knownLanguage(std::string_view tag) {
 }
 
 std::string languageFromEnvironment() {
-  // LANGUAGE is a priority list ("de:en"); the others name one locale each. "C" and
-  // "POSIX" are English.
-  if (const char* list = std::getenv("LANGUAGE"); list && *list) {
+  // The locale of messages: LC_ALL, else LC_MESSAGES, else LANG; none is "C".
+  std::string_view locale = "C";
+  for (const char* name : {"LC_ALL", "LC_MESSAGES", "LANG"})
+    if (const char* v = std::getenv(name); v && *v) {
+      locale = v;
+      break;
+    }
+  // LANGUAGE is a priority list ("de:en") that gettext reads only when the locale is not
+  // "C" (or "POSIX"), which asks for the program's own texts.
+  const bool plain = locale == "C" || locale == "POSIX" || locale.substr(0, 2) == "C.";
+  if (const char* list = std::getenv("LANGUAGE"); list && *list && !plain) {
     std::string_view rest(list);
     while (!rest.empty()) {
       const std::size_t colon = rest.find(':');
@@ -82,21 +90,20 @@ std::string languageFromEnvironment() {
       rest.remove_prefix(colon + 1);
     }
   }
-  for (const char* name : {"LC_ALL", "LC_MESSAGES", "LANG"})
-    if (const char* v = std::getenv(name); v && *v) {
-      const std::string code = knownLanguage(v);
-      return code.empty() ? "en" : code;
-    }
-  return "en";
+  const std::string code = plain ? "" : knownLanguage(locale);
+  return code.empty() ? "en" : code;
 }
 
 bool setLanguage(std::string_view tag) {
   const std::string code = knownLanguage(tag);
   if (code.empty()) return false;
+  std::string_view stable;
+  for (const Language& l : languages())
+    if (l.code == code) stable = l.code;
   State& s = state();
   std::lock_guard lock(s.mutex);
   if (s.code == code) return true;
-  s.code = code;
+  s.code = stable;
   const auto& catalogs = loaded().catalogs;
   const auto it = catalogs.find(code);
   s.catalog = it == catalogs.end() ? nullptr : &it->second;
@@ -110,22 +117,29 @@ std::string_view currentLanguage() {
   return s.code;
 }
 
-const char* tr(const char* english) {
-  State& s = state();
-  std::lock_guard lock(s.mutex);
+namespace {
+
+const char* translated(const State& s, const char* english) {
   if (!s.catalog) return english;
   const auto it = s.catalog->messages.find(english);
   return it == s.catalog->messages.end() ? english : it->second.c_str();
 }
 
+}  // namespace
+
+const char* tr(const char* english) {
+  State& s = state();
+  std::lock_guard lock(s.mutex);
+  return translated(s, english);
+}
+
 std::string tr(const std::string& english) { return tr(english.c_str()); }
 
 const char* label(const char* english) {
-  const char* shown = tr(english);
   State& s = state();
-  std::lock_guard lock(s.mutex);
+  std::lock_guard lock(s.mutex);  // one lock: the cached label is of the language it is for
   auto [it, inserted] = s.labels.try_emplace(english);
-  if (inserted) it->second = std::string(shown) + "###" + english;
+  if (inserted) it->second = std::string(translated(s, english)) + "###" + english;
   return it->second.c_str();
 }
 

@@ -23,8 +23,9 @@ struct Language {
 // English first, then every built-in catalog.
 std::span<const Language> languages();
 
-// The language the environment asks for: the first of LANGUAGE's list, LC_ALL, LC_MESSAGES
-// and LANG that names a known language ("de_AT.UTF-8" is "de"); "en" otherwise.
+// The language the environment asks for, as gettext reads it: the first known language of
+// LANGUAGE's list, unless the locale (LC_ALL, else LC_MESSAGES, else LANG) is "C"; else the
+// locale's own ("de_AT.UTF-8" is "de"); "en" otherwise.
 std::string languageFromEnvironment();
 
 // "es", "es_ES", "es-ES.UTF-8" and "ES" all name Spanish; "" when no catalog matches.
@@ -36,7 +37,8 @@ std::string_view currentLanguage();
 
 // The translation of `english` in the current language, or `english` itself. The pointer
 // stays valid for the program's life.
-const char* tr(const char* english);
+// format_arg: the compiler checks printf-style uses against the English pattern.
+const char* tr(const char* english) __attribute__((format_arg(1)));
 std::string tr(const std::string& english);
 
 // tr(english) + "###" + english: ImGui shows the translation and keys the widget on the

@@ -1,8 +1,9 @@
 #include "interact/formula_keyboard.hpp"
-#include "i18n/translate.hpp"
 
 #include <algorithm>
 #include <cctype>
+
+#include "i18n/translate.hpp"
 
 namespace zs::interact {
 namespace {

@@ -11,6 +11,7 @@
 
 #include "i18n/translate.hpp"
 
+
 namespace zs::interact {
 namespace {
 

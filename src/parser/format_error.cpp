@@ -1,7 +1,7 @@
 #include <algorithm>
 
-#include "parser/parser.hpp"
 #include "i18n/translate.hpp"
+#include "parser/parser.hpp"
 
 namespace zs {
 

@@ -1,10 +1,11 @@
 #include "parser/lexer.hpp"
-#include "i18n/translate.hpp"
 
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+
+#include "i18n/translate.hpp"
 
 namespace zs {
 

@@ -1,11 +1,11 @@
 #include "parser/parser.hpp"
-#include "i18n/translate.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
 
+#include "i18n/translate.hpp"
 #include "parser/lexer.hpp"
 #include "parser/suggest.hpp"
 

@@ -1,9 +1,9 @@
 #include "parser/suggest.hpp"
-#include "i18n/translate.hpp"
 
 #include <algorithm>
 
 #include "expr/opcode.hpp"
+#include "i18n/translate.hpp"
 
 namespace zs {
 

@@ -50,16 +50,54 @@ class Problem {
         const std::array<NodeId, 3> d = gradient(g, hessian[i][j]);
         for (std::size_t k = j; k < 3; ++k) roots[kThird + thirdIndex(i, j, k)] = d[k];
       }
+    // Where a piecewise operation switches, its derivative (as expr/derivative.cpp writes
+    // it: sign' = floor' = 0, min/max through sign) misses the jump, so the derivatives of
+    // the next order do not bound the change over a box that holds the switch. Each
+    // switch's argument is evaluated with the rest; a box where one may switch is not smooth.
+    const std::vector<NodeId> used = reachable(g, roots);
+    for (NodeId id : used) {
+      const Node& n = g[id];
+      switch (n.op) {
+        case Op::Abs: case Op::Sign: kinks_.push_back({Kink::AtZero, roots.size()}); roots.push_back(n.a); break;
+        case Op::Floor: case Op::Ceil: kinks_.push_back({Kink::AtInteger, roots.size()}); roots.push_back(n.a); break;
+        case Op::Min: case Op::Max:
+          kinks_.push_back({Kink::AtZero, roots.size()});
+          roots.push_back(g.binary(Op::Sub, n.a, n.b));
+          break;
+        case Op::Atan2:  // the cut: y = 0, x < 0
+          kinks_.push_back({Kink::BranchCut, roots.size()});
+          roots.push_back(n.a);
+          roots.push_back(n.b);
+          break;
+        default: break;
+      }
+    }
     full_ = compileTape(g, roots);
     overBoxes_.emplace(full_);
+    extra_.resize(roots.size());
     overPoints_.emplace(base_);
     points_.emplace(base_);
   }
 
-  // Everything, third derivatives included, over a box.
-  std::array<Interval, kOutputs> over(const Box& box) {
-    std::array<Interval, kOutputs> out;
-    overBoxes_->eval(box, params_, out);
+  // Everything, third derivatives included, over a box; `smooth` is false where a piecewise
+  // operation may switch inside it.
+  struct OverBox {
+    std::array<Interval, kOutputs> v;
+    bool smooth = true;
+  };
+  OverBox over(const Box& box) {
+    overBoxes_->eval(box, params_, extra_);
+    OverBox out;
+    std::copy_n(extra_.begin(), kOutputs, out.v.begin());
+    for (const auto& [kind, at] : kinks_) {
+      const Interval a = extra_[at];
+      const bool switches =
+          a.isEmpty() ||
+          (kind == Kink::AtZero && a.containsZero()) ||
+          (kind == Kink::AtInteger && !(std::floor(a.lo) == std::floor(a.hi) && std::floor(a.lo) != a.lo)) ||
+          (kind == Kink::BranchCut && a.containsZero() && !(extra_[at + 1].lo > 0));
+      out.smooth = out.smooth && !switches;
+    }
     return out;
   }
   // F, grad F and the Hessian at a point, enclosed (the third derivatives are left empty).
@@ -76,7 +114,10 @@ class Problem {
   }
 
  private:
+  enum class Kink { AtZero, AtInteger, BranchCut };
   std::vector<double> params_;
+  std::vector<std::pair<Kink, std::size_t>> kinks_;  // and the output of its argument
+  std::vector<Interval> extra_;                       // every output of the full tape
   Tape base_, full_;
   std::optional<IntervalEvaluator> overBoxes_, overPoints_;
   std::optional<PointEvaluator> points_;
@@ -143,22 +184,33 @@ Mat3 hessianAt(const std::array<double, kOutputs>& v) {
   return h;
 }
 
+// One Newton step on grad F = 0 at p: H(p)^-1 grad F(p); nothing where H(p) is singular.
+std::optional<std::array<double, 3>> newtonStep(Problem& problem, const std::array<double, 3>& p) {
+  const auto v = problem.at(p);
+  const std::optional<Mat3> inv = inverse(hessianAt(v));
+  if (!inv) return std::nullopt;
+  std::array<double, 3> d{};
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t c = 0; c < 3; ++c) d[i] += (*inv)[i][c] * v[kGrad + c];
+  return d;
+}
+
+double scaleOf(const std::array<double, 3>& p) {
+  return 1 + std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]);
+}
+
 // Newton's method on grad F = 0 from m, kept inside `box` (which holds exactly one zero).
 std::array<double, 3> refine(Problem& problem, std::array<double, 3> p, const Box& box) {
   for (int it = 0; it < 60; ++it) {
-    const auto v = problem.at(p);
-    const std::optional<Mat3> inv = inverse(hessianAt(v));
-    if (!inv) break;
+    const std::optional<std::array<double, 3>> d = newtonStep(problem, p);
+    if (!d) break;
     double step = 0;
-    std::array<double, 3> next = p;
     for (std::size_t i = 0; i < 3; ++i) {
-      double d = 0;
-      for (std::size_t c = 0; c < 3; ++c) d += (*inv)[i][c] * v[kGrad + c];
-      next[i] = std::clamp(p[i] - d, box.min[i], box.max[i]);
-      step = std::max(step, std::abs(next[i] - p[i]));
+      const double next = std::clamp(p[i] - (*d)[i], box.min[i], box.max[i]);
+      step = std::max(step, std::abs(next - p[i]));
+      p[i] = next;
     }
-    p = next;
-    if (step <= 1e-15 * (1 + std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]))) break;
+    if (step <= 1e-15 * scaleOf(p)) break;
   }
   return p;
 }
@@ -167,24 +219,20 @@ std::array<double, 3> refine(Problem& problem, std::array<double, 3> p, const Bo
 // within a few steps (no critical point near m, or a degenerate one).
 std::optional<std::array<double, 3>> newtonPoint(Problem& problem, std::array<double, 3> p) {
   for (int it = 0; it < 12; ++it) {
-    const auto v = problem.at(p);
-    const std::optional<Mat3> inv = inverse(hessianAt(v));
-    if (!inv) return std::nullopt;
+    const std::optional<std::array<double, 3>> d = newtonStep(problem, p);
+    if (!d) return std::nullopt;
     double step = 0;
     for (std::size_t i = 0; i < 3; ++i) {
-      double d = 0;
-      for (std::size_t c = 0; c < 3; ++c) d += (*inv)[i][c] * v[kGrad + c];
-      p[i] -= d;
-      step = std::max(step, std::abs(d));
+      p[i] -= (*d)[i];
+      step = std::max(step, std::abs((*d)[i]));
     }
     if (!std::isfinite(step)) return std::nullopt;
-    if (step <= 1e-13 * (1 + std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]))) return p;
+    if (step <= 1e-13 * scaleOf(p)) return p;
   }
   return std::nullopt;
 }
 
-std::array<Interval, kOutputs> tightened(Problem& problem, const Box& x,
-                                         const std::array<double, 3>& m);
+Problem::OverBox tightened(Problem& problem, const Box& x, const std::array<double, 3>& m);
 
 Box cubeAround(const std::array<double, 3>& p, double radius) {
   return Box{{p[0] - radius, p[1] - radius, p[2] - radius},
@@ -203,13 +251,14 @@ std::optional<Box> uniquenessCube(Problem& problem, const std::array<double, 3>&
   const auto atP = problem.enclosedAt(p);
   auto certifies = [&](double radius) {
     const Box b = cubeAround(p, radius);
-    return strictlyInside(krawczyk(b, p, *y, atP, tightened(problem, b, p)), b);
+    const Problem::OverBox bounds = tightened(problem, b, p);
+    return bounds.smooth && strictlyInside(krawczyk(b, p, *y, atP, bounds.v), b);
   };
-  const double floor = 1e-12 * (1 + std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]));
+  const double floor = 1e-12 * scaleOf(p);
   double radius = width / 64;
   while (radius > floor && !certifies(radius)) radius /= 16;
   if (!(radius > floor)) return std::nullopt;
-  for (int grow = 0; grow < 12 && certifies(2 * radius); ++grow) radius *= 2;
+  while (2 * radius <= width && certifies(2 * radius)) radius *= 2;
   return cubeAround(p, radius);
 }
 
@@ -218,12 +267,15 @@ std::optional<Box> uniquenessCube(Problem& problem, const std::array<double, 3>&
 // f(m) + f'(x) d, and the second-order Taylor form f(m) + f'(m) d + d' f''(x) d / 2, with m
 // the middle of x and d = x - m. The direct bound of a polynomial of high degree suffers
 // from dependency and cancellation (the Sarti dodecic is a difference of two terms of size
-// |p|^12); the Taylor forms bound only what varies over x, and the higher the order the
-// smaller the box where they win. The Hessian gets the mean-value form with the third
-// derivatives.
-std::array<Interval, kOutputs> tightened(Problem& problem, const Box& x,
-                                         const std::array<double, 3>& m) {
-  std::array<Interval, kOutputs> over = problem.over(x);
+// |p|^12); the Taylor forms bound only what varies over x, and each order higher leaves an
+// excess that shrinks one power of the box's width faster. The Hessian gets the mean-value
+// form with the third derivatives. The forms need F smooth over x: where a piecewise
+// operation may switch, only the direct bounds are used.
+Problem::OverBox tightened(Problem& problem, const Box& x, const std::array<double, 3>& m) {
+  const Problem::OverBox direct = problem.over(x);
+  // Where a piecewise operation may switch, only the direct bounds hold.
+  if (!direct.smooth) return direct;
+  const std::array<Interval, kOutputs>& over = direct.v;
   const auto atM = problem.enclosedAt(m);
   std::array<Interval, 3> d;
   for (std::size_t j = 0; j < 3; ++j)
@@ -244,13 +296,17 @@ std::array<Interval, kOutputs> tightened(Problem& problem, const Box& x,
     for (std::size_t j = 0; j < 3; ++j) sum = ia::add(sum, ia::mul(a(j, from), d[j]));
     return sum;
   };
-  std::array<Interval, kOutputs> out = over;
+  // A form that comes out empty (an infinite derivative times a zero width) proves nothing.
+  auto narrowed = [](Interval direct, Interval form) {
+    return form.isEmpty() ? direct : intersect(direct, form);
+  };
+  Problem::OverBox out = direct;
   // F
   const Interval fMean = ia::add(atM[kF], linear([](std::size_t j, const auto& v) { return v[kGrad + j]; }, over));
   const Interval fTaylor =
       ia::add(ia::add(atM[kF], linear([](std::size_t j, const auto& v) { return v[kGrad + j]; }, atM)),
               halfQuadratic([&](std::size_t j, std::size_t k) { return over[kHess + 3 * j + k]; }));
-  out[kF] = intersect(intersect(over[kF], fMean), fTaylor);
+  out.v[kF] = narrowed(narrowed(over[kF], fMean), fTaylor);
   // grad F
   for (std::size_t c = 0; c < 3; ++c) {
     auto hessianRow = [c](std::size_t j, const auto& v) { return v[kHess + 3 * c + j]; };
@@ -258,7 +314,7 @@ std::array<Interval, kOutputs> tightened(Problem& problem, const Box& x,
     const Interval taylor =
         ia::add(ia::add(atM[kGrad + c], linear(hessianRow, atM)),
                 halfQuadratic([&](std::size_t j, std::size_t k) { return over[kThird + thirdIndex(c, j, k)]; }));
-    out[kGrad + c] = intersect(intersect(over[kGrad + c], mean), taylor);
+    out.v[kGrad + c] = narrowed(narrowed(over[kGrad + c], mean), taylor);
   }
   // The Hessian
   for (std::size_t i = 0; i < 3; ++i)
@@ -266,14 +322,14 @@ std::array<Interval, kOutputs> tightened(Problem& problem, const Box& x,
       const Interval mean = ia::add(
           atM[kHess + 3 * i + j],
           linear([i, j](std::size_t k, const auto& v) { return v[kThird + thirdIndex(i, j, k)]; }, over));
-      out[kHess + 3 * i + j] = intersect(over[kHess + 3 * i + j], mean);
+      out.v[kHess + 3 * i + j] = narrowed(over[kHess + 3 * i + j], mean);
     }
   return out;
 }
 
 // False when interval arithmetic proves F or a component of grad F has no zero in x.
 bool mayHoldSingularPoint(Problem& problem, const Box& x) {
-  const auto bounds = tightened(problem, x, middle(x));
+  const auto bounds = tightened(problem, x, middle(x)).v;
   auto holdsZero = [](Interval v) { return !v.isEmpty() && v.containsZero(); };
   for (std::size_t c = 0; c < 4; ++c)
     if (!holdsZero(bounds[kF + c])) return false;
@@ -351,14 +407,17 @@ std::variant<SingularResult, std::string> findSingularPoints(const Formula& form
     const Box xi = inflate(x, 1e-3);
     const std::array<double, 3> m = middle(xi);
     const std::optional<Mat3> y = inverse(hessianAt(problem.at(m)));
-    if (y) {
+    // Krawczyk needs the Hessian to bound the change of grad F: not where a piecewise
+    // operation may switch (such a box is split until the depth ends, then reported).
+    const Problem::OverBox overXi = tightened(problem, xi, m);
+    if (y && overXi.smooth) {
       const auto atM = problem.enclosedAt(m);
-      const Box k = krawczyk(xi, m, *y, atM, tightened(problem, xi, m));
+      const Box k = krawczyk(xi, m, *y, atM, overXi.v);
       const std::optional<Box> both = meet(k, xi);
       if (!both) continue;  // no zero of grad F in xi
       if (strictlyInside(k, xi)) {
         unique.push_back(xi);
-        const Interval fk = problem.over(k)[kF];
+        const Interval fk = problem.over(k).v[kF];
         if (fk.isEmpty() || !fk.containsZero()) continue;  // a critical point off the surface
         accept(refine(problem, m, k), k);
         continue;
@@ -377,7 +436,7 @@ std::variant<SingularResult, std::string> findSingularPoints(const Formula& form
         if (!known) {
           if (const std::optional<Box> cube = uniquenessCube(problem, *p, widest(x))) {
             unique.push_back(*cube);
-            const Interval fc = problem.over(*cube)[kF];
+            const Interval fc = problem.over(*cube).v[kF];
             if (!fc.isEmpty() && fc.containsZero()) accept(*p, *cube);
             if (within(x, *cube)) continue;
           }

@@ -9,16 +9,16 @@
 #include <set>
 #include <variant>
 
+#include "app/gallery.hpp"
 #include "app/repl/command.hpp"
 #include "app/repl/scene_edit.hpp"
-#include "interact/arcball.hpp"
 #include "app/viewer/examples.hpp"
 #include "app/viewer/fonts.hpp"
 #include "app/viewer/formula_keyboard.hpp"
-#include "app/gallery.hpp"
 #include "i18n/translate.hpp"
-#include "interact/key_bindings.hpp"
+#include "interact/arcball.hpp"
 #include "interact/formula_keyboard.hpp"
+#include "interact/key_bindings.hpp"
 #include "interact/kiosk.hpp"
 #include "process.hpp"
 #include "render/camera.hpp"
@@ -191,6 +191,9 @@ TEST(ViewerFont, EveryGallerySymbolHasAGlyphAtTheScreensScale) {
 TEST(Languages, TheGalleryAndTheKeysAreTranslated) {
   const std::vector<GalleryEntry> gallery = describeExamples(listExamples(findExamplesDir()));
   ASSERT_GT(gallery.size(), 30u);
+  struct LanguageRestored {
+    ~LanguageRestored() { i18n::setLanguage("en"); }
+  } restore;
   for (const i18n::Language& l : i18n::languages()) {
     if (l.code == "en") continue;
     ASSERT_TRUE(i18n::setLanguage(l.code));
@@ -199,7 +202,6 @@ TEST(Languages, TheGalleryAndTheKeysAreTranslated) {
     for (const interact::KeyBinding& b : interact::keyBindings())
       EXPECT_STRNE(i18n::tr(b.description), b.description) << l.code;
   }
-  i18n::setLanguage("en");
 }
 
 }  // namespace

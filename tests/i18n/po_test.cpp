@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <optional>
 #include <regex>
 #include <string>
+#include <utility>
 #include <variant>
+#include <vector>
 
 #include "i18n/embedded_catalogs.hpp"
 #include "i18n/po.hpp"
@@ -56,7 +59,7 @@ TEST(Po, LeavesOutFuzzyEmptyAndObsoleteMessages) {
       "msgid \"kept\"\nmsgstr \"guardado\"\n\n"
       "#, fuzzy, c-format\nmsgid \"guessed %d\"\nmsgstr \"adivinado %d\"\n\n"
       "msgid \"not yet\"\nmsgstr \"\"\n\n"
-      "#~ msgid \"gone\"\n#~ msgstr \"ido\"\n\n"
+      "#, fuzzy\n#~ msgid \"gone\"\n#~ msgstr \"ido\"\n\n"
       "msgid \"after\"\nmsgstr \"después\"\n");
   EXPECT_EQ(c.messages.size(), 2u);
   EXPECT_EQ(c.messages.count("kept"), 1u);
@@ -73,6 +76,7 @@ TEST(Po, ErrorsNameTheirLine) {
   EXPECT_EQ(failure("msgid \"a\"\nmsgid_plural \"as\"\nmsgstr[0] \"b\"\n").line, 2);
   EXPECT_EQ(failure("msgctxt \"menu\"\nmsgid \"a\"\nmsgstr \"b\"\n").line, 1);
   EXPECT_EQ(failure("hello\n").line, 1);
+  EXPECT_EQ(failure("msgid \"a\"\nmsgstr \"b\"\n\nmsgid \"a\"\nmsgstr \"c\"\n").line, 4);
 }
 
 TEST(Languages, LocaleNamesPickTheirCatalog) {
@@ -86,7 +90,30 @@ TEST(Languages, LocaleNamesPickTheirCatalog) {
   EXPECT_EQ(knownLanguage(""), "");
 }
 
+// Puts the locale variables back as they were, also when a test fails half-way.
+struct EnvironmentRestored {
+  std::vector<std::pair<const char*, std::optional<std::string>>> saved;
+  EnvironmentRestored() {
+    for (const char* name : {"LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG"}) {
+      const char* v = std::getenv(name);
+      saved.emplace_back(name, v ? std::optional<std::string>(v) : std::nullopt);
+    }
+  }
+  ~EnvironmentRestored() {
+    for (const auto& [name, value] : saved) {
+      if (value) setenv(name, value->c_str(), 1);
+      else unsetenv(name);
+    }
+  }
+};
+
+// English again after the test, whatever it asserted.
+struct LanguageRestored {
+  ~LanguageRestored() { setLanguage("en"); }
+};
+
 TEST(Languages, TheEnvironmentChoosesAsGettextDoes) {
+  const EnvironmentRestored restore;
   auto with = [](const char* language, const char* all, const char* messages, const char* lang) {
     auto put = [](const char* name, const char* v) {
       if (v) setenv(name, v, 1);
@@ -104,9 +131,12 @@ TEST(Languages, TheEnvironmentChoosesAsGettextDoes) {
   EXPECT_EQ(with(nullptr, "C.UTF-8", "es_MX.UTF-8", "de_DE.UTF-8"), "en");
   EXPECT_EQ(with("fr:de:es", nullptr, nullptr, "es_ES"), "de");  // the first one known
   EXPECT_EQ(with("fr", nullptr, nullptr, "es_ES"), "es");
+  EXPECT_EQ(with("de", nullptr, nullptr, nullptr), "en");  // no locale: "C", LANGUAGE unread
+  EXPECT_EQ(with("de", "C.UTF-8", nullptr, "es_ES"), "en");
 }
 
 TEST(Languages, TranslationsAndLabelsFollowTheChoice) {
+  const LanguageRestored restore;
   ASSERT_TRUE(setLanguage("en"));
   EXPECT_STREQ(tr("gallery"), "gallery");
   EXPECT_STREQ(label("gallery"), "gallery###gallery");
@@ -120,7 +150,6 @@ TEST(Languages, TranslationsAndLabelsFollowTheChoice) {
     EXPECT_EQ(std::string(label("gallery")), std::string(tr("gallery")) + "###gallery");
     EXPECT_STREQ(tr("a text no catalog has"), "a text no catalog has");
   }
-  setLanguage("en");
   EXPECT_EQ(format("%d of %d: %s", 3, 12, "torus"), "3 of 12: torus");
 }
 

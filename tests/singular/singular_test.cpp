@@ -103,7 +103,8 @@ TEST(Singular, ChmutovOcticHasAllItsNodesCertified) {
 
 TEST(Singular, AnIllConditionedNodeLeavesNoRegionAroundIt) {
   // The Endrass octic's node at (1, 1, 1.5) has Hessian eigenvalues -5.4e4, -350 and 1024:
-  // boxes that touch its certified cube were once left as regions at the maximum depth.
+  // the boxes that touch its certified box are not excluded at any depth the search
+  // reaches, so they must be seen to lie in a cube already certified.
   // Depth 11 of this 0.4-wide box gives the smallest boxes of its scene, [-1.6, 1.6]^3 at
   // the default depth 14.
   const ParseResult parsed = parseFormula(
@@ -122,6 +123,23 @@ TEST(Singular, AnIllConditionedNodeLeavesNoRegionAroundIt) {
   EXPECT_NEAR(found.points[0].point[0], 1.0, 1e-12);
   EXPECT_NEAR(found.points[0].point[1], 1.0, 1e-12);
   EXPECT_NEAR(found.points[0].point[2], 1.5, 1e-12);
+  EXPECT_TRUE(found.uncertified.empty());
+}
+
+TEST(Singular, APiecewiseFormulaIsCertifiedOnlyWhereItIsSmooth) {
+  // Near the origin this is 5x^2 - y^2 - z^2, a node; max switches at x = 0.1, where the
+  // second derivative jumps by -11, which the symbolic Hessian (max' through sign,
+  // sign' = 0) does not see. Boxes across x = 0.1 get no derivative forms and no Krawczyk
+  // test; the node is still found, and nothing is certified from a Hessian that is wrong.
+  const ParseResult parsed = parseFormula("5*x^2 - 5.5*max(0, x - 0.1)^2 - y^2 - z^2");
+  ASSERT_TRUE(std::holds_alternative<Formula>(parsed));
+  const Box box{{-0.01, -0.2, -0.2}, {0.3, 0.2, 0.2}};
+  auto r = findSingularPoints(std::get<Formula>(parsed), {}, box, std::nullopt,
+                              SingularSettings{});
+  ASSERT_TRUE(std::holds_alternative<SingularResult>(r));
+  const SingularResult& found = std::get<SingularResult>(r);
+  ASSERT_EQ(found.points.size(), 1u);
+  for (double c : found.points[0].point) EXPECT_NEAR(c, 0.0, 1e-12);
   EXPECT_TRUE(found.uncertified.empty());
 }
 

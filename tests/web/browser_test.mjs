@@ -17,6 +17,9 @@ import { chromium } from 'playwright-core';
 // differ, and the surface covers the same pixels (hit or background) but for 1.5 %.
 const TOLERANCE = { channel: 48, differing: 0.03, coverage: 0.015 };
 const SIZE = [320, 240];
+// The canvas of cases that test messages, panels or files rather than the picture: the
+// browser draws every picture on the CPU (SwiftShader), so a small one saves seconds.
+const SMALL = 'size=64x48';
 
 const args = Object.fromEntries(process.argv.slice(2).reduce((a, v, i, all) =>
   (v.startsWith('--') ? [...a, [v.slice(2), all[i + 1]]] : a), []));
@@ -250,7 +253,7 @@ cases['bench'] = async () => {
 
 // Whatever is typed, dropped or put in the URL ends in a picture or a positioned message.
 cases['bad-formulas'] = async () => {
-  const page = await openPage(`size=${SIZE[0]}x${SIZE[1]}`);
+  const page = await openPage(SMALL);
   await settled(page);
   // Unfinished, unparsable, constant (nothing to draw), far above every degree limit, long.
   const typed = ['', 'x^', '(((((x', 'x²+y²-1', '1/0', 'x^1000',
@@ -296,7 +299,7 @@ cases['typing'] = async () => {
 };
 
 cases['bad-file'] = async () => {
-  const page = await openPage(`size=${SIZE[0]}x${SIZE[1]}`);
+  const page = await openPage(SMALL);
   await settled(page);
   // A damaged .jsurf file, dropped.
   await markBusy(page);
@@ -313,7 +316,7 @@ cases['bad-file'] = async () => {
 cases['bad-url-parameters'] = async () => {
   // URL parameters that are not what they should be.
   for (const query of ['example=..%2F..%2Fetc%2Fpasswd', 'scene=%%%', 'set=no.such.key%3D1']) {
-    const other = await openPage(query);
+    const other = await openPage(`${query}&${SMALL}`);
     await other.waitForFunction(() => ['ready', 'error'].includes(document.documentElement.dataset.zeroset),
                                 null, { timeout: 15000 });
     await other.context().close();
@@ -323,7 +326,7 @@ cases['bad-url-parameters'] = async () => {
 // Kiosk mode (kiosk=1): no file buttons and drops ignored, the formula keyboard by touch,
 // a polynomial above the degree limit refused, and the start screen again once idle.
 cases['kiosk'] = async () => {
-  const page = await openPage(`kiosk=1&idle=2&max-degree=4&size=${SIZE[0]}x${SIZE[1]}`, { touch: true });
+  const page = await openPage(`kiosk=1&idle=2&max-degree=4&${SMALL}`, { touch: true });
   await settled(page);
   const gallery = JSON.parse(fs.readFileSync(path.join(site, 'examples', 'index.json'), 'utf8'));
   const start = await page.evaluate(() => window.zeroset.session.formula());
@@ -489,7 +492,7 @@ cases['bad-url-shows-error-above-default'] = async () => {
   check(/sin\(x/.test(message) && /\^/.test(message), `no positioned message:\n${message}`);
   await snapshot(page, 'self');
   check((await compareWith(page, { snapshotName: 'self' })).surface > 0.05, 'no default surface under the error');
-  const bad = await openPage(`example=thesis/2-cayley-cubic&set=${encodeURIComponent('tracing.epsilon=-1')}`);
+  const bad = await openPage(`example=thesis/2-cayley-cubic&set=${encodeURIComponent('tracing.epsilon=-1')}&${SMALL}`);
   await settled(bad, 'error');
   check(/tracing\.epsilon/.test(await bad.textContent('#zeroset-error')), 'a bad --set names no key');
 };
@@ -528,7 +531,7 @@ cases['touch-drag-turns'] = async () => {
 };
 
 cases['drop-surf-loads'] = async () => {
-  const page = await openPage(`size=${SIZE[0]}x${SIZE[1]}`);
+  const page = await openPage(SMALL);
   await settled(page);
   await markBusy(page);
   const text = fs.readFileSync(path.join(sourceDir, 'examples', 'torus.surf'), 'utf8');
@@ -566,7 +569,7 @@ cases['languages'] = async () => {
     epsilon: document.querySelector('label[for="set-tracing-epsilon"]').textContent,
     caption: document.querySelector('#gallery li span').textContent,
   }));
-  const page = await openPage(`size=${SIZE[0]}x${SIZE[1]}`, { locale: 'es-ES' });
+  const page = await openPage(SMALL, { locale: 'es-ES' });
   await settled(page);
   let t = await texts(page);
   check(t.lang === 'es', `the Spanish browser got "${t.lang}"`);
@@ -592,7 +595,7 @@ cases['languages'] = async () => {
         `not back in English: ${JSON.stringify(t)}`);
 
   // lang= overrides the browser's Spanish.
-  const kiosk = await openPage(`kiosk=1&max-degree=4&lang=de&size=${SIZE[0]}x${SIZE[1]}`,
+  const kiosk = await openPage(`kiosk=1&max-degree=4&lang=de&${SMALL}`,
                                { touch: true, locale: 'es-ES' });
   await settled(kiosk);
   check((await texts(kiosk)).gallery === de('Gallery'), 'lang=de does not override the browser');

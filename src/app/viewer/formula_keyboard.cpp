@@ -1,4 +1,3 @@
-#include "i18n/translate.hpp"
 #include "app/viewer/formula_keyboard.hpp"
 
 #include <imgui.h>
@@ -8,6 +7,7 @@
 #include <cmath>
 #include <string_view>
 
+#include "i18n/translate.hpp"
 #include "interact/formula_keyboard.hpp"
 
 namespace zs::app {

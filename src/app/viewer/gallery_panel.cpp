@@ -1,4 +1,3 @@
-#include "i18n/translate.hpp"
 #include "app/viewer/gallery_panel.hpp"
 
 #include <imgui.h>
@@ -6,6 +5,8 @@
 
 #include <algorithm>
 #include <cstdint>
+
+#include "i18n/translate.hpp"
 
 namespace zs::app {
 

@@ -1,4 +1,3 @@
-#include "i18n/translate.hpp"
 #include "app/viewer/hover_probe.hpp"
 
 #include <imgui.h>
@@ -7,6 +6,7 @@
 #include <cstdio>
 #include <variant>
 
+#include "i18n/translate.hpp"
 #include "scene/scene_io.hpp"
 
 namespace zs::app {

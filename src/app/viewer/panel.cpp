@@ -15,9 +15,9 @@
 #include "app/viewer/fonts.hpp"
 #include "i18n/translate.hpp"
 #include "interact/key_bindings.hpp"
+#include "interact/parameter_range.hpp"
 #include "parser/parser.hpp"
 #include "scene/scene_io.hpp"
-#include "interact/parameter_range.hpp"
 
 namespace zs::app {
 // The camera motions and key actions are the interact stage's, shared with the web page.
@@ -148,8 +148,9 @@ void drawExports(PanelState& state, PanelResult& result) {
   if (ImGui::Button(print)) result.printPage = true;
 }
 
-// The language of every text of the viewer; the choice holds until the viewer closes.
-void drawLanguage() {
+// The language of every text of the viewer; the choice holds until the viewer closes (a
+// kiosk goes back to its start language when idle).
+void drawLanguage(PanelResult& result) {
   const auto all = i18n::languages();
   int current = 0;
   std::string items;
@@ -158,20 +159,25 @@ void drawLanguage() {
     (items += all[i].name) += '\0';
   }
   if (ImGui::Combo(i18n::label("language"), &current, items.c_str()))
-    i18n::setLanguage(all[std::size_t(current)].code);
+    result.languageChanged = i18n::setLanguage(all[std::size_t(current)].code);
 }
 
 void drawKeys(bool kiosk) {
   if (!ImGui::CollapsingHeader(i18n::label("keys and mouse"))) return;
   // Two columns: what to press, what it does (key names are the keyboard's, not translated).
-  auto row = [](const char* what, const char* does) {
+  // The first is as wide as its widest entry, which depends on the language.
+  const char* pointer[][2] = {{N_("left drag"), N_("rotate (arcball)")},
+                              {N_("wheel"), N_("zoom")},
+                              {N_("right drag"), N_("turn the key light")}};
+  float column = ImGui::CalcTextSize("Shift+D").x;
+  for (const auto& p : pointer) column = std::max(column, ImGui::CalcTextSize(i18n::tr(p[0])).x);
+  column += ImGui::GetFontSize();
+  auto row = [column](const char* what, const char* does) {
     ImGui::TextUnformatted(what);
-    ImGui::SameLine(ImGui::GetFontSize() * 7);
-    ImGui::TextUnformatted(does);
+    ImGui::SameLine(column);
+    ImGui::TextWrapped("%s", does);
   };
-  row(i18n::tr("left drag"), i18n::tr("rotate (arcball)"));
-  row(i18n::tr("wheel"), i18n::tr("zoom"));
-  row(i18n::tr("right drag"), i18n::tr("turn the key light"));
+  for (const auto& p : pointer) row(i18n::tr(p[0]), i18n::tr(p[1]));
   for (const KeyBinding& b : keyBindings()) {
     if (!kiosk || kioskAllows(b.action)) row(b.keyName, i18n::tr(b.description));
   }
@@ -225,7 +231,7 @@ PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats) 
     if (!state.kiosk) drawExports(state, result);
     drawSettings(scene);
     drawKeys(state.kiosk.has_value());
-    drawLanguage();
+    drawLanguage(result);
   }
   ImGui::End();
   result.sliderActive = ImGui::IsAnyItemActive() && !ImGui::GetIO().WantTextInput;

@@ -56,6 +56,7 @@ struct PanelResult {
   bool exportMesh = false;        // the "Export mesh" button was pressed
   bool printPage = false;         // the "Print page" button was pressed
   bool animating = false;         // a play button is sweeping a parameter
+  bool languageChanged = false;   // the language menu picked another language
 };
 
 PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats);

@@ -15,6 +15,7 @@
 
 #include "app/viewer/fonts.hpp"
 #include "app/viewer/formula_keyboard.hpp"
+#include "i18n/translate.hpp"
 #include "interact/trace_budget.hpp"
 
 namespace zs::app {
@@ -78,6 +79,7 @@ std::unique_ptr<Viewer> Viewer::open(const ViewerOptions& options, std::string& 
                                   v->examples_[std::size_t(options.exampleIndex)].name);
     v->stats_.example = v->startLabel_;
   }
+  v->startLanguage_ = i18n::currentLanguage();
   if (options.kiosk) {
     v->panel_.kiosk = options.kiosk;
     v->openGallery();
@@ -234,6 +236,7 @@ void Viewer::frame() {
   }
   // A sweeping play button counts as a drag: reduced-resolution traces keep it fluid.
   sliderActive_ = panel.sliderActive || panel.animating;
+  if (panel.languageChanged) relabel();
   if (panel.exportMesh) startMeshExport();
   if (panel.printPage) startPrint();
   // The formula box has the focus: the interpreters for first pictures are wanted now.

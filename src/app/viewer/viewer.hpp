@@ -137,7 +137,12 @@ class Viewer {
     std::string log;
     std::string status;
   };
+  // An error text as the panel shows it: "error: ..." in the viewer's language, once, on one
+  // line (the CLI's texts it wraps already start with "error: " and end with a newline).
+  static std::string panelError(std::string_view text);
   void finishFileJob(std::future<FileJobResult>& job);
+  // The example labels again, in the language just picked.
+  void relabel();
 
   ViewerOptions options_;
   std::unique_ptr<GlfwWindowContext> window_;
@@ -203,6 +208,7 @@ class Viewer {
   std::string lastBuildError_;    // of the latest build request, "" when it is on screen
   std::filesystem::path sceneFile_;      // where the shown scene was loaded from, if anywhere
   std::string startLabel_;               // the start scene's example label, if it is one
+  std::string startLanguage_;            // a kiosk's, restored for the next visitor
   std::chrono::steady_clock::time_point lastInput_ = std::chrono::steady_clock::now();
   bool inputSinceStart_ = false;         // kiosk: the start screen was left
   std::future<FileJobResult> meshExport_;  // a running export's summary

@@ -5,12 +5,12 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "i18n/translate.hpp"
 #include "app/repl/scene_edit.hpp"
 #include "app/viewer/viewer.hpp"
+#include "i18n/translate.hpp"
+#include "interact/parameter_range.hpp"
 #include "parser/parser.hpp"
 #include "pipeline/quick_surface.hpp"
-#include "interact/parameter_range.hpp"
 
 namespace zs::app {
 namespace {

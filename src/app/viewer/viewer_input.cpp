@@ -6,10 +6,10 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "app/viewer/viewer.hpp"
+#include "i18n/translate.hpp"
 #include "interact/arcball.hpp"
 #include "render/camera.hpp"
-#include "i18n/translate.hpp"
-#include "app/viewer/viewer.hpp"
 
 namespace zs::app {
 // The camera motions and key actions are the interact stage's, shared with the web page.
@@ -192,6 +192,8 @@ void Viewer::returnToStartIfIdle() {
   mouseButtons_.clear();
   std::fill(std::begin(buttonsDown_), std::end(buttonsDown_), false);
   hover_.clear();
+  // The exhibit's language for the next visitor.
+  if (i18n::currentLanguage() != startLanguage_ && i18n::setLanguage(startLanguage_)) relabel();
   // Only a changed scene is loaded again (a visitor who just passed by leaves it as it was).
   if (scene_ != options_.scene || panel_.formula != options_.scene.formula) {
     setScene(options_.scene, startLabel_);
@@ -224,6 +226,14 @@ void Viewer::showExampleAt(int index) {
     std::printf("example %d of %d: %s\n", exampleIndex_ + 1, n, example.name.c_str());
     std::fflush(stdout);
   }
+}
+
+void Viewer::relabel() {
+  const int n = int(examples_.size());
+  if (options_.exampleIndex >= 0 && options_.exampleIndex < n)
+    startLabel_ = exampleLabel(options_.exampleIndex, n, examples_[std::size_t(options_.exampleIndex)].name);
+  if (!stats_.example.empty() && exampleIndex_ >= 0 && exampleIndex_ < n)
+    stats_.example = exampleLabel(exampleIndex_, n, examples_[std::size_t(exampleIndex_)].name);
 }
 
 void Viewer::runAction(Action action) {

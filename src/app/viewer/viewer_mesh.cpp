@@ -34,8 +34,7 @@ void Viewer::startMeshExport() {
     MeshExportReport report;
     const std::string error = exportMesh(scene, request, report);
     glfwPostEmptyEvent();  // wake the loop to show it
-    if (!error.empty())
-      return FileJobResult{error, i18n::format(i18n::tr("error: %s"), error.c_str())};
+    if (!error.empty()) return FileJobResult{error, panelError(error)};
     return FileJobResult{meshSummary(report, request.output),
                          i18n::format(i18n::tr("mesh written: %s"), request.output.c_str())};
   });

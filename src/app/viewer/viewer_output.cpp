@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <cstring>
 
-#include "i18n/translate.hpp"
 #include "app/repl/scene_edit.hpp"
 #include "app/viewer/viewer.hpp"
+#include "i18n/translate.hpp"
 #include "render/image.hpp"
 
 namespace zs::app {
@@ -107,6 +107,12 @@ std::string Viewer::runOutput(const PromptCommand& command) {
   }
 }
 
+std::string Viewer::panelError(std::string_view text) {
+  if (text.substr(0, 7) == "error: ") text.remove_prefix(7);
+  while (!text.empty() && text.back() == '\n') text.remove_suffix(1);
+  return i18n::format(i18n::tr("error: %s"), std::string(text.substr(0, text.find('\n'))).c_str());
+}
+
 std::string Viewer::screenshot(const std::filesystem::path& path) {
   int width = 0, height = 0;
   window_->framebufferSize(width, height);
@@ -120,8 +126,8 @@ std::string Viewer::screenshot(const std::filesystem::path& path) {
     text = "screenshot: " + path.string() + "\n";
   }
   stats_.status = text.rfind("error: ", 0) == 0
-                      ? i18n::format(i18n::tr("error: %s"), text.substr(7).c_str())
-                      : i18n::format(i18n::tr("screenshot: %s"), path.c_str());
+                      ? panelError(text)
+                      : i18n::format(i18n::tr("screenshot: %s"), path.string().c_str());
   return text;
 }
 
@@ -138,9 +144,10 @@ void Viewer::captureWindow(int width, int height) {
     std::memcpy(&image.rgba[std::size_t(y) * stride], &rows[std::size_t(height - 1 - y) * stride], stride);
   const std::filesystem::path path = nextFreePath(options_.outputDir, "zeroset-window", ".png");
   const std::string err = writePng(path.string(), image);
-  stats_.status = err.empty() ? i18n::format(i18n::tr("window: %s"), path.c_str())
-                              : i18n::format(i18n::tr("error: %s"), err.c_str());
-  std::printf("%s\n", err.empty() ? ("window: " + path.string()).c_str() : ("error: " + err).c_str());
+  stats_.status = err.empty() ? i18n::format(i18n::tr("window: %s"), path.string().c_str())
+                              : panelError(err);
+  const std::string logged = err.empty() ? "window: " + path.string() : "error: " + err;
+  std::printf("%s\n", logged.c_str());
   std::fflush(stdout);
 }
 
@@ -149,8 +156,8 @@ std::string Viewer::save(const std::filesystem::path& path) {
   Scene saved = scene_;
   window_->framebufferSize(saved.width, saved.height);
   std::string text = writeSceneFile(path, saved);
-  stats_.status = text.empty() ? i18n::format(i18n::tr("saved: %s"), path.c_str())
-                               : i18n::format(i18n::tr("error: %s"), text.c_str());
+  stats_.status = text.empty() ? i18n::format(i18n::tr("saved: %s"), path.string().c_str())
+                               : panelError(text);
   if (text.empty()) text = "saved: " + path.string() + "\n";
   return text;
 }

@@ -4,10 +4,10 @@
 // "printed: PATH".
 #include <GLFW/glfw3.h>
 
-#include "i18n/translate.hpp"
 #include "app/print_job.hpp"
 #include "app/repl/scene_edit.hpp"
 #include "app/viewer/viewer.hpp"
+#include "i18n/translate.hpp"
 
 namespace zs::app {
 
@@ -27,10 +27,9 @@ void Viewer::startPrint() {
   print_ = std::async(std::launch::async, [job] {
     const std::string error = runPrintJob(job);
     glfwPostEmptyEvent();  // wake the loop to show it
-    if (!error.empty())
-      return FileJobResult{error, i18n::format(i18n::tr("error: %s"), error.c_str())};
+    if (!error.empty()) return FileJobResult{error, panelError(error)};
     return FileJobResult{"printed: " + job.output.string() + "\n",
-                         i18n::format(i18n::tr("printed: %s"), job.output.c_str())};
+                         i18n::format(i18n::tr("printed: %s"), job.output.string().c_str())};
   });
 }
 
