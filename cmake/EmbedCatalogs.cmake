@@ -31,6 +31,9 @@ if(CMAKE_SCRIPT_MODE_FILE)
       message(FATAL_ERROR "${path} has no \"X-Language-Name: ...\\n\" header line")
     endif()
     set(name "${CMAKE_MATCH_1}")
+    # Only what the reader uses is built in: comments, source references and obsolete
+    # messages are dropped; flag lines ("#, fuzzy") stay, since a fuzzy message is not used.
+    string(REGEX REPLACE "\n#[^,\n][^\n]*" "" text "\n${text}")
     string(APPEND body "    {\"${code}\", \"${name}\",\n     R\"${ZS_CATALOG_DELIMITER}(${text})${ZS_CATALOG_DELIMITER}\"},\n")
   endforeach()
   string(APPEND body "};\n}  // namespace\n\n")
