@@ -22,7 +22,7 @@
 namespace zs::test {
 namespace {
 
-constexpr int kFormulas = 1000;  // fuzz/ runs the same check on many more
+constexpr int kFormulas = 600;  // every depth and parameter count many times; fuzz/ runs many more
 
 RandomFormulaOptions optionsFor(int i) {
   RandomFormulaOptions o;
