@@ -27,6 +27,13 @@ constexpr std::size_t thirdIndex(std::size_t i, std::size_t j, std::size_t k) {
   return firstOf[a] + second[a][b] + (c - b);
 }
 
+// The output that holds d/dx_j of output o, for F, the gradient and the Hessian.
+constexpr std::size_t derivativeOf(std::size_t o, std::size_t j) {
+  if (o == kF) return kGrad + j;
+  if (o < kHess) return kHess + 3 * (o - kGrad) + j;
+  return kThird + thirdIndex((o - kHess) / 3, (o - kHess) % 3, j);
+}
+
 // F, grad F and the Hessian of one formula, as intervals over boxes and as doubles at points;
 // over boxes also the third derivatives, which only the Taylor forms need (a second tape
 // without them keeps the many evaluations at points cheap).
@@ -54,19 +61,19 @@ class Problem {
     // it: sign' = floor' = 0, min/max through sign) misses the jump, so the derivatives of
     // the next order do not bound the change over a box that holds the switch. Each
     // switch's argument is evaluated with the rest; a box where one may switch is not smooth.
-    const std::vector<NodeId> used = reachable(g, roots);
-    for (NodeId id : used) {
+    // (The kink's argument is the next output; atan2's x follows its y.)
+    auto watch = [&](Kink kind, NodeId argument) {
+      kinks_.push_back({kind, roots.size()});
+      roots.push_back(argument);
+    };
+    for (NodeId id : reachable(g, roots)) {
       const Node& n = g[id];
       switch (n.op) {
-        case Op::Abs: case Op::Sign: kinks_.push_back({Kink::AtZero, roots.size()}); roots.push_back(n.a); break;
-        case Op::Floor: case Op::Ceil: kinks_.push_back({Kink::AtInteger, roots.size()}); roots.push_back(n.a); break;
-        case Op::Min: case Op::Max:
-          kinks_.push_back({Kink::AtZero, roots.size()});
-          roots.push_back(g.binary(Op::Sub, n.a, n.b));
-          break;
+        case Op::Abs: case Op::Sign: watch(Kink::AtZero, n.a); break;
+        case Op::Floor: case Op::Ceil: watch(Kink::AtInteger, n.a); break;
+        case Op::Min: case Op::Max: watch(Kink::AtZero, g.binary(Op::Sub, n.a, n.b)); break;
         case Op::Atan2:  // the cut: y = 0, x < 0
-          kinks_.push_back({Kink::BranchCut, roots.size()});
-          roots.push_back(n.a);
+          watch(Kink::BranchCut, n.a);
           roots.push_back(n.b);
           break;
         default: break;
@@ -74,7 +81,7 @@ class Problem {
     }
     full_ = compileTape(g, roots);
     overBoxes_.emplace(full_);
-    extra_.resize(roots.size());
+    outputs_.resize(roots.size());
     overPoints_.emplace(base_);
     points_.emplace(base_);
   }
@@ -86,18 +93,10 @@ class Problem {
     bool smooth = true;
   };
   OverBox over(const Box& box) {
-    overBoxes_->eval(box, params_, extra_);
+    overBoxes_->eval(box, params_, outputs_);
     OverBox out;
-    std::copy_n(extra_.begin(), kOutputs, out.v.begin());
-    for (const auto& [kind, at] : kinks_) {
-      const Interval a = extra_[at];
-      const bool switches =
-          a.isEmpty() ||
-          (kind == Kink::AtZero && a.containsZero()) ||
-          (kind == Kink::AtInteger && !(std::floor(a.lo) == std::floor(a.hi) && std::floor(a.lo) != a.lo)) ||
-          (kind == Kink::BranchCut && a.containsZero() && !(extra_[at + 1].lo > 0));
-      out.smooth = out.smooth && !switches;
-    }
+    std::copy_n(outputs_.begin(), kOutputs, out.v.begin());
+    for (const auto& [kind, at] : kinks_) out.smooth = out.smooth && !maySwitch(kind, at);
     return out;
   }
   // F, grad F and the Hessian at a point, enclosed (the third derivatives are left empty).
@@ -115,9 +114,23 @@ class Problem {
 
  private:
   enum class Kink { AtZero, AtInteger, BranchCut };
+
+  // Whether the operation whose argument is output `at` may switch over the last box (an
+  // empty argument: it may).
+  bool maySwitch(Kink kind, std::size_t at) const {
+    const Interval a = outputs_[at];
+    if (a.isEmpty()) return true;
+    switch (kind) {
+      case Kink::AtZero: return a.containsZero();
+      case Kink::AtInteger: return std::floor(a.lo) != std::floor(a.hi) || std::floor(a.lo) == a.lo;
+      case Kink::BranchCut: return a.containsZero() && !(outputs_[at + 1].lo > 0);
+    }
+    return true;
+  }
+
   std::vector<double> params_;
   std::vector<std::pair<Kink, std::size_t>> kinks_;  // and the output of its argument
-  std::vector<Interval> extra_;                       // every output of the full tape
+  std::vector<Interval> outputs_;                     // every output of the full tape
   Tape base_, full_;
   std::optional<IntervalEvaluator> overBoxes_, overPoints_;
   std::optional<PointEvaluator> points_;
@@ -232,7 +245,48 @@ std::optional<std::array<double, 3>> newtonPoint(Problem& problem, std::array<do
   return std::nullopt;
 }
 
-Problem::OverBox tightened(Problem& problem, const Box& x, const std::array<double, 3>& m);
+// F, grad F and the Hessian over x, each the intersection of enclosures (an intersection of
+// enclosures is an enclosure): the direct interval evaluation, the mean-value form
+// f(m) + f'(x) d, and the second-order Taylor form f(m) + f'(m) d + d' f''(x) d / 2, with m
+// the middle of x and d = x - m. The direct bound of a polynomial of high degree suffers
+// from dependency and cancellation (the Sarti dodecic is a difference of two terms of size
+// |p|^12); the Taylor forms bound only what varies over x, and each order higher leaves an
+// excess that shrinks one power of the box's width faster. The Hessian gets the mean-value
+// form with the third derivatives. The forms need F smooth over x: where a piecewise
+// operation may switch, only the direct bounds are used.
+Problem::OverBox tightened(Problem& problem, const Box& x, const std::array<double, 3>& m) {
+  const Problem::OverBox direct = problem.over(x);
+  // Where a piecewise operation may switch, only the direct bounds hold.
+  if (!direct.smooth) return direct;
+  const std::array<Interval, kOutputs>& over = direct.v;
+  const auto atM = problem.enclosedAt(m);
+  std::array<Interval, 3> d;
+  for (std::size_t j = 0; j < 3; ++j)
+    d[j] = ia::sub(Interval{x.min[j], x.max[j]}, Interval::point(m[j]));
+  // A form that comes out empty (an infinite derivative times a zero width) proves nothing.
+  auto narrowed = [](Interval bound, Interval form) {
+    return form.isEmpty() ? bound : intersect(bound, form);
+  };
+  Problem::OverBox out = direct;
+  for (std::size_t o = 0; o < kThird; ++o) {
+    Interval mean = atM[o];  // f(m) + f'(x) d
+    for (std::size_t j = 0; j < 3; ++j)
+      mean = ia::add(mean, ia::mul(over[derivativeOf(o, j)], d[j]));
+    out.v[o] = narrowed(over[o], mean);
+    if (o >= kHess) continue;  // the Hessian's own second derivatives are not on the tape
+    // f(m) + f'(m) d + d' f''(x) d / 2: the squares are non-negative, cross terms count twice.
+    Interval taylor = atM[o];
+    for (std::size_t j = 0; j < 3; ++j) {
+      taylor = ia::add(taylor, ia::mul(atM[derivativeOf(o, j)], d[j]));
+      const Interval square = ia::mul(Interval::point(0.5), ia::powi(d[j], 2));
+      taylor = ia::add(taylor, ia::mul(over[derivativeOf(derivativeOf(o, j), j)], square));
+      for (std::size_t k = j + 1; k < 3; ++k)
+        taylor = ia::add(taylor, ia::mul(over[derivativeOf(derivativeOf(o, j), k)], ia::mul(d[j], d[k])));
+    }
+    out.v[o] = narrowed(out.v[o], taylor);
+  }
+  return out;
+}
 
 Box cubeAround(const std::array<double, 3>& p, double radius) {
   return Box{{p[0] - radius, p[1] - radius, p[2] - radius},
@@ -262,77 +316,11 @@ std::optional<Box> uniquenessCube(Problem& problem, const std::array<double, 3>&
   return cubeAround(p, radius);
 }
 
-// F, grad F and the Hessian over x, each the intersection of enclosures (an intersection of
-// enclosures is an enclosure): the direct interval evaluation, the mean-value form
-// f(m) + f'(x) d, and the second-order Taylor form f(m) + f'(m) d + d' f''(x) d / 2, with m
-// the middle of x and d = x - m. The direct bound of a polynomial of high degree suffers
-// from dependency and cancellation (the Sarti dodecic is a difference of two terms of size
-// |p|^12); the Taylor forms bound only what varies over x, and each order higher leaves an
-// excess that shrinks one power of the box's width faster. The Hessian gets the mean-value
-// form with the third derivatives. The forms need F smooth over x: where a piecewise
-// operation may switch, only the direct bounds are used.
-Problem::OverBox tightened(Problem& problem, const Box& x, const std::array<double, 3>& m) {
-  const Problem::OverBox direct = problem.over(x);
-  // Where a piecewise operation may switch, only the direct bounds hold.
-  if (!direct.smooth) return direct;
-  const std::array<Interval, kOutputs>& over = direct.v;
-  const auto atM = problem.enclosedAt(m);
-  std::array<Interval, 3> d;
-  for (std::size_t j = 0; j < 3; ++j)
-    d[j] = ia::sub(Interval{x.min[j], x.max[j]}, Interval::point(m[j]));
-  // d' A d / 2 for a symmetric A given by a(j, k): the squares are non-negative, and the
-  // cross terms count twice.
-  auto halfQuadratic = [&](auto a) {
-    Interval sum = Interval::point(0);
-    for (std::size_t j = 0; j < 3; ++j) {
-      sum = ia::add(sum, ia::mul(ia::mul(Interval::point(0.5), a(j, j)), ia::powi(d[j], 2)));
-      for (std::size_t k = j + 1; k < 3; ++k)
-        sum = ia::add(sum, ia::mul(a(j, k), ia::mul(d[j], d[k])));
-    }
-    return sum;
-  };
-  auto linear = [&](auto a, const std::array<Interval, kOutputs>& from) {
-    Interval sum = Interval::point(0);
-    for (std::size_t j = 0; j < 3; ++j) sum = ia::add(sum, ia::mul(a(j, from), d[j]));
-    return sum;
-  };
-  // A form that comes out empty (an infinite derivative times a zero width) proves nothing.
-  auto narrowed = [](Interval direct, Interval form) {
-    return form.isEmpty() ? direct : intersect(direct, form);
-  };
-  Problem::OverBox out = direct;
-  // F
-  const Interval fMean = ia::add(atM[kF], linear([](std::size_t j, const auto& v) { return v[kGrad + j]; }, over));
-  const Interval fTaylor =
-      ia::add(ia::add(atM[kF], linear([](std::size_t j, const auto& v) { return v[kGrad + j]; }, atM)),
-              halfQuadratic([&](std::size_t j, std::size_t k) { return over[kHess + 3 * j + k]; }));
-  out.v[kF] = narrowed(narrowed(over[kF], fMean), fTaylor);
-  // grad F
-  for (std::size_t c = 0; c < 3; ++c) {
-    auto hessianRow = [c](std::size_t j, const auto& v) { return v[kHess + 3 * c + j]; };
-    const Interval mean = ia::add(atM[kGrad + c], linear(hessianRow, over));
-    const Interval taylor =
-        ia::add(ia::add(atM[kGrad + c], linear(hessianRow, atM)),
-                halfQuadratic([&](std::size_t j, std::size_t k) { return over[kThird + thirdIndex(c, j, k)]; }));
-    out.v[kGrad + c] = narrowed(narrowed(over[kGrad + c], mean), taylor);
-  }
-  // The Hessian
-  for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 3; ++j) {
-      const Interval mean = ia::add(
-          atM[kHess + 3 * i + j],
-          linear([i, j](std::size_t k, const auto& v) { return v[kThird + thirdIndex(i, j, k)]; }, over));
-      out.v[kHess + 3 * i + j] = narrowed(over[kHess + 3 * i + j], mean);
-    }
-  return out;
-}
-
 // False when interval arithmetic proves F or a component of grad F has no zero in x.
 bool mayHoldSingularPoint(Problem& problem, const Box& x) {
   const auto bounds = tightened(problem, x, middle(x)).v;
-  auto holdsZero = [](Interval v) { return !v.isEmpty() && v.containsZero(); };
-  for (std::size_t c = 0; c < 4; ++c)
-    if (!holdsZero(bounds[kF + c])) return false;
+  for (std::size_t c = kF; c < kHess; ++c)
+    if (!bounds[c].containsZero()) return false;  // false for an empty interval too
   return true;
 }
 
@@ -398,9 +386,8 @@ std::variant<SingularResult, std::string> findSingularPoints(const Formula& form
       return "singular point search stopped after " + std::to_string(settings.boxBudget) +
              " boxes; shrink the domain, lower --depth or raise --budget";
     if (ball && boxOutsideBall(x, *ball)) continue;
-    if (!mayHoldSingularPoint(problem, x)) continue;
-
     if (claimedBy(x)) continue;  // its only zero of grad F is a point already found
+    if (!mayHoldSingularPoint(problem, x)) continue;
 
     // Krawczyk on a slightly inflated copy, so a zero on a face of x is certified too (by
     // both neighbours: duplicates are merged below).
@@ -418,7 +405,7 @@ std::variant<SingularResult, std::string> findSingularPoints(const Formula& form
       if (strictlyInside(k, xi)) {
         unique.push_back(xi);
         const Interval fk = problem.over(k).v[kF];
-        if (fk.isEmpty() || !fk.containsZero()) continue;  // a critical point off the surface
+        if (!fk.containsZero()) continue;  // a critical point off the surface
         accept(refine(problem, m, k), k);
         continue;
       }
@@ -430,16 +417,11 @@ std::variant<SingularResult, std::string> findSingularPoints(const Formula& form
       // A Newton point in x proven unique in a cube around it: the point is found, and the
       // part of x the cube covers needs no more search.
       const std::optional<std::array<double, 3>> p = newtonPoint(problem, m);
-      if (p && holds(xi, *p)) {
-        bool known = false;
-        for (const Box& u : unique) known = known || holds(u, *p);
-        if (!known) {
-          if (const std::optional<Box> cube = uniquenessCube(problem, *p, widest(x))) {
-            unique.push_back(*cube);
-            const Interval fc = problem.over(*cube).v[kF];
-            if (!fc.isEmpty() && fc.containsZero()) accept(*p, *cube);
-            if (within(x, *cube)) continue;
-          }
+      if (p && holds(xi, *p) && !claimedBy(Box{*p, *p})) {
+        if (const std::optional<Box> cube = uniquenessCube(problem, *p, widest(x))) {
+          unique.push_back(*cube);
+          if (problem.over(*cube).v[kF].containsZero()) accept(*p, *cube);
+          if (within(x, *cube)) continue;
         }
       }
     }
