@@ -707,9 +707,9 @@ function buildTexts() {
 // A setting's label: its key ("tracing.epsilon", the name .surf files and --set use), or in
 // another language its words translated ("trazado · épsilon").
 function keyLabel(key) {
-  const words = key.split('.');
-  const shown = words.map((w) => tr(w.replace(/_/g, ' ')));
-  return shown.every((w, i) => w === words[i].replace(/_/g, ' ')) ? key : shown.join(' · ');
+  const words = key.split('.').map((w) => w.replace(/_/g, ' '));
+  const shown = words.map(tr);
+  return shown.every((w, i) => w === words[i]) ? key : shown.join(' · ');
 }
 
 function buildGallery() {

@@ -72,8 +72,6 @@ std::string headerField(const std::string& header, std::string_view name) {
 
 std::variant<Catalog, PoError> parsePo(std::string_view text) {
   Catalog catalog;
-  enum class Field { None, Id, Str };
-  Field field = Field::None;
   std::string id, str;
   bool haveId = false, haveStr = false, fuzzy = false;
   int idLine = 0;  // where the message being read starts
@@ -90,7 +88,6 @@ std::variant<Catalog, PoError> parsePo(std::string_view text) {
     id.clear();
     str.clear();
     haveId = haveStr = fuzzy = false;
-    field = Field::None;
   };
 
   int lineNumber = 0;
@@ -131,7 +128,6 @@ std::variant<Catalog, PoError> parsePo(std::string_view text) {
       id = *s;
       haveId = true;
       idLine = lineNumber;
-      field = Field::Id;
       continue;
     }
     if (startsWith(line, "msgstr")) {
@@ -140,14 +136,13 @@ std::variant<Catalog, PoError> parsePo(std::string_view text) {
       if (!s) return PoError{lineNumber, error};
       str = *s;
       haveStr = true;
-      field = Field::Str;
       continue;
     }
     if (line[0] == '"') {
       auto s = quoted(line, error);
       if (!s) return PoError{lineNumber, error};
-      if (field == Field::Id) id += *s;
-      else if (field == Field::Str) str += *s;
+      if (haveStr) str += *s;  // continues the msgstr, or the msgid before it
+      else if (haveId) id += *s;
       else return PoError{lineNumber, "a continued string outside a msgid or msgstr"};
       continue;
     }

@@ -8,7 +8,6 @@
 #include <map>
 #include <mutex>
 #include <stdexcept>
-#include <unordered_map>
 #include <variant>
 #include <vector>
 
@@ -44,9 +43,9 @@ const Loaded& loaded() {
 
 struct State {
   std::mutex mutex;
-  std::string_view code = "en";  // into languages(), which lives as long as the program
+  std::string_view code = "en";
   const Catalog* catalog = nullptr;
-  std::unordered_map<std::string, std::string> labels;  // of the current language
+  StringMap<std::string> labels;  // of the current language
 };
 
 State& state() {
@@ -58,15 +57,25 @@ State& state() {
 
 std::span<const Language> languages() { return loaded().languages; }
 
-std::string knownLanguage(std::string_view tag) {
+namespace {
+
+// The language a tag names ("es_ES.UTF-8", "de-AT", "ES"), or nothing.
+const Language* findLanguage(std::string_view tag) {
   std::string code;
   for (char c : tag) {
     if (c == '_' || c == '-' || c == '.' || c == '@') break;
     code += char(std::tolower(static_cast<unsigned char>(c)));
   }
   for (const Language& l : languages())
-    if (l.code == code) return code;
-  return {};
+    if (l.code == code) return &l;
+  return nullptr;
+}
+
+}  // namespace
+
+std::string knownLanguage(std::string_view tag) {
+  const Language* l = findLanguage(tag);
+  return l ? std::string(l->code) : std::string();
 }
 
 std::string languageFromEnvironment() {
@@ -95,17 +104,14 @@ std::string languageFromEnvironment() {
 }
 
 bool setLanguage(std::string_view tag) {
-  const std::string code = knownLanguage(tag);
-  if (code.empty()) return false;
-  std::string_view stable;
-  for (const Language& l : languages())
-    if (l.code == code) stable = l.code;
+  const Language* language = findLanguage(tag);
+  if (!language) return false;
   State& s = state();
   std::lock_guard lock(s.mutex);
-  if (s.code == code) return true;
-  s.code = stable;
+  if (s.code == language->code) return true;
+  s.code = language->code;  // a view into languages(), which lives as long as the program
   const auto& catalogs = loaded().catalogs;
-  const auto it = catalogs.find(code);
+  const auto it = catalogs.find(language->code);
   s.catalog = it == catalogs.end() ? nullptr : &it->second;
   s.labels.clear();
   return true;
@@ -121,7 +127,7 @@ namespace {
 
 const char* translated(const State& s, const char* english) {
   if (!s.catalog) return english;
-  const auto it = s.catalog->messages.find(english);
+  const auto it = s.catalog->messages.find(std::string_view(english));
   return it == s.catalog->messages.end() ? english : it->second.c_str();
 }
 
@@ -138,8 +144,9 @@ std::string tr(const std::string& english) { return tr(english.c_str()); }
 const char* label(const char* english) {
   State& s = state();
   std::lock_guard lock(s.mutex);  // one lock: the cached label is of the language it is for
-  auto [it, inserted] = s.labels.try_emplace(english);
-  if (inserted) it->second = std::string(translated(s, english)) + "###" + english;
+  auto it = s.labels.find(std::string_view(english));
+  if (it == s.labels.end())
+    it = s.labels.emplace(english, std::string(translated(s, english)) + "###" + english).first;
   return it->second.c_str();
 }
 

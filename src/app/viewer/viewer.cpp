@@ -75,8 +75,7 @@ std::unique_ptr<Viewer> Viewer::open(const ViewerOptions& options, std::string& 
   v->sceneFile_ = options.sceneFile;
   if (options.exampleIndex >= 0 && std::size_t(options.exampleIndex) < v->examples_.size()) {
     v->exampleIndex_ = options.exampleIndex;
-    v->startLabel_ = exampleLabel(options.exampleIndex, int(v->examples_.size()),
-                                  v->examples_[std::size_t(options.exampleIndex)].name);
+    v->relabel();  // the start label
     v->stats_.example = v->startLabel_;
   }
   v->startLanguage_ = i18n::currentLanguage();
