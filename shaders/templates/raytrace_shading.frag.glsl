@@ -11,6 +11,9 @@
 //   RT_KEY_LIGHT  unit vector towards the first directional light (the singular markers).
 //   RT_COLOR      0 material, 1 Gaussian curvature, 2 mean curvature, 3 normal; a
 //                 curvature coloring leaves its value in rtShadeValue (raytrace_main's).
+//   RT_SURFACES   several surfaces (codegen's surfaces block): each hit is shaded with
+//                 the normal and material of the surface it lies on; RT_INTERSECTION
+//                 marks where two of them meet.
 //   RT_SHADOWS    shading.shadows: the entries are RT_DIRECTIONAL_SHADOWED(i, ...) and
 //                 RT_POINT_SHADOWED(i, ...), light i adding nothing where bit i of
 //                 rtShadowMask (raytrace_main's shadow rays) is set.
@@ -67,17 +70,41 @@ vec3 rtDiverging(float v) {
 #endif
 
 vec3 shade(vec3 p, vec4 g, vec3 rd) {
+#ifdef RT_SURFACES
+  // Several surfaces are traced as the product of their functions, whose gradient at a hit
+  // is the hit surface's times the other factors: the surface p lies on gives the normal,
+  // its side and the material instead (zs_surfaceAt, generated with the formula).
+  vec4 product = g;
+  int surface;
+  float other;
+  g = zs_surfaceAt(p, surface, other);
+#endif
   float g2 = dot(g.xyz, g.xyz);
   float inv = g2 > 0.0 ? inversesqrt(g2) : 0.0;
   float cosine = dot(g.xyz, rd) * inv;
   bool front = cosine < 0.0;
   vec3 n = g2 > 0.0 ? g.xyz * (front ? inv : -inv) : -rd;
   vec4 phong = front ? rt.frontPhong : rt.backPhong;  // (ambient, diffuse, specular, shininess)
+  vec3 base = front ? rt.frontColor : rt.backColor;
+#ifdef RT_SURFACES
+  if (surface > 0) {
+    phong = front ? zs_surfaceFrontPhong[surface - 1] : zs_surfaceBackPhong[surface - 1];
+    base = front ? zs_surfaceFrontColor[surface - 1] : zs_surfaceBackColor[surface - 1];
+  }
+#endif
   vec3 diffuse = vec3(0.0), specular = vec3(0.0);
   RT_LIGHTS
-  vec3 base = front ? rt.frontColor : rt.backColor;
 #if RT_COLOR == 1 || RT_COLOR == 2
+#ifdef RT_SURFACES
+  // The product's zero set has the hit surface's curvature, oriented by the product's
+  // gradient: the mean curvature turns sign where the other factors are negative.
+  rtShadeValue = rtCurvature(p, product.xyz);
+#if RT_COLOR == 2
+  if (dot(product.xyz, g.xyz) < 0.0) rtShadeValue = -rtShadeValue;
+#endif
+#else
   rtShadeValue = rtCurvature(p, g.xyz);
+#endif
   base = rtDiverging(rtShadeValue);
 #endif
   vec3 color = base * (phong.x + phong.y * diffuse) + phong.z * specular;
@@ -92,6 +119,10 @@ vec3 shade(vec3 p, vec4 g, vec3 rd) {
   float k = level.w / rt.contourSpacing;
   if (abs(k - floor(k + 0.5)) * rt.contourSpacing < 0.5 * rt.contourWidth * slope)
     color = rt.contourColor;  // false for NaN: no line where g is undefined
+#endif
+#ifdef RT_INTERSECTION
+  // Where another surface passes within the tolerance, measured to first order.
+  if (other < zs_intersectionTolerance) color = zs_intersectionColor;
 #endif
   if ((rt.silhouetteOn != 0) && abs(cosine) < rt.silhouetteThreshold) color = rt.silhouetteColor;
   if ((rt.borderOn != 0) && domainDepth(p) < rt.borderThreshold) color = rt.borderColor;

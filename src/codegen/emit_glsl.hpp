@@ -16,6 +16,7 @@
 #include <array>
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "expr/graph.hpp"
 
@@ -38,5 +39,32 @@ GlslFormula emitFormulaGlsl(Formula& formula);
 // for a function g of x, y, z. Joined to the formula block; g may not have parameters
 // (returns "" if it has: the scene refuses such a function).
 std::string emitContourGlsl(Formula& function);
+
+// How one surface of several is lit (its front and back material, ambient already times
+// the scene's ambient light: (ambient, diffuse, specular, shininess)).
+struct SurfaceLook {
+  std::array<double, 3> frontColor{}, backColor{};
+  std::array<double, 4> frontPhong{}, backPhong{};
+};
+
+// The curves where two surfaces meet, highlighted (highlights.intersection).
+struct IntersectionLook {
+  bool enabled = true;
+  double tolerance = 0.02;
+  std::array<double, 3> color{};
+};
+
+// The surfaces block, for a scene of several surfaces traced as the product of their
+// functions (scene_io.hpp, parseSceneFormula): `#define RT_SURFACES n` and
+//   vec4 zs_surfaceAt(vec3 p, out int surface, out float other)
+// which returns the gradient (xyz) and value (w) of the surface p lies on (the one nearest
+// to first order, |F| / |grad F|), its index, and the same distance to the nearest other
+// one; the materials of surfaces 1.. (surface 0 takes the frame's) as zs_surfaceFront* /
+// zs_surfaceBack* constants, and, when the highlight is on, RT_INTERSECTION with its
+// tolerance and color. `roots` are the surfaces' functions, nodes of g (which must be the
+// graph of the formula block, so parameters share zs_params); `looks` has one entry per root.
+std::string emitSurfacesGlsl(Graph& g, const std::vector<NodeId>& roots,
+                             const std::vector<SurfaceLook>& looks,
+                             const IntersectionLook& intersection);
 
 }  // namespace zs

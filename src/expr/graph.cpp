@@ -198,6 +198,29 @@ NodeId Graph::binary(Op op, NodeId a, NodeId b) {
   return intern(n);
 }
 
+NodeId copyInto(Graph& to, const Graph& from, NodeId root) {
+  std::vector<NodeId> mapped(from.size(), kNoNode);
+  for (const NodeId id : reachable(from, {root})) {
+    const Node& n = from[id];
+    NodeId m = kNoNode;
+    switch (n.op) {
+      case Op::Const: m = to.constant(n.value); break;
+      case Op::VarX: m = to.var(0); break;
+      case Op::VarY: m = to.var(1); break;
+      case Op::VarZ: m = to.var(2); break;
+      case Op::Param: m = to.param(from.params()[static_cast<std::size_t>(n.ival)]); break;
+      case Op::PowI: m = to.powi(mapped[static_cast<std::size_t>(n.a)], n.ival); break;
+      default:
+        m = opInfo(n.op).arity == 1
+                ? to.unary(n.op, mapped[static_cast<std::size_t>(n.a)])
+                : to.binary(n.op, mapped[static_cast<std::size_t>(n.a)],
+                            mapped[static_cast<std::size_t>(n.b)]);
+    }
+    mapped[static_cast<std::size_t>(id)] = m;
+  }
+  return mapped[static_cast<std::size_t>(root)];
+}
+
 std::vector<NodeId> reachable(const Graph& g, const std::vector<NodeId>& roots) {
   std::vector<char> mark(g.size(), 0);
   for (NodeId r : roots) mark[static_cast<std::size_t>(r)] = 1;

@@ -76,6 +76,10 @@ class Graph {
   std::vector<std::string> params_;
 };
 
+// The node `root` of `from` rebuilt in `to` (through to's builder methods, so shared
+// subexpressions merge and parameters match by name); returns its id in `to`.
+NodeId copyInto(Graph& to, const Graph& from, NodeId root);
+
 // Nodes reachable from `roots`, in increasing id order (a topological order).
 std::vector<NodeId> reachable(const Graph& g, const std::vector<NodeId>& roots);
 

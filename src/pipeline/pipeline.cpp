@@ -1,5 +1,6 @@
 #include "pipeline/pipeline.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <limits>
@@ -99,6 +100,26 @@ void findMarkedPoints(const Scene& scene, PreparedSurface& s) {
                      "(zeroset singular lists them)\n";
 }
 
+// Each surface's function as a node of the product's graph (the same nodes the product
+// was built from), with its materials and the intersection highlight.
+std::string surfacesBlock(const Scene& scene, Graph& graph) {
+  std::vector<NodeId> roots;
+  std::vector<SurfaceLook> looks;
+  const double ambient = std::max(scene.render.lights.ambient, 0.0);
+  auto phong = [&](const Material& m) {
+    return std::array<double, 4>{m.ambient * ambient, m.diffuse, m.specular,
+                                 std::max(m.shininess, 0.0)};
+  };
+  for (std::size_t i = 0; i < surfaceCount(scene); ++i) {
+    const Formula f = std::get<Formula>(parseSurfaceFormula(scene, i));  // parsed before
+    roots.push_back(copyInto(graph, f.graph, f.root));
+    const Materials& m = i == 0 ? scene.render.materials : scene.moreSurfaces[i - 1].materials;
+    looks.push_back({m.front.color, m.back.color, phong(m.front), phong(m.back)});
+  }
+  const Highlight& h = scene.render.intersection;
+  return emitSurfacesGlsl(graph, roots, looks, {h.enabled, h.threshold, h.color});
+}
+
 }  // namespace
 
 BoxHierarchy tracingHierarchy(const Formula& formula, std::span<const double> params,
@@ -116,8 +137,14 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
                                                           const PrepareOptions& options) {
   PreparedSurface s;
   auto t = std::chrono::steady_clock::now();
-  ParseResult parsed = parseSceneFormula(scene);
-  if (auto* err = std::get_if<ParseError>(&parsed)) return formatError(scene.formula, *err);
+  std::size_t failedSurface = 0;
+  ParseResult parsed = parseSceneFormula(scene, &failedSurface);
+  if (auto* err = std::get_if<ParseError>(&parsed))
+    return formatSceneFormulaError(scene, failedSurface, *err);
+  if (surfaceCount(scene) > 1 && scene.render.mode == RenderMode::Volume)
+    return "error: render.mode = \"volume\" draws the field of one function, and this scene "
+           "has " + std::to_string(surfaceCount(scene)) + " surfaces\n"
+           "hint: keep one [[surface]], or draw them as surfaces (render.mode = \"surface\")\n";
   s.formula = std::get<Formula>(std::move(parsed));
   s.gradient = gradient(s.formula.graph, s.formula.root);
   s.params = paramValues(scene, s.formula.graph);
@@ -152,6 +179,7 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
              " has parameters; it may use only x, y, z and constants\n";
     s.glsl.source += block;
   }
+  if (surfaceCount(scene) > 1) s.glsl.source += surfacesBlock(scene, s.formula.graph);
   std::string markers;
   if (scene.render.singular.enabled) {
     if (options.markedPoints) s.singularPoints = *options.markedPoints;

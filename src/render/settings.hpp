@@ -263,6 +263,9 @@ struct RenderSettings {
   std::vector<ClipPlane> clipPlanes;  // at most kMaxClipPlanes
   // The curve where the surface meets a clip plane: hits closer to a plane than this.
   Highlight cut{true, 0.02, {0.85, 0.12, 0.1}};
+  // The curves where two surfaces of the scene meet: hits whose distance to another
+  // surface (|F| / |grad F|, to first order) is below this.
+  Highlight intersection{true, 0.02, {0.1, 0.1, 0.1}};
   Reflection reflection;
   double opacity = 1.0;  // < 1 blends the kept hits front to back
   int samples = 1;       // N x N supersampling

@@ -34,7 +34,7 @@ SceneResult parseScene(std::string_view text, std::string_view fileName) {
   try {
     const toml::table doc = toml::parse(text, fileName);
     if (auto err = applyDocument(scene, doc, src)) return *err;
-    if (!doc.contains(kFormulaKey)) {
+    if (!doc.contains(kFormulaKey) && !doc.contains(kSurfacesKey)) {
       return src.error({1, 1}, "formula", "the scene has no formula",
                        "add formula = \"...\" before the first [table], e.g. "
                        "formula = \"x^2 + y^2 + z^2 - 1\"");
@@ -81,13 +81,57 @@ SceneResult loadSceneOrFormula(std::string_view arg) {
   return scene;
 }
 
-ParseResult parseSceneFormula(const Scene& scene) {
-  ParseResult parsed = parseFormula(scene.formula);
-  if (scene.level == 0) return parsed;
+Materials surfaceMaterials(std::size_t i) {
+  // Front and back colors far apart in hue from every other surface's.
+  static const Materials kPalette[kMaxSurfaces] = {
+      Materials{},
+      {{{0.25, 0.65, 0.45}, 0.5, 40.0}, {{0.8, 0.8, 0.35}, 0.5, 40.0}},
+      {{{0.6, 0.4, 0.8}, 0.5, 40.0}, {{0.9, 0.6, 0.7}, 0.5, 40.0}},
+      {{{0.8, 0.3, 0.3}, 0.5, 40.0}, {{0.95, 0.75, 0.55}, 0.5, 40.0}},
+  };
+  return kPalette[i % kMaxSurfaces];
+}
+
+std::size_t surfaceCount(const Scene& scene) {
+  return 1 + scene.moreSurfaces.size();
+}
+
+const std::string& surfaceFormula(const Scene& scene, std::size_t i) {
+  return i == 0 ? scene.formula : scene.moreSurfaces[i - 1].formula;
+}
+
+ParseResult parseSurfaceFormula(const Scene& scene, std::size_t i) {
+  ParseResult parsed = parseFormula(surfaceFormula(scene, i));
+  const double level = i == 0 ? scene.level : scene.moreSurfaces[i - 1].level;
+  if (level == 0) return parsed;
   if (auto* f = std::get_if<Formula>(&parsed)) {
-    f->root = f->graph.binary(Op::Sub, f->root, f->graph.constant(scene.level));
+    f->root = f->graph.binary(Op::Sub, f->root, f->graph.constant(level));
   }
   return parsed;
+}
+
+ParseResult parseSceneFormula(const Scene& scene, std::size_t* failedSurface) {
+  ParseResult parsed = parseSurfaceFormula(scene, 0);
+  if (failedSurface) *failedSurface = 0;
+  auto* product = std::get_if<Formula>(&parsed);
+  for (std::size_t i = 1; product && i < surfaceCount(scene); ++i) {
+    ParseResult factor = parseSurfaceFormula(scene, i);
+    if (std::holds_alternative<ParseError>(factor)) {
+      if (failedSurface) *failedSurface = i;
+      return factor;
+    }
+    const Formula& f = std::get<Formula>(factor);
+    product->root = product->graph.binary(Op::Mul, product->root,
+                                          copyInto(product->graph, f.graph, f.root));
+  }
+  return parsed;
+}
+
+std::string formatSceneFormulaError(const Scene& scene, std::size_t surface,
+                                    const ParseError& error) {
+  const std::string text = formatError(surfaceFormula(scene, surface), error);
+  if (surfaceCount(scene) == 1) return text;
+  return "surface " + std::to_string(surface + 1) + ":\n" + text;
 }
 
 std::vector<double> paramValues(const Scene& scene, const Graph& graph) {

@@ -58,6 +58,13 @@ class Reader {
   std::optional<SceneError> entry(const std::string& name, const toml::key& key,
                                   const toml::node& node) {
     seen_.push_back({name, &src_, positionOf(node)});
+    if (surfaceListRead_ && (name == kFormulaKey || name.starts_with("materials."))) {
+      return src_.error(positionOf(node), name,
+                        name + " describes the first surface, but this file lists its surfaces "
+                               "in [[surface]] tables",
+                        "move it into the first [[surface]] table (formula = ..., front.color = "
+                        "...)");
+    }
     if (name == kFormulaKey) return formula(node);
     if (name == kParamsKey) return params(node);
     if (const ListSpec* list = findList(name)) return this->list(*list, node);
@@ -143,6 +150,11 @@ class Reader {
     if (const toml::table* numbered = node.as_table()) {
       for (const auto& [index, value] : inFileOrder(*numbered)) {
         const std::string name = key + "." + std::string(index->str());
+        // [surface] level = 1: a key of the table that shares the list's name.
+        if (entryNumber(index->str()) == 0 && findKey(name) != nullptr) {
+          if (auto err = this->entry(name, *index, *value)) return err;
+          continue;
+        }
         const std::size_t n = entryNumber(index->str());
         if (n == 0 || n > size) {
           return src_.error(positionOf(*index), name,
@@ -153,7 +165,7 @@ class Reader {
                                       : noun + "s are numbered from 1 to " + std::to_string(size) +
                                             ", in the order of the [[" + key + "]] entries");
         }
-        if (auto err = entry(spec, *value, name, scene_, n - 1)) return err;
+        if (auto err = entry(spec, *value, name, scene_, n - 1, false)) return err;
       }
       return std::nullopt;
     }
@@ -175,14 +187,34 @@ class Reader {
                             std::to_string(array->size()),
                         std::string(spec.tooManyHint));
     }
+    if (spec.name == kSurfacesKey) {
+      if (array->empty()) {
+        return src_.error(positionOf(node), key, "a scene needs at least one surface",
+                          "give each surface a [[surface]] table with its formula");
+      }
+      for (auto it = seen_.rbegin(); it != seen_.rend(); ++it) {
+        if (it->src != &src_) break;  // only this document's keys conflict
+        if (it->key == kFormulaKey || it->key.starts_with("materials.")) {
+          return src_.error(it->pos, it->key,
+                            it->key + " describes the first surface, but this file lists its "
+                                      "surfaces in [[surface]] tables",
+                            "move it into the first [[surface]] table (formula = ..., "
+                            "front.color = ...)");
+        }
+      }
+    }
     Scene read = scene_;
     spec.resize(read, array->size());
-    Scene fresh;  // a new entry starts from an entry's defaults, not from the old list's
-    spec.resize(fresh, 0);
-    spec.resize(fresh, 1);
     for (std::size_t i = 0; i < array->size(); ++i) {
+      Scene fresh;  // a new entry starts from an entry's defaults, not from the old list's
+      if (spec.fresh) {
+        spec.fresh(fresh, i);
+      } else {
+        spec.resize(fresh, 0);
+        spec.resize(fresh, 1);
+      }
       spec.store(fresh, read, i);
-      if (auto err = entry(spec, (*array)[i], key + "." + std::to_string(i + 1), read, i))
+      if (auto err = entry(spec, (*array)[i], key + "." + std::to_string(i + 1), read, i, true))
         return err;
     }
     spec.resize(scene_, array->size());
@@ -192,6 +224,7 @@ class Reader {
       spec.store(scratch, scene_, i);
     }
     if (spec.name == kLightSourcesKey) listRead_ = true;
+    if (spec.name == kSurfacesKey) surfaceListRead_ = true;
     return std::nullopt;
   }
 
@@ -207,31 +240,60 @@ class Reader {
   }
 
   // The keys of entry i of `spec`'s list in `target`, through a scratch scene holding just
-  // that entry (the list's key specs address its first element).
+  // that entry (the list's key specs address its first element). A whole entry (`complete`,
+  // an element of an array) must have the list's required key.
   std::optional<SceneError> entry(const ListSpec& spec, const toml::node& node,
-                                  const std::string& name, Scene& target, std::size_t i) {
+                                  const std::string& name, Scene& target, std::size_t i,
+                                  bool complete) {
     const toml::table* table = node.as_table();
     if (!table) {
       return src_.error(positionOf(node), name, name + " must be a table, got " + typeName(node),
                         "a " + std::string(spec.noun) + " is a table: " + std::string(spec.example));
     }
+    if (complete && !spec.requiredKey.empty() && !table->contains(spec.requiredKey)) {
+      const std::string required(spec.requiredKey);
+      return src_.error(positionOf(node), name + "." + required,
+                        "this " + std::string(spec.noun) + " has no " + required,
+                        "every [[" + std::string(spec.name) + "]] table needs one: " +
+                            std::string(spec.example));
+    }
     Scene scratch;
     spec.entry(target, i, scratch);
-    for (const auto& [key, value] : inFileOrder(*table)) {
-      const std::string dotted = name + "." + std::string(key->str());
+    if (auto err = entryKeys(spec, *table, name, "", scratch)) return err;
+    spec.store(scratch, target, i);
+    return std::nullopt;
+  }
+
+  // The keys of one entry's table; a sub-table (front = { color = ... }) holds the keys
+  // that start with its name (front.color).
+  std::optional<SceneError> entryKeys(const ListSpec& spec, const toml::table& table,
+                                      const std::string& name, const std::string& prefix,
+                                      Scene& scratch) {
+    for (const auto& [key, value] : inFileOrder(table)) {
+      const std::string local = prefix + std::string(key->str());
+      const std::string dotted = name + "." + local;
       seen_.push_back({dotted, &src_, positionOf(*value)});
-      const KeySpec* keySpec = findListKey(spec, key->str());
+      const KeySpec* keySpec = findListKey(spec, local);
+      const toml::table* sub = value->as_table();
+      if (!keySpec && sub) {
+        const bool holdsKeys = std::any_of(spec.keys.begin(), spec.keys.end(), [&](const KeySpec& k) {
+          return k.name.starts_with(local + ".");
+        });
+        if (holdsKeys) {
+          if (auto err = entryKeys(spec, *sub, name, local + ".", scratch)) return err;
+          continue;
+        }
+      }
       if (!keySpec) {
         std::vector<std::string_view> names;
         for (const KeySpec& k : spec.keys) names.push_back(k.name);
         return src_.error(positionOf(*key), dotted, "unknown key \"" + dotted + "\"",
-                          choiceHint(key->str(), names));
+                          choiceHint(local, names));
       }
       KeySpec named = *keySpec;
       named.name = dotted;  // messages name the entry
       if (auto err = readLeaf(scratch, named, *value, src_)) return err;
     }
-    spec.store(scratch, target, i);
     return std::nullopt;
   }
 
@@ -240,6 +302,7 @@ class Reader {
   KeyHistory& seen_;
   bool legacyRead_ = false;  // this document set lights.directional.* or lights.point.*
   bool listRead_ = false;    // this document replaced the list with [[lights.source]]
+  bool surfaceListRead_ = false;  // this document listed its surfaces as [[surface]]
 };
 
 // An error about keys that constrain each other, placed at the latest-written of `keys`

@@ -64,9 +64,22 @@ std::string saveScene(const Scene& scene);
 //     hint: ...
 std::string formatSceneError(const SceneError& error);
 
-// The scene's formula, parsed, as the function whose zero set is drawn: F - surface.level
-// (F itself at level 0). Errors point into scene.formula, as parseFormula's do.
-ParseResult parseSceneFormula(const Scene& scene);
+// How many surfaces the scene draws (1 + moreSurfaces), and surface i's formula text.
+std::size_t surfaceCount(const Scene& scene);
+const std::string& surfaceFormula(const Scene& scene, std::size_t i);
+
+// Surface i (0: the scene's own formula) parsed as the function whose zero set is drawn:
+// F - level (F itself at level 0). Errors point into surfaceFormula(scene, i).
+ParseResult parseSurfaceFormula(const Scene& scene, std::size_t i);
+
+// The function whose zero set is the whole picture: surface 0's, or for several surfaces the
+// product of theirs, whose zero set is their union. On error `failedSurface` (when given)
+// says which surface's formula the error points into.
+ParseResult parseSceneFormula(const Scene& scene, std::size_t* failedSurface = nullptr);
+
+// The parser's error placed under the formula of `surface`, named when there are several.
+std::string formatSceneFormulaError(const Scene& scene, std::size_t surface,
+                                    const ParseError& error);
 
 // The values of the formula's parameters in graph.params() order: the scene's value where
 // it has one, kDefaultParamValue otherwise.

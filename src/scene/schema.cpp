@@ -120,6 +120,9 @@ const KeySpec kKeys[] = {
     {"highlights.cut.enabled", ZS_FIELD(render.cut.enabled), kAny},
     {"highlights.cut.tolerance", ZS_FIELD(render.cut.threshold), kNonNegative},
     {"highlights.cut.color", ZS_FIELD(render.cut.color), kUnit},
+    {"highlights.intersection.enabled", ZS_FIELD(render.intersection.enabled), kAny},
+    {"highlights.intersection.tolerance", ZS_FIELD(render.intersection.threshold), kNonNegative},
+    {"highlights.intersection.color", ZS_FIELD(render.intersection.color), kUnit},
     {"highlights.singular.enabled", ZS_FIELD(render.singular.enabled), kAny},
     {"highlights.singular.radius", ZS_FIELD(render.singular.threshold), kPositive},
     {"highlights.singular.color", ZS_FIELD(render.singular.color), kUnit},
@@ -150,7 +153,32 @@ const KeySpec kClipPlaneKeys[] = {
     {"offset", ZS_FIELD(render.clipPlanes.front().offset), kAny},
 };
 
+// One [[surface]] entry, addressing the first of Scene::moreSurfaces as the light keys do
+// (the list's entry() and store() map entry 1 to the scene's own formula and materials).
+#define ZS_SURFACE(member) ZS_FIELD(moreSurfaces.front().member)
+const KeySpec kSurfaceKeys[] = {
+    {"formula", ZS_SURFACE(formula), kAny, false, -1, true},
+    {"level", ZS_SURFACE(level), kAny},
+    {"front.color", ZS_SURFACE(materials.front.color), kUnit},
+    {"front.ambient", ZS_SURFACE(materials.front.ambient), kUnit},
+    {"front.diffuse", ZS_SURFACE(materials.front.diffuse), kUnit},
+    {"front.specular", ZS_SURFACE(materials.front.specular), kUnit},
+    {"front.shininess", ZS_SURFACE(materials.front.shininess), {0, 10000}},
+    {"back.color", ZS_SURFACE(materials.back.color), kUnit},
+    {"back.ambient", ZS_SURFACE(materials.back.ambient), kUnit},
+    {"back.diffuse", ZS_SURFACE(materials.back.diffuse), kUnit},
+    {"back.specular", ZS_SURFACE(materials.back.specular), kUnit},
+    {"back.shininess", ZS_SURFACE(materials.back.shininess), {0, 10000}},
+};
+#undef ZS_SURFACE
+
 #undef ZS_FIELD
+
+// Surface i of a scene (0: the scene's own formula, level and materials) as an entry.
+SurfaceEntry surfaceAt(const Scene& s, std::size_t i) {
+  if (i > 0) return s.moreSurfaces[i - 1];
+  return SurfaceEntry{s.formula, s.level, s.render.materials};
+}
 
 const ListSpec kLists[] = {
     {kLightSourcesKey, "light", kLightKeys, static_cast<std::size_t>(kMaxLights),
@@ -177,6 +205,34 @@ const ListSpec kLists[] = {
        to.render.clipPlanes[i] = scratch.render.clipPlanes.front();
      },
      ""},
+    {kSurfacesKey, "surface", kSurfaceKeys, static_cast<std::size_t>(kMaxSurfaces),
+     "{ formula = \"x^2 + y^2 + z^2 - 1\" }",
+     "combine surfaces into one formula (a product F*G draws both) or drop one",
+     [](const Scene& s) { return 1 + s.moreSurfaces.size(); },
+     [](Scene& s, std::size_t n) {
+       const std::size_t old = 1 + s.moreSurfaces.size();
+       s.moreSurfaces.resize(n > 0 ? n - 1 : 0);
+       for (std::size_t i = std::max<std::size_t>(old, 1); i < n; ++i)
+         s.moreSurfaces[i - 1].materials = surfaceMaterials(i);
+     },
+     [](const Scene& from, std::size_t i, Scene& scratch) {
+       scratch.moreSurfaces = {surfaceAt(from, i)};
+     },
+     [](const Scene& scratch, Scene& to, std::size_t i) {
+       const SurfaceEntry& e = scratch.moreSurfaces.front();
+       if (i > 0) {
+         to.moreSurfaces[i - 1] = e;
+         return;
+       }
+       to.formula = e.formula;
+       to.level = e.level;
+       to.render.materials = e.materials;
+     },
+     "", "formula",
+     [](Scene& scratch, std::size_t i) {
+       scratch.moreSurfaces = {SurfaceEntry{}};
+       scratch.moreSurfaces.front().materials = surfaceMaterials(i);
+     }},
 };
 
 }  // namespace

@@ -17,7 +17,8 @@ using IntRef = int& (*)(Scene&);
 using SizeRef = std::size_t& (*)(Scene&);
 using RealRef = double& (*)(Scene&);
 using VecRef = Vec3& (*)(Scene&);
-// A formula of x, y, z without parameters (shading.contours.function), kept as its text.
+// A formula kept as its text: of x, y, z alone (shading.contours.function), or with the
+// scene's parameters too where the key says `takesParams` (a [[surface]]'s formula).
 using FunctionRef = std::string& (*)(Scene&);
 
 struct EnumRef {
@@ -47,6 +48,7 @@ struct KeySpec {
   // >= 0: an old name of that entry of lights.sources (lights.directional.*, lights.point.*),
   // read only while the list still has the thesis' shape, and never written.
   int legacyLight = -1;
+  bool takesParams = false;  // FunctionRef: the formula may use parameters
 };
 
 std::span<const KeySpec> keySpecs();
@@ -69,6 +71,11 @@ struct ListSpec {
   void (*store)(const Scene& scratch, Scene& to, std::size_t i);
   // The key of the table after whose keys the writer puts the entries ("" : at the end).
   std::string_view writtenAfter;
+  // An entry's key that must be given (the reader refuses an entry without it); "" : none.
+  std::string_view requiredKey = {};
+  // Entry i as a new entry of the list starts out (null: as the first entry of a default
+  // scene).
+  void (*fresh)(Scene& scratch, std::size_t i) = nullptr;
 };
 
 std::span<const ListSpec> listSpecs();
@@ -83,5 +90,8 @@ inline constexpr std::string_view kFormulaKey = "formula";
 inline constexpr std::string_view kParamsKey = "params";
 inline constexpr std::string_view kLightSourcesKey = "lights.source";  // [[lights.source]]
 inline constexpr std::string_view kClipPlanesKey = "clip.plane";       // [[clip.plane]]
+// [[surface]]: a scene with several surfaces lists all of them, the first included, in
+// these entries; one with a single surface may use formula, surface.level and materials.
+inline constexpr std::string_view kSurfacesKey = "surface";
 
 }  // namespace zs::scene_detail

@@ -156,7 +156,9 @@ std::optional<SceneError> readLeaf(Scene& scene, const KeySpec& spec, const toml
           if (!node.is_string()) return typeError(node, key, "a string", src);
           std::string text = *node.value<std::string>();
           const auto offsets = stringSourceMap(src.text(), src.offsetOf(positionOf(node)), text);
-          if (auto err = checkFunctionOfXyz(text, src, offsets, key)) return err;
+          if (auto err = spec.takesParams ? checkFormula(text, src, offsets, key)
+                                          : checkFunctionOfXyz(text, src, offsets, key))
+            return err;
           ref(scene) = std::move(text);
         } else {
           static_assert(std::is_same_v<Ref, EnumRef>);

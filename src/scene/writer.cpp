@@ -102,11 +102,18 @@ std::string saveScene(const Scene& scene) {
   // untouched without casting const away.
   Scene copy = scene;
   std::string out = "# zeroset scene: every key is described in docs/surf-format.md\n";
-  out += "formula = " + tomlString(scene.formula) + "\n";
+  // Several surfaces are all written as [[surface]] tables, the first one's formula, level
+  // and materials included (TOML cannot have both [surface] and [[surface]]).
+  const bool surfaceList = !scene.moreSurfaces.empty();
+  auto describesFirstSurface = [](std::string_view key) {
+    return key == "surface.level" || key.starts_with("materials.");
+  };
+  if (!surfaceList) out += "formula = " + tomlString(scene.formula) + "\n";
   bool paramsWritten = false;
   std::string_view table;
   for (const KeySpec& spec : keySpecs()) {
     if (spec.legacyLight >= 0) continue;  // the lights are written as [[lights.source]]
+    if (surfaceList && describesFirstSurface(spec.name)) continue;
     const auto dot = spec.name.rfind('.');
     const std::string_view prefix = dot == std::string_view::npos ? "" : spec.name.substr(0, dot);
     const std::string_view leaf =
@@ -128,8 +135,10 @@ std::string saveScene(const Scene& scene) {
     for (const ListSpec& list : listSpecs())
       if (spec.name == list.writtenAfter) out += listText(scene, list);
   }
-  for (const ListSpec& list : listSpecs())
+  for (const ListSpec& list : listSpecs()) {
+    if (list.name == kSurfacesKey && !surfaceList) continue;  // the formula said it all
     if (list.writtenAfter.empty()) out += listText(scene, list);
+  }
   return out;
 }
 
