@@ -43,14 +43,12 @@ int runProbe(const ProbeArgs& args) {
               << "hint: e.g. --pixel 400,300, counted from the top-left pixel (0,0)\n";
     return 1;
   }
-  ParseResult parsed = parseSceneFormula(*scene);
-  if (auto* err = std::get_if<ParseError>(&parsed)) {
-    std::cerr << formatError(scene->formula, *err);
+  SceneProbe probe(*scene);
+  if (!probe.error().empty()) {
+    std::cerr << probe.error();
     return 1;
   }
-  const Formula& formula = std::get<Formula>(parsed);
-  auto result =
-      probePixel(formula, paramValues(*scene, formula.graph), *scene, width, height, x, y);
+  auto result = probe.pixel(*scene, width, height, x, y);
   if (auto* err = std::get_if<std::string>(&result)) {
     std::cerr << "error: " << *err << "\n";
     return 1;

@@ -23,30 +23,30 @@ struct SingularArgs {
   std::string csv, json;
 };
 
-int runSingular(const SingularArgs& args) {
-  std::optional<Scene> scene = loadSceneArgs(args.scene);
-  if (!scene) return 1;
-  ParseResult parsed = parseSceneFormula(*scene);
+// One surface's singular points: the table on stdout, the CSV and JSON files if asked.
+bool reportSurface(const SingularArgs& args, const Scene& scene, std::size_t i, std::size_t count) {
+  ParseResult parsed = parseSceneFormula(scene);
   if (auto* err = std::get_if<ParseError>(&parsed)) {
-    std::cerr << formatError(scene->formula, *err);
-    return 1;
+    std::cerr << formatError(scene.formula, *err);
+    return false;
   }
   const Formula& formula = std::get<Formula>(parsed);
   SingularSettings settings;
   settings.maxDepth = args.depth;
   settings.boxBudget = args.budget;
-  const Box box = toBox(scene->domain);
-  auto found = findSingularPoints(formula, paramValues(*scene, formula.graph), box,
-                                  toBall(scene->domain), settings);
+  const Box box = toBox(scene.domain);
+  auto found = findSingularPoints(formula, paramValues(scene, formula.graph), box,
+                                  toBall(scene.domain), settings);
   if (auto* err = std::get_if<std::string>(&found)) {
     std::cerr << "error: " << *err << "\n";
-    return 1;
+    return false;
   }
   const SingularResult& result = std::get<SingularResult>(found);
-  std::cout << "singular points of " << scene->formula << " = 0 in ";
-  if (scene->domain.shape == DomainShape::Sphere) {
-    std::printf("the ball of center (%g, %g, %g), radius %g\n", scene->domain.center[0],
-                scene->domain.center[1], scene->domain.center[2], scene->domain.radius);
+  if (count > 1) std::cout << (i > 0 ? "\n" : "") << "surface " << i + 1 << " of " << count << ": ";
+  std::cout << "singular points of " << scene.formula << " = 0 in ";
+  if (scene.domain.shape == DomainShape::Sphere) {
+    std::printf("the ball of center (%g, %g, %g), radius %g\n", scene.domain.center[0],
+                scene.domain.center[1], scene.domain.center[2], scene.domain.radius);
   } else {
     std::printf("[%g, %g] x [%g, %g] x [%g, %g]\n", box.min[0], box.max[0], box.min[1],
                 box.max[1], box.min[2], box.max[2]);
@@ -54,8 +54,22 @@ int runSingular(const SingularArgs& args) {
   std::fflush(stdout);
   std::cout << singularTable(result);
   bool ok = true;
-  if (!args.csv.empty()) ok = writeTextFile(args.csv, singularCsv(result)) && ok;
-  if (!args.json.empty()) ok = writeTextFile(args.json, singularJson(result)) && ok;
+  if (!args.csv.empty())
+    ok = writeTextFile(surfacePath(args.csv, i, count), singularCsv(result)) && ok;
+  if (!args.json.empty())
+    ok = writeTextFile(surfacePath(args.json, i, count), singularJson(result)) && ok;
+  return ok;
+}
+
+// Each surface of a scene on its own: the points where two surfaces cross are not
+// singular points of either.
+int runSingular(const SingularArgs& args) {
+  std::optional<Scene> scene = loadSceneArgs(args.scene);
+  if (!scene) return 1;
+  const std::size_t count = surfaceCount(*scene);
+  bool ok = true;
+  for (std::size_t i = 0; i < count; ++i)
+    ok = reportSurface(args, surfaceScene(*scene, i), i, count) && ok;
   return ok ? 0 : 1;
 }
 

@@ -19,6 +19,13 @@ void addSceneOptions(CLI::App& cmd, SceneArgs& args, bool inputRequired) {
                  "--set camera.eye=[0,0,3] --set params.a=0.2 (repeatable)")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  auto* surface = cmd.add_option("--surface", args.surfaces,
+                                 "one more surface drawn with the input's, a formula such as "
+                                 "\"x^2+y^2-0.3\" (repeatable; --set surface.2.KEY=VALUE sets "
+                                 "its level and material)")
+                      ->expected(1)
+                      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  unprotectFormula(*surface);
 }
 
 namespace {
@@ -41,6 +48,22 @@ std::optional<Scene> loadSceneArgs(const SceneArgs& args) {
     return std::nullopt;
   }
   Scene scene = std::get<Scene>(std::move(loaded));
+  for (const std::string& formula : args.surfaces) {
+    if (surfaceCount(scene) >= static_cast<std::size_t>(kMaxSurfaces)) {
+      std::cerr << "error: --surface: at most " << kMaxSurfaces << " surfaces in a scene\n"
+                << "hint: combine surfaces into one formula (a product F*G draws both)\n";
+      return std::nullopt;
+    }
+    const ParseResult parsed = parseFormula(formula);
+    if (const auto* err = std::get_if<ParseError>(&parsed)) {
+      std::cerr << "--surface:\n" << formatError(formula, *err);
+      return std::nullopt;
+    }
+    SurfaceEntry entry;
+    entry.formula = formula;
+    entry.materials = surfaceMaterials(surfaceCount(scene));
+    scene.moreSurfaces.push_back(std::move(entry));
+  }
   // All --set at once: keys that constrain each other are checked after the last one.
   if (auto err = applyOverrides(scene, args.sets)) {
     std::cerr << formatSceneError(*err);

@@ -15,9 +15,10 @@ namespace zs::app {
 struct SceneArgs {
   std::string input;
   std::vector<std::string> sets;
+  std::vector<std::string> surfaces;  // --surface: more surfaces after the input's
 };
 
-// Adds the positional SCENE|FORMULA and the repeatable --set to a subcommand.
+// Adds the positional SCENE|FORMULA and the repeatable --set and --surface to a subcommand.
 void addSceneOptions(CLI::App& cmd, SceneArgs& args, bool inputRequired = true);
 
 std::optional<Scene> loadSceneArgs(const SceneArgs& args);

@@ -13,4 +13,13 @@ bool writeTextFile(const std::filesystem::path& path, const std::string& text) {
   return false;
 }
 
+std::filesystem::path surfacePath(const std::filesystem::path& path, std::size_t i,
+                                  std::size_t count) {
+  if (count <= 1) return path;
+  std::filesystem::path numbered = path;
+  numbered.replace_filename(path.stem().string() + "-" + std::to_string(i + 1) +
+                            path.extension().string());
+  return numbered;
+}
+
 }  // namespace zs::app

@@ -92,6 +92,13 @@ SurferFormula surferFormula(const std::string& formula, std::vector<std::string>
 }  // namespace
 
 std::variant<Exported, std::string> exportJsurf(const Scene& scene) {
+  if (!scene.moreSurfaces.empty()) {
+    return "error: cannot export to SURFER: this scene has " +
+           std::to_string(1 + scene.moreSurfaces.size()) +
+           " surfaces, and a SURFER scene draws one\n"
+           "hint: export one surface at a time (keep one [[surface]]), or draw their union as "
+           "one formula, the product F*G\n";
+  }
   Exported out;
   // SURFER draws F = 0: a level c is exported as the formula (F) - (c).
   std::string text = scene.formula;

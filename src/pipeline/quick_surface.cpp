@@ -16,6 +16,8 @@ std::variant<QuickSurface, std::string> prepareQuickSurface(const Scene& scene) 
     return std::string("the tape interpreter has no second derivatives (shading.color)");
   if (scene.render.singular.enabled)
     return std::string("the tape interpreter draws no singular-point markers");
+  if (surfaceCount(scene) > 1)
+    return std::string("the tape interpreter draws one surface's materials");
   ParseResult parsed = parseSceneFormula(scene);
   if (auto* err = std::get_if<ParseError>(&parsed)) return formatError(scene.formula, *err);
   Formula formula = std::get<Formula>(std::move(parsed));

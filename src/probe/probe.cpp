@@ -12,6 +12,7 @@
 #include "expr/derivative.hpp"
 #include "expr/tape.hpp"
 #include "interval/tape_eval.hpp"
+#include "scene/scene_io.hpp"
 
 namespace zs {
 namespace {
@@ -245,6 +246,53 @@ std::variant<ProbeResult, std::string> SurfaceProbe::pixel(std::span<const doubl
              scene.render.clipPlanes);
 }
 
+namespace {
+
+std::vector<std::pair<std::string, double>> functionsOf(const Scene& scene) {
+  std::vector<std::pair<std::string, double>> out{{scene.formula, scene.level}};
+  for (const SurfaceEntry& e : scene.moreSurfaces) out.emplace_back(e.formula, e.level);
+  return out;
+}
+
+}  // namespace
+
+SceneProbe::SceneProbe(const Scene& scene) : functions_(functionsOf(scene)) {
+  for (std::size_t i = 0; i < surfaceCount(scene); ++i) {
+    ParseResult parsed = parseSurfaceFormula(scene, i);
+    if (auto* err = std::get_if<ParseError>(&parsed)) {
+      error_ = formatSceneFormulaError(scene, i, *err);
+      probes_.clear();
+      return;
+    }
+    formulas_.push_back(std::get<Formula>(std::move(parsed)));
+  }
+  for (const Formula& f : formulas_) probes_.push_back(std::make_unique<SurfaceProbe>(f));
+}
+
+SceneProbe::~SceneProbe() = default;
+
+bool SceneProbe::sameSurfaces(const Scene& scene) const {
+  return functions_ == functionsOf(scene);
+}
+
+std::variant<ProbeResult, std::string> SceneProbe::pixel(const Scene& scene, int width,
+                                                         int height, int x, int y) {
+  if (!error_.empty()) return error_;
+  ProbeResult nearest;
+  for (std::size_t i = 0; i < probes_.size(); ++i) {
+    auto result = probes_[i]->pixel(paramValues(scene, formulas_[i].graph), scene, width, height,
+                                    x, y);
+    if (std::holds_alternative<std::string>(result)) return result;
+    const ProbeResult& r = std::get<ProbeResult>(result);
+    if (r.hit && (!nearest.hit || r.t < nearest.t)) {
+      nearest = r;
+      nearest.surface = static_cast<int>(i);
+    }
+  }
+  nearest.surfaces = static_cast<int>(probes_.size());
+  return nearest;
+}
+
 std::variant<ProbeResult, std::string> probeRay(const Formula& formula,
                                                 std::span<const double> params,
                                                 const Domain& domain, const Ray& ray) {
@@ -277,7 +325,9 @@ std::string jsonNumber(double v) {
 
 std::string probeText(const ProbeResult& r) {
   if (!r.hit) return "hit: false\n";
-  return "point: " + vec(r.point, " ") + "\nF: " + number(r.value) +
+  const std::string surface =
+      r.surfaces > 1 ? "surface: " + std::to_string(r.surface + 1) + "\n" : "";
+  return surface + "point: " + vec(r.point, " ") + "\nF: " + number(r.value) +
          "\ngradient: " + vec(r.gradient, " ") + "\nnormal: " + vec(r.normal, " ") +
          "\nK: " + number(r.gaussian) + "\nH: " + number(r.mean) + "\nk1: " + number(r.k1) +
          "\nk2: " + number(r.k2) + "\n";
@@ -288,7 +338,9 @@ std::string probeJson(const ProbeResult& r) {
   auto arr = [](const Vec3& v) {
     return "[" + jsonNumber(v[0]) + ", " + jsonNumber(v[1]) + ", " + jsonNumber(v[2]) + "]";
   };
-  return "{\"hit\": true, \"t\": " + jsonNumber(r.t) + ", \"point\": " + arr(r.point) +
+  const std::string surface =
+      r.surfaces > 1 ? ", \"surface\": " + std::to_string(r.surface + 1) : "";
+  return "{\"hit\": true" + surface + ", \"t\": " + jsonNumber(r.t) + ", \"point\": " + arr(r.point) +
          ", \"F\": " + jsonNumber(r.value) + ", \"gradient\": " + arr(r.gradient) +
          ", \"normal\": " + arr(r.normal) + ", \"K\": " + jsonNumber(r.gaussian) +
          ", \"H\": " + jsonNumber(r.mean) + ", \"k1\": " + jsonNumber(r.k1) +

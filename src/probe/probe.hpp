@@ -10,7 +10,9 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <utility>
 #include <variant>
+#include <vector>
 
 #include "parser/parser.hpp"
 #include "render/camera.hpp"
@@ -27,6 +29,9 @@ struct ProbeResult {
   // grad F / |grad F| and the curvatures; NaN where grad F = 0 (a singular point).
   Vec3 normal{};
   double gaussian = 0, mean = 0, k1 = 0, k2 = 0;
+  // In a scene of `surfaces` surfaces, the one hit (0-based; its F, gradient and curvature).
+  int surface = 0;
+  int surfaces = 1;
 };
 
 // One formula prepared for probing: its gradient and Hessian and the tapes that evaluate
@@ -51,6 +56,27 @@ class SurfaceProbe {
  private:
   struct Evaluators;
   std::unique_ptr<Evaluators> eval_;
+};
+
+// Every surface of a scene prepared for probing: a pixel's result is the nearest of their
+// first hits, with that surface's own F, gradient and curvatures (a scene of several
+// surfaces is traced as their product, whose gradient would mix them). Not thread-safe.
+class SceneProbe {
+ public:
+  // Parses the scene's formulas; on an error (as parseSceneFormula's) error() says it.
+  explicit SceneProbe(const Scene& scene);
+  ~SceneProbe();
+  const std::string& error() const { return error_; }
+  // True when `scene` draws the same functions (formulas and levels) as the one probed.
+  bool sameSurfaces(const Scene& scene) const;
+  std::variant<ProbeResult, std::string> pixel(const Scene& scene, int width, int height, int x,
+                                               int y);
+
+ private:
+  std::vector<std::pair<std::string, double>> functions_;  // formula and level of each
+  std::vector<Formula> formulas_;
+  std::vector<std::unique_ptr<SurfaceProbe>> probes_;
+  std::string error_;
 };
 
 // The first root along `ray` inside the domain (box, or ball), or hit = false. An error

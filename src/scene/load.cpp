@@ -127,6 +127,17 @@ ParseResult parseSceneFormula(const Scene& scene, std::size_t* failedSurface) {
   return parsed;
 }
 
+Scene surfaceScene(const Scene& scene, std::size_t i) {
+  Scene one = scene;
+  one.moreSurfaces.clear();
+  if (i == 0) return one;
+  const SurfaceEntry& e = scene.moreSurfaces[i - 1];
+  one.formula = e.formula;
+  one.level = e.level;
+  one.render.materials = e.materials;
+  return one;
+}
+
 std::string formatSceneFormulaError(const Scene& scene, std::size_t surface,
                                     const ParseError& error) {
   const std::string text = formatError(surfaceFormula(scene, surface), error);

@@ -77,6 +77,10 @@ ParseResult parseSurfaceFormula(const Scene& scene, std::size_t i);
 // says which surface's formula the error points into.
 ParseResult parseSceneFormula(const Scene& scene, std::size_t* failedSurface = nullptr);
 
+// The scene with surface i alone: its formula, level and materials in the scene's own
+// fields, every other setting kept (what the per-surface commands work on).
+Scene surfaceScene(const Scene& scene, std::size_t i);
+
 // The parser's error placed under the formula of `surface`, named when there are several.
 std::string formatSceneFormulaError(const Scene& scene, std::size_t surface,
                                     const ParseError& error);

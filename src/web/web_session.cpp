@@ -195,8 +195,8 @@ std::variant<ProbeResult, std::string> WebSession::probe(int x, int y, int width
                                                          int height) const {
   if (!surface_) return std::string("nothing is drawn yet");
   // Made at the first probe of a surface: a page that never hovers never pays for it.
-  if (!probe_) probe_ = std::make_unique<SurfaceProbe>(surface_->formula);
-  return probe_->pixel(surface_->params, scene_, width, height, x, y);
+  if (!probe_ || !probe_->sameSurfaces(scene_)) probe_ = std::make_unique<SceneProbe>(scene_);
+  return probe_->pixel(scene_, width, height, x, y);
 }
 
 void WebSession::beginDrag() {

@@ -133,7 +133,7 @@ class WebSession {
   Camera dragStart_;
   std::optional<PreparedSurface> surface_;
   Scene preparedScene_;  // the scene surface_ was prepared from
-  mutable std::unique_ptr<SurfaceProbe> probe_;  // surface_'s, made at its first probe
+  mutable std::unique_ptr<SceneProbe> probe_;  // scene_'s surfaces, made at their first probe
   GpuHierarchy gpu_;
   std::vector<float> params_;
   std::optional<QuickSurface> quick_;

@@ -21,22 +21,12 @@ bool HoverProbe::update(const Scene& scene, double x, double y, int width, int h
     return false;
   lastX_ = px, lastY_ = py, lastW_ = width, lastH_ = height;
   lastScene_ = scene;
-  if (scene.formula != formulaText_ || scene.level != level_ || !formula_) {
-    formulaText_ = scene.formula;
-    level_ = scene.level;
-    ParseResult parsed = parseSceneFormula(scene);
-    formula_.reset();
-    probe_.reset();
-    if (auto* f = std::get_if<Formula>(&parsed)) {
-      formula_ = std::move(*f);
-      probe_ = std::make_unique<SurfaceProbe>(*formula_);
-    }
-  }
-  if (!probe_) {
+  if (!probe_ || !probe_->sameSurfaces(scene)) probe_ = std::make_unique<SceneProbe>(scene);
+  if (!probe_->error().empty()) {
     clear();
     return false;
   }
-  auto result = probe_->pixel(paramValues(scene, formula_->graph), scene, width, height, px, py);
+  auto result = probe_->pixel(scene, width, height, px, py);
   if (auto* r = std::get_if<ProbeResult>(&result); r && r->hit) {
     shown_ = *r;
     return true;
@@ -58,6 +48,7 @@ void HoverProbe::draw() const {
   if (!shown_) return;
   const ProbeResult& r = *shown_;
   ImGui::BeginTooltip();
+  if (r.surfaces > 1) ImGui::Text(i18n::tr("surface %d of %d"), r.surface + 1, r.surfaces);
   ImGui::Text(i18n::tr("point  %.5g, %.5g, %.5g"), r.point[0], r.point[1], r.point[2]);
   ImGui::Text(i18n::tr("normal %.4f, %.4f, %.4f"), r.normal[0], r.normal[1], r.normal[2]);
   ImGui::Text("|grad F| %.5g", std::hypot(r.gradient[0], r.gradient[1], r.gradient[2]));

@@ -26,10 +26,7 @@ class HoverProbe {
   void draw() const;
 
  private:
-  std::string formulaText_;  // what formula_ was parsed from, with level_
-  double level_ = 0;
-  std::optional<Formula> formula_;
-  std::unique_ptr<SurfaceProbe> probe_;  // formula_'s, made when it changes
+  std::unique_ptr<SceneProbe> probe_;  // the scene's surfaces, made again when they change
   Scene lastScene_;
   int lastX_ = -1, lastY_ = -1, lastW_ = 0, lastH_ = 0;
   std::optional<ProbeResult> shown_;

@@ -9,6 +9,8 @@
 #include "app/mesh_export.hpp"
 #include "app/repl/scene_edit.hpp"
 #include "app/viewer/viewer.hpp"
+#include "scene/scene_io.hpp"
+#include "app/text_output.hpp"
 #include "i18n/translate.hpp"
 
 namespace zs::app {
@@ -31,12 +33,23 @@ void Viewer::startMeshExport() {
   request.output = nextFreePath(dir, stem + "-level" + std::to_string(request.settings.level), ".stl").string();
   stats_.status = i18n::format(i18n::tr("exporting a mesh at level %d..."), request.settings.level);
   meshExport_ = std::async(std::launch::async, [scene = scene_, request] {
-    MeshExportReport report;
-    const std::string error = exportMesh(scene, request, report);
+    // One mesh per surface, as `zeroset mesh` writes them (stem-1.stl, stem-2.stl...).
+    const std::size_t count = surfaceCount(scene);
+    std::string summary;
+    for (std::size_t i = 0; i < count; ++i) {
+      MeshExport one = request;
+      one.output = surfacePath(request.output, i, count).string();
+      MeshExportReport report;
+      const std::string error = exportMesh(surfaceScene(scene, i), one, report);
+      if (!error.empty()) {
+        glfwPostEmptyEvent();
+        return FileJobResult{error, panelError(error)};
+      }
+      summary += meshSummary(report, one.output);
+    }
     glfwPostEmptyEvent();  // wake the loop to show it
-    if (!error.empty()) return FileJobResult{error, panelError(error)};
-    return FileJobResult{meshSummary(report, request.output),
-                         i18n::format(i18n::tr("mesh written: %s"), request.output.c_str())};
+    return FileJobResult{summary, i18n::format(i18n::tr("mesh written: %s"),
+                                               surfacePath(request.output, 0, count).c_str())};
   });
 }
 
