@@ -296,6 +296,7 @@ const GROUPS = [
   [N_('Volume'), /^(render|volume)/],
 ];
 const MAX_CLIP_PLANES = 4;  // render/settings.hpp kMaxClipPlanes
+const MAX_SURFACES = 4;  // scene/scene.hpp kMaxSurfaces
 
 function groupOf(key) {
   for (const [name, re] of GROUPS) if (re.test(key)) return name;
@@ -409,6 +410,7 @@ function buildSettings() {
     set.append(legend, ...light.map(settingRow));
     group('Lights').append(set);
   });
+  surfaceRows(group('Surface'));
   clipPlaneRows(group('Cross-sections'));
   box.append(...groups.values());
   if (focused) box.querySelector(`[data-key="${focused}"]`)?.focus();
@@ -439,6 +441,39 @@ function clipPlaneRows(box) {
     add.textContent = tr('add plane');
     add.id = 'clip-plane-add';
     add.addEventListener('click', () => setList([...planes.map(inline), '{normal = [0, 0, 1], offset = 0}']));
+    box.append(add);
+  }
+}
+
+// The surfaces after the first (whose formula is the formula field): one fieldset each with
+// its formula, level and materials and a remove button, and a button that adds one (the
+// plane z = 0 first). Adding and removing replace the whole [[surface]] list through --set.
+function surfaceRows(box) {
+  const surfaces = session.listEntries('surface');
+  const valueOf = (s) => s.type === 'function' || s.type === 'enum' ? s.choice
+    : s.type === 'bool' ? s.value[0] !== 0 : s.type === 'vec3' ? s.value : s.value[0];
+  const inline = (entry) => '{' + entry.map((s) =>
+    `${s.key.replace(/^surface\.\d+\./, '')} = ${tomlOf(s, valueOf(s))}`).join(', ') + '}';
+  const setList = (list) => applySetting('surface', `[${list.join(', ')}]`);
+  surfaces.forEach((entry, i) => {
+    if (i === 0) return;  // the formula field above
+    const set = document.createElement('fieldset');
+    const legend = document.createElement('legend');
+    legend.textContent = trf('surface %d', i + 1);
+    const remove = document.createElement('button');
+    remove.type = 'button';
+    remove.textContent = tr('remove');
+    remove.id = `surface-${i + 1}-remove`;
+    remove.addEventListener('click', () => setList(surfaces.filter((_, j) => j !== i).map(inline)));
+    set.append(legend, ...entry.map(settingRow), remove);
+    box.append(set);
+  });
+  if (surfaces.length < MAX_SURFACES) {
+    const add = document.createElement('button');
+    add.type = 'button';
+    add.textContent = tr('add surface');
+    add.id = 'surface-add';
+    add.addEventListener('click', () => setList([...surfaces.map(inline), '{formula = "z"}']));
     box.append(add);
   }
 }
@@ -801,6 +836,9 @@ async function start() {
     // An exhibit starts on the gallery's first surface, as `zeroset view` does.
     const text = await fetchText(`examples/${examples[0].name}.surf`);
     if (text !== null) { currentExample = 0; error = session.loadSurf(text, examples[0].name + '.surf'); }
+  }
+  for (const formula of params.getAll('surface')) {
+    if (!error) error = session.addSurface(formula);
   }
   if (!error) {
     const sets = params.getAll('set');

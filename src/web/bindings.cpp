@@ -288,6 +288,9 @@ EMSCRIPTEN_BINDINGS(zeroset) {
       .function("setFormula",
                 emscripten::optional_override(
                     [](WebSession& s, const std::string& f) { return s.setFormula(f); }))
+      .function("addSurface",
+                emscripten::optional_override(
+                    [](WebSession& s, const std::string& f) { return s.addSurface(f); }))
       .function("loadSurf", emscripten::optional_override(
                                 [](WebSession& s, const std::string& text,
                                    const std::string& name) { return s.loadSurf(text, name); }))

@@ -42,8 +42,10 @@ class WebSession {
 
   // The default scene with this formula (as `zeroset render FORMULA`).
   std::string loadFormula(std::string_view formula);
-  // The formula only; every other setting stays.
+  // The formula only (the first surface's); every other setting stays.
   std::string setFormula(std::string_view formula);
+  // One more surface drawn with the others (the URL's surface=), in its own colors.
+  std::string addSurface(std::string_view formula);
   // A whole .surf text; `fileName` names it in errors.
   std::string loadSurf(std::string_view text, std::string_view fileName);
   // A SURFER .jsurf text; what zeroset shows differently goes to notes().

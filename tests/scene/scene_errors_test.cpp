@@ -124,6 +124,24 @@ const BadScene kBadScenes[] = {
     {"formula not a string", "formula = 3\n", 1, 11, "formula", "must be a string",
      "double quotes"},
     {"no formula", "[octree]\nlevel = 2\n", 1, 1, "formula", "no formula", "formula = "},
+    {"surface table without a formula",
+     "[[surface]]\nformula = \"x\"\n[[surface]]\nlevel = 1\n", 3, 1, "surface.2.formula",
+     "this surface has no formula", "[[surface]] table needs one"},
+    {"surface formula that does not parse", "[[surface]]\nformula = \"x^^2\"\n", 2, 14,
+     "surface.1.formula", "surface.1.formula: expected an operand", ""},
+    {"formula beside surface tables", "formula = \"x\"\n[[surface]]\nformula = \"y\"\n", 1, 11,
+     "formula", "lists its surfaces in [[surface]] tables", "first [[surface]] table"},
+    {"materials after surface tables",
+     "[[surface]]\nformula = \"y\"\n[materials.front]\ncolor = [1, 0, 0]\n", 3, 1,
+     "materials.front", "lists its surfaces in [[surface]] tables", "first [[surface]] table"},
+    {"five surfaces",
+     "surface = [{formula = \"x\"}, {formula = \"x\"}, {formula = \"x\"}, {formula = \"x\"}, "
+     "{formula = \"x\"}]\n", 1, 80, "surface", "at most 4 surfaces, got 5", "product"},
+    {"no surfaces", "surface = []\n", 1, 11, "surface", "at least one surface", "[[surface]]"},
+    {"unknown surface key", "[[surface]]\nformula = \"x\"\nfront.colour = [1, 0, 0]\n", 3, 7,
+     "surface.1.front.colour", "unknown key", "front.color"},
+    {"surface color out of range", "[[surface]]\nformula = \"x\"\nback.color = [2, 0, 0]\n", 3, 15,
+     "surface.1.back.color.x", "must be [0.0, 1.0], got 2.0", ""},
 };
 
 // gtest prints the case's name instead of its bytes.

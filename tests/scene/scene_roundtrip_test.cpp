@@ -7,6 +7,7 @@
 #include <sstream>
 #include <type_traits>
 
+#include "expr/tape.hpp"
 #include "parser/parser.hpp"
 #include "scene/scene_io.hpp"
 #include "scene/schema.hpp"
@@ -43,6 +44,7 @@ Scene everyKeyChanged() {
   r.border = {false, 0.0625, {0.2, 0.1, 0.05}};
   r.singular = {true, 0.125, {0.3, 0.6, 0.9}};
   r.cut = {false, 0.03125, {0.1, 0.9, 0.2}};
+  r.intersection = {false, 0.015625, {0.7, 0.6, 0.5}};
   // Every clip plane key differs from ClipPlane{} in some plane.
   r.clipPlanes = {{false, {1, 0, 0}, -0.25}, {true, {0.5, -2, 1e-7}, 1.0 / 3.0}};
   r.reflection = {false, 0.55};
@@ -130,6 +132,117 @@ TEST(SceneRoundTrip, ClipPlanesAreWrittenAsTablesAndSetByNumber) {
   ASSERT_FALSE(applyOverrides(changed, std::vector<std::string>{"clip.plane=[{normal=[1,0,0]}]"}));
   ASSERT_EQ(changed.render.clipPlanes.size(), 1u);
   EXPECT_EQ(changed.render.clipPlanes[0], (ClipPlane{true, {1, 0, 0}, 0}));
+}
+
+// A scene of three surfaces whose second differs from a new entry's defaults in every key.
+Scene threeSurfaces() {
+  Scene s;
+  s.formula = "x^2 + y^2 + z^2 - r";
+  s.level = 0.125;
+  s.params = {{"r", 0.75}};
+  s.render.materials.front.color = {0.1, 0.2, 0.3};
+  SurfaceEntry second;
+  second.formula = "z - r*x";
+  second.level = -0.5;
+  second.materials.front = {{0.2, 0.3, 0.4}, 0.11, 12.5, 0.4, 0.8};
+  second.materials.back = {{0.6, 0.7, 0.8}, 0.22, 99, 0.35, 0.65};
+  SurfaceEntry third;
+  third.formula = "x*y";
+  third.materials = surfaceMaterials(2);
+  s.moreSurfaces = {second, third};
+  return s;
+}
+
+TEST(SceneRoundTrip, EverySurfaceKeyDiffersFromANewEntrysDefault) {
+  const scene_detail::ListSpec* list = scene_detail::findList(scene_detail::kSurfacesKey);
+  ASSERT_NE(list, nullptr);
+  ASSERT_NE(list->fresh, nullptr);
+  Scene one, fresh;
+  one.moreSurfaces = {threeSurfaces().moreSurfaces.front()};
+  list->fresh(fresh, 1);
+  for (const auto& spec : list->keys) EXPECT_FALSE(sameValue(spec, one, fresh)) << spec.name;
+}
+
+TEST(SceneRoundTrip, SeveralSurfacesAreWrittenAsTablesAndSetByNumber) {
+  const Scene s = threeSurfaces();
+  const std::string text = saveScene(s);
+  // Every surface, the first included, is a [[surface]] table; nothing describes the first
+  // one outside them.
+  EXPECT_EQ(text.substr(0, text.find("\n[")).find("formula"), std::string::npos) << text;
+  EXPECT_EQ(text.find("[materials."), std::string::npos) << text;
+  EXPECT_EQ(text.find("\n[surface]\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n[[surface]]\nformula = \"x^2 + y^2 + z^2 - r\"\nlevel = 0.125\n"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(expectScene(parseScene(text, "three.surf")), s) << text;
+  EXPECT_EQ(saveScene(expectScene(parseScene(text, "three.surf"))), text);
+
+  Scene changed = s;
+  ASSERT_FALSE(applyOverrides(changed, std::vector<std::string>{
+                                           "surface.3.level=0.5", "surface.level=2",
+                                           "surface.2.front.color=[1, 0, 0]", "formula=\"x\""}));
+  EXPECT_EQ(changed.moreSurfaces[1].level, 0.5);
+  EXPECT_EQ(changed.level, 2);  // surface.level and formula: the first surface's
+  EXPECT_EQ(changed.formula, "x");
+  EXPECT_EQ(changed.moreSurfaces[0].materials.front.color, (Vec3{1, 0, 0}));
+  // Replacing the list: new entries take their own colors, the first one its formula.
+  ASSERT_FALSE(applyOverrides(changed, std::vector<std::string>{
+                                           "surface=[{formula=\"y\"}, {formula=\"z\"}]"}));
+  EXPECT_EQ(changed.formula, "y");
+  EXPECT_EQ(changed.render.materials, surfaceMaterials(0));
+  ASSERT_EQ(changed.moreSurfaces.size(), 1u);
+  EXPECT_EQ(changed.moreSurfaces[0].formula, "z");
+  EXPECT_EQ(changed.moreSurfaces[0].materials, surfaceMaterials(1));
+  EXPECT_NE(surfaceMaterials(1).front.color, surfaceMaterials(0).front.color);
+}
+
+TEST(SceneRoundTrip, SurfaceMaterialsReadAsSubTables) {
+  const Scene s = expectScene(parseScene(
+      "[[surface]]\nformula = \"x\"\n[[surface]]\nformula = \"y\"\n"
+      "front = { color = [1, 0, 0], shininess = 7 }\n[surface.back]\ncolor = [0, 0, 1]\n",
+      "sub.surf"));
+  EXPECT_EQ(s.formula, "x");
+  ASSERT_EQ(s.moreSurfaces.size(), 1u);
+  EXPECT_EQ(s.moreSurfaces[0].materials.front.color, (Vec3{1, 0, 0}));
+  EXPECT_EQ(s.moreSurfaces[0].materials.front.shininess, 7);
+  EXPECT_EQ(s.moreSurfaces[0].materials.back.color, (Vec3{0, 0, 1}));
+  EXPECT_EQ(s.moreSurfaces[0].materials.front.specular, surfaceMaterials(1).front.specular);
+  // One [[surface]] table is a scene of one surface, saved in the short form.
+  const Scene one = expectScene(parseScene("[[surface]]\nformula = \"x - 1\"\nlevel = 2\n", "one.surf"));
+  EXPECT_EQ(one.formula, "x - 1");
+  EXPECT_EQ(one.level, 2);
+  EXPECT_TRUE(one.moreSurfaces.empty());
+  EXPECT_NE(saveScene(one).find("\nformula = \"x - 1\"\n"), std::string::npos);
+}
+
+TEST(SceneSurfaces, TheSceneFunctionIsTheProductOfTheSurfaces) {
+  const Scene s = threeSurfaces();
+  ASSERT_EQ(surfaceCount(s), 3u);
+  ParseResult parsed = parseSceneFormula(s);
+  ASSERT_TRUE(std::holds_alternative<Formula>(parsed));
+  const Formula& f = std::get<Formula>(parsed);
+  const std::vector<double> values = paramValues(s, f.graph);
+  ASSERT_EQ(f.graph.params(), std::vector<std::string>{"r"});  // shared by the surfaces
+  PointEvaluator eval(compileTape(f.graph, {f.root}));
+  const double x = 0.3, y = -0.2, z = 0.9;
+  const double expected = (x * x + y * y + z * z - 0.75 - 0.125) * (z - 0.75 * x + 0.5) * (x * y);
+  EXPECT_NEAR(eval.eval1(x, y, z, values), expected, 1e-15);
+  // Each surface alone, its level applied; the others' entries of the scene untouched.
+  const Scene second = surfaceScene(s, 1);
+  EXPECT_EQ(second.formula, "z - r*x");
+  EXPECT_EQ(second.level, -0.5);
+  EXPECT_TRUE(second.moreSurfaces.empty());
+  EXPECT_EQ(second.render.materials, s.moreSurfaces[0].materials);
+  EXPECT_EQ(second.params, s.params);
+  // A formula error names its surface and points into that surface's formula.
+  Scene bad = s;
+  bad.moreSurfaces[1].formula = "x*)";
+  std::size_t failed = 0;
+  ParseResult broken = parseSceneFormula(bad, &failed);
+  ASSERT_TRUE(std::holds_alternative<ParseError>(broken));
+  EXPECT_EQ(failed, 2u);
+  const std::string shown = formatSceneFormulaError(bad, failed, std::get<ParseError>(broken));
+  EXPECT_EQ(shown.rfind("surface 3:\n  x*)\n    ^", 0), 0u) << shown;
 }
 
 TEST(SceneRoundTrip, NoLightsAtAllRoundTrip) {

@@ -218,6 +218,45 @@ void clipPlanes(Scene& scene) {
   highlight(N_("cut curve"), scene.render.cut);
 }
 
+// The surfaces after the first (whose formula is the panel's formula box): each with its
+// formula (applied on Enter; a formula that does not parse is refused like any bad value),
+// level and colors. Every change rebuilds the shader (viewer_build.cpp).
+void surfaces(Scene& scene) {
+  std::vector<SurfaceEntry>& more = scene.moreSurfaces;
+  // The texts being typed, kept until Enter, and the formulas they started from.
+  static std::vector<std::string> typed, shown;
+  typed.resize(more.size());
+  shown.resize(more.size());
+  std::size_t removed = more.size();
+  ImGui::TextUnformatted(i18n::tr("surface 1: the formula above"));
+  for (std::size_t i = 0; i < more.size(); ++i) {
+    SurfaceEntry& e = more[i];
+    ImGui::PushID(int(i));
+    if (shown[i] != e.formula) typed[i] = shown[i] = e.formula;
+    ImGui::TextUnformatted(i18n::format(i18n::tr("surface %d"), int(i) + 2).c_str());
+    ImGui::SameLine();
+    if (ImGui::SmallButton(i18n::label("remove"))) removed = i;
+    if (ImGui::InputText(i18n::label("formula"), &typed[i], ImGuiInputTextFlags_EnterReturnsTrue))
+      e.formula = typed[i];
+    dragDouble(i18n::label("level"), e.level, 0.01, -1e6, 1e6);
+    color(i18n::label("front color"), e.materials.front.color);
+    color(i18n::label("back color"), e.materials.back.color);
+    ImGui::PopID();
+  }
+  if (removed < more.size()) {
+    more.erase(more.begin() + std::ptrdiff_t(removed));
+    typed.erase(typed.begin() + std::ptrdiff_t(removed));
+    shown.erase(shown.begin() + std::ptrdiff_t(removed));
+  }
+  if (int(more.size()) + 1 < kMaxSurfaces && ImGui::Button(i18n::label("add surface"))) {
+    SurfaceEntry e;
+    e.formula = "z";  // a plane through the middle: visible at once, easy to edit
+    e.materials = surfaceMaterials(more.size() + 1);
+    more.push_back(e);
+  }
+  if (!more.empty()) highlight(N_("intersection curves"), scene.render.intersection);
+}
+
 // render.mode and the volume's transfer function (a new program variant for the mode;
 // the transfer function's numbers are frame parameters).
 void volume(RenderSettings& r) {
@@ -242,6 +281,7 @@ void drawSettings(Scene& scene) {
     highlight(N_("border"), scene.render.border);
     highlight(N_("singular points"), scene.render.singular);
   }
+  if (ImGui::CollapsingHeader(i18n::label("surfaces"))) surfaces(scene);
   if (ImGui::CollapsingHeader(i18n::label("cross-sections"))) clipPlanes(scene);
   if (ImGui::CollapsingHeader(i18n::label("volume"))) volume(scene.render);
   if (ImGui::CollapsingHeader(i18n::label("lights"))) lights(scene.render.lights);

@@ -25,7 +25,12 @@ bool needsBuild(const Scene& a, const Scene& b) {
          // and the contour function
          a.render.shading.contours.enabled != b.render.shading.contours.enabled ||
          (a.render.shading.contours.enabled &&
-          a.render.shading.contours.function != b.render.shading.contours.function);
+          a.render.shading.contours.function != b.render.shading.contours.function) ||
+         // and, for several surfaces, the others' functions and materials (lit by the
+         // ambient light) and the intersection curves
+         a.moreSurfaces != b.moreSurfaces ||
+         (!b.moreSurfaces.empty() && (a.render.lights.ambient != b.render.lights.ambient ||
+                                      a.render.intersection != b.render.intersection));
 }
 
 }  // namespace
