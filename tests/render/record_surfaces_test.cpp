@@ -47,7 +47,7 @@ TEST_P(RecordSurfaces, NoPixelWithoutSurfaceAndNoneMissing) {
   std::vector<std::string> sets = record.sets;
   sets.push_back(std::string("tracing.method=\"") + tracingMethodName(method) + "\"");
   std::optional<Scene> scene =
-      app::loadSceneArgs({test::sourceDir() + "/examples/" + record.file, sets});
+      app::loadSceneArgs({test::sourceDir() + "/examples/" + record.file, sets, {}});
   ASSERT_TRUE(scene);
   if (record.boxOfBall) scene->domain = test::boxOfBall(scene->domain);
   scene->render.samples = 1;

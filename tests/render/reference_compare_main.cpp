@@ -41,7 +41,7 @@ int run(int argc, char** argv) {
   }
   int failures = 0;
   for (const std::string& path : scenes) {
-    std::optional<Scene> loaded = app::loadSceneArgs({path, sets});
+    std::optional<Scene> loaded = app::loadSceneArgs({path, sets, {}});
     if (!loaded) return 1;
     Scene scene = std::move(*loaded);
     if (box) scene.domain = test::boxOfBall(scene.domain);

@@ -45,6 +45,8 @@ std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& erro
   // the render settings' (a variant of the same program).
   if (spec.hessian) scene.render.shading.color = ColorMode::Gauss;
   scene.render.shading.contours = spec.contours;
+  scene.moreSurfaces = spec.moreSurfaces;
+  if (spec.intersection) scene.render.intersection = *spec.intersection;
   PrepareOptions options;
   options.validate = false;  // the driver compiles it anyway; glslang has tests of its own
   options.bernsteinAboveLimit = spec.method == TracingMethod::Bernstein;

@@ -20,6 +20,7 @@
 #include "render/ray_tracer.hpp"
 #include "render/settings.hpp"
 #include "interval/octree_settings.hpp"
+#include "scene/scene.hpp"
 
 namespace zs::test {
 
@@ -45,6 +46,9 @@ struct SurfaceSpec {
   bool hessian = false;
   // shading.contours: its function is part of the shader.
   Contours contours{};
+  // Surfaces drawn with `formula` (scene.hpp), and where they meet (unset: the default).
+  std::vector<SurfaceEntry> moreSurfaces{};
+  std::optional<Highlight> intersection{};
   // How the frame's parameters reach the fragment stage; unset: as the driver's (RayTracer()).
   std::optional<FrameStorage> frameStorage{};
 };
