@@ -321,7 +321,7 @@ function settingRow(s) {
   const id = 'set-' + s.key.replace(/\./g, '-');
   const label = document.createElement('label');
   label.htmlFor = id;
-  label.textContent = keyLabel(s.key.replace(/^(lights\.source|clip\.plane)\.\d+\./, ''));
+  label.textContent = keyLabel(s.key.replace(/^(lights\.source|clip\.plane|surface)\.\d+\./, ''));
   label.title = s.key;
   row.append(label);
   let input;

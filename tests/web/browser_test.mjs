@@ -426,6 +426,35 @@ cases['clip-plane-panel'] = async () => {
   check(back.differing === 0, `removing the plane did not restore the picture (${JSON.stringify(back)})`);
 };
 
+// Several surfaces: the URL's surface= adds one, the Surface panel removes and adds them
+// (each a [[surface]] table of the scene), and a bad formula there is refused at its key.
+cases['surfaces-panel'] = async () => {
+  const formula = encodeURIComponent('x^2 + y^2 + z^2 - 1');
+  const sphere = encodeURIComponent('(x - 0.7)^2 + y^2 + z^2 - 0.36');
+  const page = await openPage(`formula=${formula}&surface=${sphere}&size=${SIZE[0]}x${SIZE[1]}`);
+  await settled(page);
+  const sceneText = () => page.evaluate(() => window.zeroset.session.sceneText());
+  check((await sceneText()).split('[[surface]]').length === 3, 'surface= did not add a surface');
+  await snapshot(page, 'two');
+  await page.click('details[data-group="Surface"] > summary');
+  await markBusy(page);
+  await page.click('#surface-2-remove');
+  await settled(page);
+  check(!(await sceneText()).includes('[[surface]]'), 'the surface was not removed');
+  const one = await compareWith(page, { snapshotName: 'two' });
+  check(one.differing > 0.005, `removing the surface changed nothing (${JSON.stringify(one)})`);
+  await markBusy(page);
+  await page.click('#surface-add');
+  await settled(page);
+  check(/\[\[surface\]\]\nformula = "z"/.test(await sceneText()), 'the added surface is not z = 0');
+  await markBusy(page);
+  await page.fill('#set-surface-2-formula', 'z +* 1');
+  await page.dispatchEvent('#set-surface-2-formula', 'change');
+  await settled(page, 'error');
+  const error = await page.textContent('#zeroset-error');
+  check(/surface\.2\.formula/.test(error), `the error names no key: ${error}`);
+};
+
 // Hovering over the unit sphere reads its curvatures (src/probe): K = H = 1.
 cases['hover-shows-curvature'] = async () => {
   const page = await openPage(`formula=${encodeURIComponent('x^2 + y^2 + z^2 - 1')}&size=${SIZE[0]}x${SIZE[1]}`);
@@ -620,7 +649,7 @@ const GROUPS = {
   'files-and-layouts': ['drop-surf-loads', 'bad-file', 'embed-and-size', 'phone-layout'],
   pointer: ['hover-shows-curvature', 'touch-drag-turns', 'kiosk'],
   links: ['share-link', 'bad-url-parameters'],
-  panels: ['light-edit-redraws', 'clip-plane-panel', 'lost-context-recovers'],
+  panels: ['light-edit-redraws', 'clip-plane-panel', 'surfaces-panel', 'lost-context-recovers'],
 };
 for (const [group, members] of Object.entries(GROUPS)) {
   cases[group] = async () => {
