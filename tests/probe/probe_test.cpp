@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <variant>
 
 namespace zs {
@@ -119,6 +120,40 @@ TEST(Probe, ClipPlanesCutTheRayAsTheTracerDoes) {
   EXPECT_GT(near.point[0] * e[0] + near.point[1] * e[1] + near.point[2] * e[2], 0);
   scene.render.clipPlanes = {{true, {0, 0, 1}, -5}};
   EXPECT_FALSE(std::get<ProbeResult>(probePixel(f, {}, scene, 101, 101, 50, 50)).hit);
+}
+
+TEST(Probe, SeveralSurfacesReportTheNearestHitWithItsOwnCurvatures) {
+  // The unit sphere, and in front of it on the centre ray a ball of radius r = 0.2 (a
+  // parameter of the scene) centred at 1.25 along the eye's direction, inside the domain.
+  Scene scene;
+  const Vec3& e = scene.render.camera.eye;
+  const double d = std::hypot(e[0], e[1], e[2]);
+  const Vec3 c{1.25 * e[0] / d, 1.25 * e[1] / d, 1.25 * e[2] / d};
+  char formula[200];
+  std::snprintf(formula, sizeof formula, "(x-(%.17g))^2 + (y-(%.17g))^2 + (z-(%.17g))^2 - r^2",
+                c[0], c[1], c[2]);
+  scene.moreSurfaces = {SurfaceEntry{formula, 0, {}}};
+  scene.params = {{"r", 0.2}};
+  SceneProbe probe(scene);
+  ASSERT_EQ(probe.error(), "");
+  const ProbeResult centre = std::get<ProbeResult>(probe.pixel(scene, 101, 101, 50, 50));
+  ASSERT_TRUE(centre.hit);
+  EXPECT_EQ(centre.surface, 1);
+  EXPECT_EQ(centre.surfaces, 2);
+  EXPECT_NEAR(centre.t, d - 1.25 - 0.2, 1e-9);
+  EXPECT_NEAR(centre.gaussian, 1 / 0.04, 1e-3);
+  EXPECT_NEAR(centre.mean, 1 / 0.2, 1e-4);
+  EXPECT_EQ(probeText(centre).rfind("surface: 2\npoint: ", 0), 0u) << probeText(centre);
+  EXPECT_NE(probeJson(centre).find("\"surface\": 2"), std::string::npos);
+  // Off the small ball, the unit sphere, with its own curvatures.
+  const ProbeResult side = std::get<ProbeResult>(probe.pixel(scene, 101, 101, 50, 80));
+  ASSERT_TRUE(side.hit);
+  EXPECT_EQ(side.surface, 0);
+  EXPECT_NEAR(side.gaussian, 1, kTol);
+  EXPECT_NEAR(std::hypot(side.point[0], side.point[1], side.point[2]), 1, 1e-9);
+  // A formula that does not parse is said, naming its surface.
+  scene.moreSurfaces[0].formula = "x +";
+  EXPECT_NE(SceneProbe(scene).error().find("surface 2:"), std::string::npos);
 }
 
 }  // namespace
