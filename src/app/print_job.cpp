@@ -37,8 +37,9 @@ std::string runPrintJob(const PrintJob& job) {
   page.picture = std::move(frame.color);
   page.title = job.title;
   page.description = job.description;
-  page.formula = scene.formula;
-  page.level = scene.level;
+  page.formulas.emplace_back(scene.formula, scene.level);
+  for (const SurfaceEntry& more : scene.moreSurfaces)
+    page.formulas.emplace_back(more.formula, more.level);
   if (auto parsed = parseSceneFormula(scene); std::holds_alternative<Formula>(parsed)) {
     const Graph& graph = std::get<Formula>(parsed).graph;
     const std::vector<double> values = paramValues(scene, graph);

@@ -235,10 +235,12 @@ std::string writePage(const std::filesystem::path& path, const PageContent& cont
 
   // The formula, centred, and the parameter values under it.
   cairo_set_source_rgb(c, 0, 0, 0);
-  for (const MathBox& line : formulaLines(c, content.formula, content.level, textWidth)) {
-    y += line.ascent;
-    drawMath(c, line, (page.width - line.width) / 2, y);
-    y += line.descent + 6;
+  for (const auto& [formula, level] : content.formulas) {
+    for (const MathBox& line : formulaLines(c, formula, level, textWidth)) {
+      y += line.ascent;
+      drawMath(c, line, (page.width - line.width) / 2, y);
+      y += line.descent + 6;
+    }
   }
   y += 14;
   if (!content.params.empty()) {

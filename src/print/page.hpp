@@ -30,9 +30,10 @@ struct PageContent {
   Image picture;  // square, RGBA8, top row first
   std::string title;        // the surface's name
   std::string description;  // one line or a few sentences
-  std::string formula;      // as written (parser/parser.hpp parseSyntax)
+  // One line per surface of the scene: the formula as written (parser/parser.hpp
+  // parseSyntax) and its level (the page says F = level).
+  std::vector<std::pair<std::string, double>> formulas;
   std::vector<std::pair<std::string, double>> params;
-  double level = 0;  // surface.level: the page says F = level
 };
 
 // Whether `path` names a page zeroset writes: .pdf or .svg (any case).

@@ -122,6 +122,32 @@ TEST(Animate, KummerFamilyFramesAreNumberedAndEachIsThatParametersPicture) {
   EXPECT_TRUE(withinTolerance(compareImages(middle, load(single)))) << "frame 1 is mu = 1.3";
 }
 
+// A level sweep, of the first surface or of a second one: each frame is the picture a
+// plain render at that level gives (the level is part of F, so the shader changes too).
+TEST(Animate, LevelFramesAreEachThatLevelsPicture) {
+  const fs::path dir = freshDir("animate_level");
+  for (const std::string key : {"surface.level", "surface.2.level"}) {
+    const fs::path frames = dir / (key == "surface.level" ? "first" : "second");
+    std::string out;
+    ASSERT_EQ(runZeroset({"render", "x^2+y^2+z^2-1", "--surface", "z-0.25", "--animate",
+                          key + "=-0.5:0.5", "--frames", "3", "--size", "64x48", "-o",
+                          frames.string()},
+                         dir, out),
+              0)
+        << out;
+    const Image first = load(frames / "frame-0000.png");
+    const Image last = load(frames / "frame-0002.png");
+    EXPECT_FALSE(withinTolerance(compareImages(first, last))) << key << ": the surface must change";
+    const fs::path single = dir / "single.png";
+    ASSERT_EQ(runZeroset({"render", "x^2+y^2+z^2-1", "--surface", "z-0.25", "--set", key + "=0.5",
+                          "--size", "64x48", "-o", single.string()},
+                         dir, out),
+              0)
+        << out;
+    EXPECT_TRUE(withinTolerance(compareImages(last, load(single)))) << key << ": frame 2 is 0.5";
+  }
+}
+
 TEST(Animate, CameraOrbitKeepsOneOctree) {
   const fs::path dir = freshDir("animate_orbit");
   std::string out;

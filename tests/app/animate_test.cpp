@@ -64,6 +64,16 @@ TEST(Animation, OctreeIsRebuiltOnlyForAParameterOfF) {
   EXPECT_TRUE(changesOctree(*parseAnimation("params.r=1:2", 3, error), base));
   EXPECT_FALSE(changesOctree(*parseAnimation("params.unused=1:2", 3, error), base));
   EXPECT_FALSE(changesOctree(*parseAnimation("camera.orbit=0:360", 3, error), base));
+  // With several surfaces: a parameter of the second one, its level, and what the surfaces'
+  // shader holds as constants (the intersection curves, the others' materials lit by the
+  // ambient light).
+  EXPECT_FALSE(changesOctree(*parseAnimation("params.h=0:1", 3, error), base));
+  EXPECT_FALSE(changesOctree(*parseAnimation("lights.ambient=0:1", 3, error), base));
+  base.moreSurfaces = {SurfaceEntry{"z - h", 0, {}}};
+  EXPECT_TRUE(changesOctree(*parseAnimation("params.h=0:1", 3, error), base));
+  EXPECT_TRUE(changesOctree(*parseAnimation("surface.2.level=0:1", 3, error), base));
+  EXPECT_TRUE(changesOctree(*parseAnimation("highlights.intersection.tolerance=0:1", 3, error), base));
+  EXPECT_TRUE(changesOctree(*parseAnimation("lights.ambient=0:1", 3, error), base));
 }
 
 TEST(Animation, AnyNumberOfTheSceneGoesThroughSetsChecks) {

@@ -19,12 +19,14 @@ const char* const kHowTo =
     "--animate camera.orbit=0:360 or --animate clip.plane.1.offset=-1:1\n";
 
 // Keys whose change needs a new octree, box hierarchy or shader (not only new uniforms or
-// another program variant of the same shader).
-bool rebuildsSurface(const std::string& key) {
-  for (const char* prefix : {"domain.", "octree.", "highlights.singular."}) {
+// another program variant of the same shader): with several surfaces, their entries and the
+// intersection highlight are shader constants too, lit by the ambient light.
+bool rebuildsSurface(const std::string& key, const Scene& base) {
+  for (const char* prefix : {"domain.", "octree.", "highlights.singular.", "surface."}) {
     if (key.rfind(prefix, 0) == 0) return true;
   }
-  return false;
+  if (base.moreSurfaces.empty()) return false;
+  return key.rfind("highlights.intersection.", 0) == 0 || key == "lights.ambient";
 }
 
 // The whole of `text` as a finite number.
@@ -115,9 +117,9 @@ std::string frameScene(const Animation& anim, const Scene& base, int i, Scene& o
 
 bool changesOctree(const Animation& anim, const Scene& base) {
   if (anim.kind == Animation::Kind::Level) return true;  // another surface each frame
-  if (anim.kind == Animation::Kind::Setting) return rebuildsSurface(anim.param);
+  if (anim.kind == Animation::Kind::Setting) return rebuildsSurface(anim.param, base);
   if (anim.kind != Animation::Kind::Param) return false;
-  ParseResult parsed = parseFormula(base.formula);
+  ParseResult parsed = parseSceneFormula(base);
   const Formula* f = std::get_if<Formula>(&parsed);
   if (!f) return true;  // cannot tell; rebuilding is always right
   for (const std::string& name : f->graph.params()) {

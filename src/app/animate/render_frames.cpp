@@ -147,10 +147,11 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
         return 1;
       }
       if (perFrameOctree) {
-        error =
-            markers || anim->kind == Animation::Kind::Setting  // a domain or octree key
-                ? rebuildAll(surface, scene, tracer)
-                : rebuildForParams(surface, scene, tracer);
+        // Only a parameter keeps the shader: a level is a constant of F, a setting that
+        // rebuilds is a domain, octree or surface key.
+        error = markers || anim->kind != Animation::Kind::Param
+                    ? rebuildAll(surface, scene, tracer)
+                    : rebuildForParams(surface, scene, tracer);
         if (!error.empty()) {
           std::cerr << "frame " << i << ": " << error;
           return 1;
