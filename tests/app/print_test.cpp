@@ -56,6 +56,22 @@ TEST(Print, ThePageHoldsTheFormulaTheValuesAndThePictureOfRender) {
   EXPECT_EQ(differing, 0) << "the page's picture is not render's";
 }
 
+// A scene of several surfaces: one equation per surface, in order, each at its level.
+TEST(Print, SeveralSurfacesHaveAnEquationEach) {
+  const auto dir = freshDir("print_surfaces");
+  ASSERT_EQ(shell(std::string(ZS_ZEROSET_EXE) + " print 'x^2 + y^2 + z^2 - 1' --surface 'z' " +
+                  "--set surface.2.level=0.5 --dpi 30 -o " + quoted(dir / "page.pdf") +
+                  " > /dev/null"),
+            0);
+  ASSERT_EQ(shell("pdftotext -raw " + quoted(dir / "page.pdf") + " " + quoted(dir / "page.txt")), 0);
+  const std::string text = readText(dir / "page.txt");
+  const auto sphere = text.find("− 1 = 0");
+  const auto plane = text.find("z = 0.5");
+  EXPECT_NE(sphere, std::string::npos) << text;
+  EXPECT_NE(plane, std::string::npos) << text;
+  EXPECT_LT(sphere, plane) << text;
+}
+
 TEST(Print, SvgPagesAndBadPapersAndExtensions) {
   const auto dir = freshDir("print-svg");
   const std::string zeroset = ZS_ZEROSET_EXE;
