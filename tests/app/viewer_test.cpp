@@ -104,6 +104,29 @@ TEST(Viewer, BorderKeyTogglesTheDomainBorderHighlight) {
   EXPECT_LT(plain, highlighted / 3);
 }
 
+// Two surfaces: a small ball in front of the unit sphere, on the view's axis. Hovering names
+// the surface under the pointer with its own curvatures; the mesh key writes one file each.
+TEST(Viewer, SeveralSurfacesAreProbedAndMeshedEachOnItsOwn) {
+  ViewerSession v("surfaces", {"x^2 + y^2 + z^2 - 1", "--surface",
+                               "x^2 + y^2 + (z - 1.25)^2 - 0.04", "--set", "camera.eye=[0,0,4]"});
+  START(v);
+  const std::string log = v.log();
+  int width = 0, height = 0;
+  const std::size_t ready = log.find("ready ");
+  ASSERT_NE(ready, std::string::npos) << log;
+  ASSERT_EQ(std::sscanf(log.c_str() + ready, "ready %dx%d", &width, &height), 2) << log;
+  v.move(width / 2 + 1, height / 2 + 1);  // the picture's centre: the small ball
+  const std::string line = v.waitLog("probe: surface 2 of 2 ", 20);
+  double k = 0, h = 0;
+  ASSERT_EQ(std::sscanf(line.c_str(), "probe: surface 2 of 2 K %lf H %lf", &k, &h), 2) << v.log();
+  EXPECT_NEAR(k, 25, 1e-3);
+  EXPECT_NEAR(h, 5, 1e-4);
+  v.key("m");
+  ASSERT_FALSE(v.waitLog("zeroset-level7-0001-2.stl: ").empty()) << v.log();
+  EXPECT_TRUE(std::filesystem::exists(v.dir() / "zeroset-level7-0001-1.stl")) << v.log();
+  EXPECT_TRUE(std::filesystem::exists(v.dir() / "zeroset-level7-0001-2.stl")) << v.log();
+}
+
 TEST(Viewer, MeshAndPrintKeysWriteTheirFiles) {
   // A typed formula has no file: the mesh goes to the output folder, at the panel's level.
   ViewerSession v("mesh", {"x^2 + y^2 + z^2 - 1"});
