@@ -521,7 +521,8 @@ function showProbe(e) {
   const r = session.probe(x, y, Math.round(w), Math.round(h));
   const f = (v) => (Number.isFinite(v) ? v.toPrecision(4) : 'n/a');
   statusLine.textContent = r.error ? r.error : !r.hit ? tr('no surface under the cursor')
-    : `(${r.point.map(f).join(', ')}) · n (${r.normal.map(f).join(', ')}) · ` +
+    : (r.surfaces > 1 ? trf('surface %d of %d', r.surface, r.surfaces) + ' · ' : '') +
+      `(${r.point.map(f).join(', ')}) · n (${r.normal.map(f).join(', ')}) · ` +
       `K ${f(r.K)} · H ${f(r.H)} · k1 ${f(r.k1)} · k2 ${f(r.k2)}`;
 }
 

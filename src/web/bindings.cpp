@@ -207,6 +207,8 @@ val probeJs(const WebSession& s, int x, int y, int width, int height) {
   out.set("H", r.mean);
   out.set("k1", r.k1);
   out.set("k2", r.k2);
+  out.set("surface", r.surface + 1);  // counted from 1, as the panel names them
+  out.set("surfaces", r.surfaces);
   return out;
 }
 

@@ -435,6 +435,14 @@ cases['surfaces-panel'] = async () => {
   await settled(page);
   const sceneText = () => page.evaluate(() => window.zeroset.session.sceneText());
   check((await sceneText()).split('[[surface]]').length === 3, 'surface= did not add a surface');
+  // Hovering names the surface under the pointer: the unit sphere at the centre.
+  const box = await page.locator('#view').boundingBox();
+  await page.mouse.move(box.x + SIZE[0] / 2 + 3, box.y + SIZE[1] / 2 - 2, { steps: 4 });
+  await page.waitForFunction(() => /K /.test(document.getElementById('status').textContent), null,
+                             { timeout: 5000 }).catch(() => {});
+  const status = await page.textContent('#status');
+  check(/^surface 1 of 2 · .*K 1\.000 · H 1\.000/.test(status), `status: ${status}`);
+  await page.mouse.move(box.x - 20, box.y - 20);
   await snapshot(page, 'two');
   await page.click('details[data-group="Surface"] > summary');
   await markBusy(page);
