@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -93,15 +94,18 @@ class Reader {
     return std::nullopt;
   }
 
-  std::optional<SceneError> params(const toml::node& node) {
+  // [params], or the params of a [[surface]] table (`where` = "surface.2.params"): the
+  // surfaces share one set of parameters, so a name this document already gave another
+  // value is an error.
+  std::optional<SceneError> params(const toml::node& node, const std::string& where = "params") {
     const toml::table* table = node.as_table();
     if (!table) {
-      return src_.error(positionOf(node), "params", "params must be a table, got " + typeName(node),
+      return src_.error(positionOf(node), where, where + " must be a table, got " + typeName(node),
                         "write [params] on its own line, then one name = value per parameter");
     }
     for (const auto& [key, value] : inFileOrder(*table)) {
       const std::string name(key->str());
-      const std::string dotted = "params." + name;
+      const std::string dotted = where + "." + name;
       seen_.push_back({dotted, &src_, positionOf(*value)});
       if (!isParamName(name)) {
         return src_.error(positionOf(*key), dotted, "\"" + name + "\" is not a parameter name",
@@ -112,6 +116,14 @@ class Reader {
       const Range any{-std::numeric_limits<double>::infinity(),
                       std::numeric_limits<double>::infinity()};
       if (auto err = readNumber(*value, dotted, any, src_, v)) return err;
+      if (const auto read = paramsRead_.find(name); read != paramsRead_.end() && read->second != v) {
+        return src_.error(positionOf(*value), dotted,
+                          "parameter " + name + " is " + formatDouble(v) + " here but " +
+                              formatDouble(read->second) + " above",
+                          "the surfaces of a scene share their parameters: give it one value, or "
+                          "name the second one differently");
+      }
+      paramsRead_.emplace(name, v);
       auto it = std::find_if(scene_.params.begin(), scene_.params.end(),
                              [&](const auto& p) { return p.first == name; });
       if (it != scene_.params.end())
@@ -273,6 +285,10 @@ class Reader {
       const std::string local = prefix + std::string(key->str());
       const std::string dotted = name + "." + local;
       seen_.push_back({dotted, &src_, positionOf(*value)});
+      if (spec.name == kSurfacesKey && local == kParamsKey) {
+        if (auto err = params(*value, dotted)) return err;
+        continue;
+      }
       const KeySpec* keySpec = findListKey(spec, local);
       const toml::table* sub = value->as_table();
       if (!keySpec && sub) {
@@ -303,6 +319,7 @@ class Reader {
   bool legacyRead_ = false;  // this document set lights.directional.* or lights.point.*
   bool listRead_ = false;    // this document replaced the list with [[lights.source]]
   bool surfaceListRead_ = false;  // this document listed its surfaces as [[surface]]
+  std::map<std::string, double> paramsRead_;  // the parameters this document gave, by name
 };
 
 // An error about keys that constrain each other, placed at the latest-written of `keys`

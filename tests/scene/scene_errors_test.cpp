@@ -138,6 +138,10 @@ const BadScene kBadScenes[] = {
      "surface = [{formula = \"x\"}, {formula = \"x\"}, {formula = \"x\"}, {formula = \"x\"}, "
      "{formula = \"x\"}]\n", 1, 80, "surface", "at most 4 surfaces, got 5", "product"},
     {"no surfaces", "surface = []\n", 1, 11, "surface", "at least one surface", "[[surface]]"},
+    {"a parameter given two values by two surfaces",
+     "[[surface]]\nformula = \"x - a\"\nparams = { a = 1 }\n[[surface]]\nformula = \"y - a\"\n"
+     "params = { a = 2 }\n", 6, 16, "surface.2.params.a", "parameter a is 2.0 here but 1.0 above",
+     "share their parameters"},
     {"unknown surface key", "[[surface]]\nformula = \"x\"\nfront.colour = [1, 0, 0]\n", 3, 7,
      "surface.1.front.colour", "unknown key", "front.color"},
     {"surface color out of range", "[[surface]]\nformula = \"x\"\nback.color = [2, 0, 0]\n", 3, 15,

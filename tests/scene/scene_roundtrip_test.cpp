@@ -196,6 +196,16 @@ TEST(SceneRoundTrip, SeveralSurfacesAreWrittenAsTablesAndSetByNumber) {
   EXPECT_NE(surfaceMaterials(1).front.color, surfaceMaterials(0).front.color);
 }
 
+TEST(SceneRoundTrip, SurfaceParametersJoinTheScenesParameters) {
+  const Scene s = expectScene(parseScene(
+      "[params]\nb = 3\n[[surface]]\nformula = \"x - a\"\nparams = { a = 0.25 }\n"
+      "[[surface]]\nformula = \"y - a*b\"\n[surface.params]\na = 0.25\nc = 1\n",
+      "params.surf"));
+  EXPECT_EQ(s.params, (std::vector<std::pair<std::string, double>>{{"b", 3}, {"a", 0.25}, {"c", 1}}));
+  // Saved in [params], where they read back the same.
+  EXPECT_EQ(expectScene(parseScene(saveScene(s), "saved.surf")), s);
+}
+
 TEST(SceneRoundTrip, SurfaceMaterialsReadAsSubTables) {
   const Scene s = expectScene(parseScene(
       "[[surface]]\nformula = \"x\"\n[[surface]]\nformula = \"y\"\n"
