@@ -98,7 +98,7 @@ int runRender(const RenderArgs& args) {
     return 1;
   }
   const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
-  std::cerr << surface.constantNote << surface.methodWarning << surface.singularNote;
+  std::cerr << surface.formulaNote << surface.methodWarning << surface.singularNote;
 
   // One frame: on llvmpipe the JIT compile of the shader costs more than the frame unless
   // the image is large. Without LLVM's optimization passes the JIT takes about half as long

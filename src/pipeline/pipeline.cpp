@@ -47,6 +47,22 @@ std::string constantFormulaNote(const Formula& formula, std::span<const double> 
   return text;
 }
 
+// Several surfaces are traced as the product of their functions, which is undefined wherever
+// one of them is: there no surface is drawn, not even another one's.
+std::string partlyUndefinedNote(const Scene& scene) {
+  if (surfaceCount(scene) == 1) return {};
+  std::string note;
+  for (std::size_t i = 0; i < surfaceCount(scene); ++i) {
+    ParseResult parsed = parseSurfaceFormula(scene, i);
+    const Formula* f = std::get_if<Formula>(&parsed);
+    if (!f || f->graph.isTotal(f->root)) continue;
+    note += "note: surface " + std::to_string(i + 1) + " (" + surfaceFormula(scene, i) +
+            ") may be undefined in places (a square root, logarithm, division...); the "
+            "surfaces are traced as one product, so where it is undefined no surface is drawn\n";
+  }
+  return note;
+}
+
 }  // namespace
 
 Box toBox(const Domain& domain) {
@@ -148,7 +164,7 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
   s.formula = std::get<Formula>(std::move(parsed));
   s.gradient = gradient(s.formula.graph, s.formula.root);
   s.params = paramValues(scene, s.formula.graph);
-  s.constantNote = constantFormulaNote(s.formula, s.params);
+  s.formulaNote = constantFormulaNote(s.formula, s.params) + partlyUndefinedNote(scene);
   s.times.parseMs = msSince(t);
 
   t = std::chrono::steady_clock::now();

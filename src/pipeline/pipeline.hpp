@@ -38,8 +38,10 @@ struct PreparedSurface {
   // search that failed or left regions uncertified); empty when the highlight is off.
   std::vector<std::array<double, 3>> singularPoints;
   std::string singularNote;
-  // Said when F does not depend on x, y, z: nothing to draw, or F = 0 everywhere ("" else).
-  std::string constantNote;
+  // What to tell the user about the function traced ("" if nothing): F does not depend on
+  // x, y, z (nothing to draw, or F = 0 everywhere), or one of several surfaces may be
+  // undefined in places, where their product is undefined too.
+  std::string formulaNote;
   std::string vertexShader, fragmentShader;
   StageTimes times;
 

@@ -325,7 +325,7 @@ std::vector<std::pair<std::string, double>> WebSession::params() const {
 
 std::string WebSession::notes() const {
   std::string notes = importNotes_;
-  if (surface_) notes += surface_->methodWarning + surface_->constantNote + surface_->singularNote;
+  if (surface_) notes += surface_->methodWarning + surface_->formulaNote + surface_->singularNote;
   return notes;
 }
 

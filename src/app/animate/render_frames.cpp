@@ -122,7 +122,7 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
     return 1;
   }
   PreparedSurface surface = std::get<PreparedSurface>(std::move(prepared));
-  std::cerr << surface.constantNote << surface.methodWarning << surface.singularNote;
+  std::cerr << surface.formulaNote << surface.methodWarning << surface.singularNote;
 
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
