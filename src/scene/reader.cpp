@@ -59,13 +59,8 @@ class Reader {
   std::optional<SceneError> entry(const std::string& name, const toml::key& key,
                                   const toml::node& node) {
     seen_.push_back({name, &src_, positionOf(node)});
-    if (surfaceListRead_ && (name == kFormulaKey || name.starts_with("materials."))) {
-      return src_.error(positionOf(node), name,
-                        name + " describes the first surface, but this file lists its surfaces "
-                               "in [[surface]] tables",
-                        "move it into the first [[surface]] table (formula = ..., front.color = "
-                        "...)");
-    }
+    if (surfaceListRead_ && describesFirstSurface(name))
+      return outsideSurfaceList(positionOf(node), name);
     if (name == kFormulaKey) return formula(node);
     if (name == kParamsKey) return params(node);
     if (const ListSpec* list = findList(name)) return this->list(*list, node);
@@ -206,13 +201,7 @@ class Reader {
       }
       for (auto it = seen_.rbegin(); it != seen_.rend(); ++it) {
         if (it->src != &src_) break;  // only this document's keys conflict
-        if (it->key == kFormulaKey || it->key.starts_with("materials.")) {
-          return src_.error(it->pos, it->key,
-                            it->key + " describes the first surface, but this file lists its "
-                                      "surfaces in [[surface]] tables",
-                            "move it into the first [[surface]] table (formula = ..., "
-                            "front.color = ...)");
-        }
+        if (describesFirstSurface(it->key)) return outsideSurfaceList(it->pos, it->key);
       }
     }
     Scene read = scene_;
@@ -238,6 +227,18 @@ class Reader {
     if (spec.name == kLightSourcesKey) listRead_ = true;
     if (spec.name == kSurfacesKey) surfaceListRead_ = true;
     return std::nullopt;
+  }
+
+  // The keys that belong in the first [[surface]] table of a file that has them.
+  static bool describesFirstSurface(std::string_view key) {
+    return key == kFormulaKey || key.starts_with("materials.");
+  }
+  SceneError outsideSurfaceList(Position pos, const std::string& key) const {
+    return src_.error(pos, key,
+                      key + " describes the first surface, but this file lists its surfaces in "
+                            "[[surface]] tables",
+                      "move it into the first [[surface]] table (formula = ..., front.color = "
+                      "...)");
   }
 
   // "3" -> 3; 0 for anything that is not a plain positive number.
