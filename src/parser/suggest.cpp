@@ -7,22 +7,31 @@
 
 namespace zs {
 
-std::size_t editDistance(std::string_view a, std::string_view b) {
-  // Optimal string alignment distance; rows are kept whole because names are short.
+std::size_t editDistance(std::string_view a, std::string_view b, std::size_t limit) {
+  // Optimal string alignment distance, three rows at a time (a swap looks two rows back).
   const std::size_t n = a.size(), m = b.size();
-  std::vector<std::vector<std::size_t>> d(n + 1, std::vector<std::size_t>(m + 1));
-  for (std::size_t i = 0; i <= n; ++i) d[i][0] = i;
-  for (std::size_t j = 0; j <= m; ++j) d[0][j] = j;
+  std::vector<std::size_t> rows(3 * (m + 1));
+  auto row = [&](std::size_t i) { return rows.data() + (i % 3) * (m + 1); };
+  for (std::size_t j = 0; j <= m; ++j) row(0)[j] = j;
+  std::size_t previousMin = 0;
   for (std::size_t i = 1; i <= n; ++i) {
+    std::size_t* d = row(i);
+    const std::size_t* up = row(i - 1);
+    const std::size_t* up2 = row(i - 2);
+    d[0] = i;
+    std::size_t rowMin = d[0];
     for (std::size_t j = 1; j <= m; ++j) {
       const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
-      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
-        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-      }
+      d[j] = std::min({up[j] + 1, d[j - 1] + 1, up[j - 1] + cost});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[j] = std::min(d[j], up2[j - 2] + 1);
+      rowMin = std::min(rowMin, d[j]);
     }
+    // Every later entry is at least the smaller of the last two rows' minima.
+    if (std::min(rowMin, previousMin) > limit) return limit + 1;
+    previousMin = rowMin;
   }
-  return d[n][m];
+  return std::min(row(n)[m], limit + 1);
 }
 
 std::optional<std::string> closestName(std::string_view word,
@@ -31,7 +40,11 @@ std::optional<std::string> closestName(std::string_view word,
   std::optional<std::string> best;
   std::size_t bestDistance = maxDistance + 1;
   for (std::string_view c : candidates) {
-    const std::size_t dist = editDistance(word, c);
+    // The distance is at least the difference in length: a candidate that cannot come
+    // closer than the best so far is skipped unmeasured (a long mistyped line costs nothing).
+    const std::size_t gap = word.size() > c.size() ? word.size() - c.size() : c.size() - word.size();
+    if (gap >= bestDistance) continue;
+    const std::size_t dist = editDistance(word, c, bestDistance - 1);
     if (dist < bestDistance) {
       bestDistance = dist;
       best = std::string(c);

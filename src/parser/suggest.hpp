@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <limits>
 #include <string_view>
 #include <vector>
 
@@ -17,8 +18,10 @@ struct NameProblem {
 // `call`: the name is followed by '('. Nothing when the name is a fine parameter name.
 std::optional<NameProblem> diagnoseName(std::string_view name, bool call);
 
-// Levenshtein distance (insert, delete, substitute, adjacent swap).
-std::size_t editDistance(std::string_view a, std::string_view b);
+// Levenshtein distance (insert, delete, substitute, adjacent swap); any distance above
+// `limit` is reported as limit + 1, found without finishing the table.
+std::size_t editDistance(std::string_view a, std::string_view b,
+                         std::size_t limit = std::numeric_limits<std::size_t>::max() - 1);
 
 // The candidate closest to `word` within maxDistance, or nothing.
 std::optional<std::string> closestName(std::string_view word,
