@@ -157,8 +157,15 @@ class Reader {
     if (const toml::table* numbered = node.as_table()) {
       for (const auto& [index, value] : inFileOrder(*numbered)) {
         const std::string name = key + "." + std::string(index->str());
-        // [surface] level = 1: a key of the table that shares the list's name.
-        if (entryNumber(index->str()) == 0 && findKey(name) != nullptr) {
+        // [surface] level = 1: a key of the table that shares the list's name (whose
+        // unknown keys get the usual hint).
+        if (entryNumber(index->str()) == 0 && sharesItsNameWithATable(spec)) {
+          if (!findKey(name) && findListKey(spec, index->str())) {
+            return src_.error(positionOf(*index), name,
+                              name + " is a key of a [[" + key + "]] table, not of [" + key + "]",
+                              "write [[" + key + "]] (two brackets) above it, one such table "
+                              "per " + noun);
+          }
           if (auto err = this->entry(name, *index, *value)) return err;
           continue;
         }
@@ -227,6 +234,12 @@ class Reader {
     if (spec.name == kLightSourcesKey) listRead_ = true;
     if (spec.name == kSurfacesKey) surfaceListRead_ = true;
     return std::nullopt;
+  }
+
+  static bool sharesItsNameWithATable(const ListSpec& spec) {
+    const std::string prefix = std::string(spec.name) + ".";
+    return std::any_of(keySpecs().begin(), keySpecs().end(),
+                       [&](const KeySpec& k) { return k.name.starts_with(prefix); });
   }
 
   // The keys that belong in the first [[surface]] table of a file that has them.

@@ -142,6 +142,10 @@ const BadScene kBadScenes[] = {
      "[[surface]]\nformula = \"x - a\"\nparams = { a = 1 }\n[[surface]]\nformula = \"y - a\"\n"
      "params = { a = 2 }\n", 6, 16, "surface.2.params.a", "parameter a is 2.0 here but 1.0 above",
      "share their parameters"},
+    {"a surface key under [surface]", "formula = \"x\"\n[surface]\nformula = \"y\"\n", 3, 1,
+     "surface.formula", "is a key of a [[surface]] table, not of [surface]", "two brackets"},
+    {"unknown key under [surface]", "formula = \"x\"\n[surface]\nlevl = 1\n", 3, 1,
+     "surface.levl", "unknown key", "level"},
     {"unknown surface key", "[[surface]]\nformula = \"x\"\nfront.colour = [1, 0, 0]\n", 3, 7,
      "surface.1.front.colour", "unknown key", "front.color"},
     {"surface color out of range", "[[surface]]\nformula = \"x\"\nback.color = [2, 0, 0]\n", 3, 15,
