@@ -18,6 +18,7 @@
 #include "codegen/shader_assembly.hpp"
 #include "codegen_test_util.hpp"
 #include "expr/derivative.hpp"
+#include "render/settings.hpp"
 
 namespace zs::test {
 namespace {
@@ -108,6 +109,62 @@ TEST_P(RandomFormulaShard, EveryFormulaParsesAndPassesGlslangForEveryMethod) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Shards, RandomFormulaShard, ::testing::Range(0, kShards));
+
+// Scenes of 2 to 4 random surfaces (constants and parameters included), traced as their
+// product with the surfaces block after the formula block, as the pipeline assembles them:
+// every method's shader passes glslang, in desktop GLSL and GLSL ES.
+TEST(RandomFormula, SeveralSurfacesPassGlslangForEveryMethod) {
+  std::mt19937_64 rng(20261127);
+  int polynomials = 0;
+  for (int scene = 0; scene < 24; ++scene) {
+    const int count = 2 + scene % 3;
+    Formula product;
+    std::vector<Formula> surfaces;
+    std::string texts;
+    for (int i = 0; i < count; ++i) {
+      const std::string text = randomFormula(rng, optionsFor(scene * 4 + i));
+      texts += (i ? " | " : "") + text;
+      std::optional<Formula> f = parseOrFail(text);
+      ASSERT_TRUE(f) << text;
+      surfaces.push_back(std::move(*f));
+    }
+    SCOPED_TRACE("surfaces: " + texts);
+    product.root = copyInto(product.graph, surfaces[0].graph, surfaces[0].root);
+    for (int i = 1; i < count; ++i) {
+      product.root = product.graph.binary(
+          Op::Mul, product.root, copyInto(product.graph, surfaces[i].graph, surfaces[i].root));
+    }
+    const std::array<NodeId, 3> grad = gradient(product.graph, product.root);
+    GlslFormula glsl = emitFormulaGlsl(product.graph, product.root, grad);
+    std::vector<NodeId> roots;
+    std::vector<SurfaceLook> looks;
+    for (const Formula& f : surfaces) {
+      roots.push_back(copyInto(product.graph, f.graph, f.root));
+      looks.push_back({{0.2, 0.4, 0.6}, {0.6, 0.4, 0.2}, {0.1, 1, 0.5, 40}, {0.1, 1, 0.5, 40}});
+    }
+    glsl.source += emitSurfacesGlsl(product.graph, roots, looks, {scene % 2 == 0, 0.02, {0, 0, 0}});
+    const IntervalGlsl interval = emitIntervalGlsl(product.graph, product.root);
+    for (const ShaderDialect dialect : {ShaderDialect::Gl330, ShaderDialect::Es300}) {
+      const Stage stage = Stage::Fragment;
+      const ValidationResult sampling = validateGlsl(assembleFragmentShader(glsl, {}, dialect), stage);
+      ASSERT_TRUE(sampling.ok) << formatInternalShaderError("sampling", sampling);
+      const ValidationResult intervals =
+          validateGlsl(assembleFragmentShader(glsl, interval, {}, dialect), stage);
+      ASSERT_TRUE(intervals.ok) << formatInternalShaderError("interval", intervals);
+      // Bernstein up to the degree the pipeline uses it for in each dialect.
+      const std::optional<int> degree = rayPolynomialDegree(product.graph, product.root);
+      const int limit = dialect == ShaderDialect::Gl330 ? kMaxBernsteinDegree : kWebBernsteinMaxDegree;
+      if (!degree || *degree > limit) continue;
+      if (auto poly = emitRayPolynomialGlsl(product.graph, product.root, dialect == ShaderDialect::Gl330)) {
+        polynomials += dialect == ShaderDialect::Gl330;
+        const ValidationResult bernstein =
+            validateGlsl(assembleFragmentShader(glsl, *poly, {}, dialect), stage);
+        ASSERT_TRUE(bernstein.ok) << formatInternalShaderError("Bernstein", bernstein);
+      }
+    }
+  }
+  EXPECT_GT(polynomials, 0) << "no product was a polynomial: Bernstein untested";
+}
 
 // One very large formula: the sum of many random terms (shared subexpressions are merged by
 // the graph, so the node count is what is measured, not the text length).
