@@ -34,7 +34,9 @@ SceneResult parseScene(std::string_view text, std::string_view fileName) {
   try {
     const toml::table doc = toml::parse(text, fileName);
     if (auto err = applyDocument(scene, doc, src)) return *err;
-    if (!doc.contains(kFormulaKey) && !doc.contains(kSurfacesKey)) {
+    // [[surface]] tables carry their formulas; [surface] (the level) does not.
+    const toml::node* surfaces = doc.get(kSurfacesKey);
+    if (!doc.contains(kFormulaKey) && !(surfaces && surfaces->is_array())) {
       return src.error({1, 1}, "formula", "the scene has no formula",
                        "add formula = \"...\" before the first [table], e.g. "
                        "formula = \"x^2 + y^2 + z^2 - 1\"");

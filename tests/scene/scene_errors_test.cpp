@@ -124,6 +124,7 @@ const BadScene kBadScenes[] = {
     {"formula not a string", "formula = 3\n", 1, 11, "formula", "must be a string",
      "double quotes"},
     {"no formula", "[octree]\nlevel = 2\n", 1, 1, "formula", "no formula", "formula = "},
+    {"a level but no formula", "[surface]\nlevel = 2\n", 1, 1, "formula", "no formula", "formula = "},
     {"surface table without a formula",
      "[[surface]]\nformula = \"x\"\n[[surface]]\nlevel = 1\n", 3, 1, "surface.2.formula",
      "this surface has no formula", "[[surface]] table needs one"},
