@@ -416,66 +416,51 @@ function buildSettings() {
   if (focused) box.querySelector(`[data-key="${focused}"]`)?.focus();
 }
 
-// The clip planes: one fieldset each with a remove button, and a button that adds a plane
-// (z <= 0 first). Adding and removing replace the whole list through --set.
-function clipPlaneRows(box) {
-  const planes = session.listEntries('clip.plane');
-  const inline = (plane) => '{' + plane.map((s) => `${s.key.replace(/^.*\./, '')} = ` +
-    tomlOf(s, s.type === 'bool' ? s.value[0] !== 0 : s.type === 'vec3' ? s.value : s.value[0])).join(', ') + '}';
-  const setList = (list) => applySetting('clip.plane', `[${list.join(', ')}]`);
-  planes.forEach((plane, i) => {
+// A list of the scene ([[clip.plane]], [[surface]]): one fieldset per entry from `first` on,
+// with its keys and a remove button, and a button that adds `fresh` while fewer than `max`.
+// Adding and removing replace the whole list through --set.
+function listRows(box, { list, first = 0, max, legend, addLabel, fresh }) {
+  const entries = session.listEntries(list);
+  const id = list.replace('.', '-');
+  const valueOf = (s) => s.type === 'function' || s.type === 'enum' ? s.choice
+    : s.type === 'bool' ? s.value[0] !== 0 : s.type === 'vec3' ? s.value : s.value[0];
+  const inline = (entry) => '{' + entry.map((s) =>
+    `${s.key.slice(`${list}.`.length).replace(/^\d+\./, '')} = ${tomlOf(s, valueOf(s))}`).join(', ') + '}';
+  const setList = (all) => applySetting(list, `[${all.join(', ')}]`);
+  entries.forEach((entry, i) => {
+    if (i < first) return;
     const set = document.createElement('fieldset');
-    const legend = document.createElement('legend');
-    legend.textContent = trf('plane %d', i + 1);
+    const title = document.createElement('legend');
+    title.textContent = trf(legend, i + 1);
     const remove = document.createElement('button');
     remove.type = 'button';
     remove.textContent = tr('remove');
-    remove.id = `clip-plane-${i + 1}-remove`;
-    remove.addEventListener('click', () => setList(planes.filter((_, j) => j !== i).map(inline)));
-    set.append(legend, ...plane.map(settingRow), remove);
+    remove.id = `${id}-${i + 1}-remove`;
+    remove.addEventListener('click', () => setList(entries.filter((_, j) => j !== i).map(inline)));
+    set.append(title, ...entry.map(settingRow), remove);
     box.append(set);
   });
-  if (planes.length < MAX_CLIP_PLANES) {
+  if (entries.length < max) {
     const add = document.createElement('button');
     add.type = 'button';
-    add.textContent = tr('add plane');
-    add.id = 'clip-plane-add';
-    add.addEventListener('click', () => setList([...planes.map(inline), '{normal = [0, 0, 1], offset = 0}']));
+    add.textContent = tr(addLabel);
+    add.id = `${id}-add`;
+    add.addEventListener('click', () => setList([...entries.map(inline), fresh]));
     box.append(add);
   }
 }
 
-// The surfaces after the first (whose formula is the formula field): one fieldset each with
-// its formula, level and materials and a remove button, and a button that adds one (the
-// plane z = 0 first). Adding and removing replace the whole [[surface]] list through --set.
+// The clip planes, z <= 0 the first one added.
+function clipPlaneRows(box) {
+  listRows(box, { list: 'clip.plane', max: MAX_CLIP_PLANES, legend: N_('plane %d'),
+                  addLabel: N_('add plane'), fresh: '{normal = [0, 0, 1], offset = 0}' });
+}
+
+// The surfaces after the first (whose formula is the formula field), the plane z = 0 the
+// first one added.
 function surfaceRows(box) {
-  const surfaces = session.listEntries('surface');
-  const valueOf = (s) => s.type === 'function' || s.type === 'enum' ? s.choice
-    : s.type === 'bool' ? s.value[0] !== 0 : s.type === 'vec3' ? s.value : s.value[0];
-  const inline = (entry) => '{' + entry.map((s) =>
-    `${s.key.replace(/^surface\.\d+\./, '')} = ${tomlOf(s, valueOf(s))}`).join(', ') + '}';
-  const setList = (list) => applySetting('surface', `[${list.join(', ')}]`);
-  surfaces.forEach((entry, i) => {
-    if (i === 0) return;  // the formula field above
-    const set = document.createElement('fieldset');
-    const legend = document.createElement('legend');
-    legend.textContent = trf('surface %d', i + 1);
-    const remove = document.createElement('button');
-    remove.type = 'button';
-    remove.textContent = tr('remove');
-    remove.id = `surface-${i + 1}-remove`;
-    remove.addEventListener('click', () => setList(surfaces.filter((_, j) => j !== i).map(inline)));
-    set.append(legend, ...entry.map(settingRow), remove);
-    box.append(set);
-  });
-  if (surfaces.length < MAX_SURFACES) {
-    const add = document.createElement('button');
-    add.type = 'button';
-    add.textContent = tr('add surface');
-    add.id = 'surface-add';
-    add.addEventListener('click', () => setList([...surfaces.map(inline), '{formula = "z"}']));
-    box.append(add);
-  }
+  listRows(box, { list: 'surface', first: 1, max: MAX_SURFACES, legend: N_('surface %d'),
+                  addLabel: N_('add surface'), fresh: '{formula = "z"}' });
 }
 
 // ---- pointer, wheel, touch, keys -----------------------------------------------------

@@ -5,8 +5,6 @@
 
 #include "app/commands.hpp"
 #include "app/mesh_export.hpp"
-#include "app/text_output.hpp"
-#include "scene/scene_io.hpp"
 #include "app/scene_args.hpp"
 
 namespace zs::app {
@@ -27,21 +25,12 @@ int runMesh(MeshArgs& args) {
   auto progress = [&](const std::string& line) {
     if (!args.quiet) std::cerr << "mesh: " << line << "\n" << std::flush;
   };
-  // One mesh per surface: each is closed (or ends on the domain) on its own, where the
-  // union's mesh would have every intersection curve as a non-manifold edge.
-  const std::size_t count = surfaceCount(*scene);
-  for (std::size_t i = 0; i < count; ++i) {
-    MeshExport request = args.request;
-    request.output = surfacePath(args.request.output, i, count).string();
-    MeshExportReport report;
-    if (std::string err = exportMesh(surfaceScene(*scene, i), request, report, progress);
-        !err.empty()) {
-      std::cerr << err;
-      return 1;
-    }
-    if (count > 1) std::cout << (i > 0 ? "\n" : "") << "surface " << i + 1 << " of " << count << ":\n";
-    std::cout << meshSummary(report, request.output);
+  std::vector<SurfaceMesh> meshes;
+  if (std::string err = exportMeshes(*scene, args.request, meshes, progress); !err.empty()) {
+    std::cerr << err;
+    return 1;
   }
+  std::cout << meshSummary(meshes);
   return 0;
 }
 

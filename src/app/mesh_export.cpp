@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <future>
 
+#include "app/text_output.hpp"
 #include "pipeline/pipeline.hpp"
 #include "mesh/mesh_io.hpp"
 #include "parser/parser.hpp"
@@ -22,6 +23,9 @@ int levelForCellSize(const Scene& scene, double cellSize) {
   return int(std::clamp(level, 1.0, double(kMaxMeshLevel)));
 }
 
+namespace {
+
+// The mesh of a scene of one surface.
 std::string exportMesh(const Scene& scene, const MeshExport& request, MeshExportReport& report,
                        const std::function<void(const std::string&)>& progress) {
   const auto format = meshFormatFor(request.output);
@@ -76,6 +80,36 @@ std::string meshSummary(const MeshExportReport& r, const std::string& output) {
                 s.totalSeconds + r.writeSeconds, s.octreeSeconds, s.gridSeconds, s.rootSeconds,
                 r.writeSeconds);
   return buf;
+}
+
+}  // namespace
+
+std::string exportMeshes(const Scene& scene, const MeshExport& request,
+                         std::vector<SurfaceMesh>& meshes,
+                         const std::function<void(const std::string&)>& progress) {
+  meshes.clear();
+  const std::size_t count = surfaceCount(scene);
+  for (std::size_t i = 0; i < count; ++i) {
+    MeshExport one = request;
+    one.output = surfacePath(request.output, i, count).string();
+    SurfaceMesh mesh{one.output, {}};
+    if (std::string err = exportMesh(surfaceScene(scene, i), one, mesh.report, progress);
+        !err.empty())
+      return err;
+    meshes.push_back(std::move(mesh));
+  }
+  return {};
+}
+
+std::string meshSummary(const std::vector<SurfaceMesh>& meshes) {
+  std::string out;
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    if (meshes.size() > 1)
+      out += (i > 0 ? "\n" : "") + std::string("surface ") + std::to_string(i + 1) + " of " +
+             std::to_string(meshes.size()) + ":\n";
+    out += meshSummary(meshes[i].report, meshes[i].output);
+  }
+  return out;
 }
 
 }  // namespace zs::app

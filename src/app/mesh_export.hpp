@@ -3,6 +3,7 @@
 // Scene, a grid level, whether to cap, the output path, puts out the file and a summary.
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "mesh/mesh.hpp"
 #include "mesh/mesh_check.hpp"
@@ -26,11 +27,22 @@ struct MeshExportReport {
 // at most kMaxMeshLevel).
 int levelForCellSize(const Scene& scene, double cellSize);
 
-// "" on success (and `report` filled); otherwise a message ready to print.
-std::string exportMesh(const Scene& scene, const MeshExport& request, MeshExportReport& report,
-                       const std::function<void(const std::string&)>& progress = {});
+// One mesh written: where, and what it is.
+struct SurfaceMesh {
+  std::string output;
+  MeshExportReport report;
+};
 
-// A summary of several lines for the terminal: counts, times, accuracy, topology.
-std::string meshSummary(const MeshExportReport& report, const std::string& output);
+// One mesh per surface of the scene, each closed (or ending on the domain) on its own, where
+// the union's mesh would have every intersection curve as a non-manifold edge: written to
+// `request.output`, or for several surfaces to its stem numbered from 1 (out-1.stl, ...).
+// "" on success (and `meshes` filled, in surface order); otherwise a message ready to print.
+std::string exportMeshes(const Scene& scene, const MeshExport& request,
+                         std::vector<SurfaceMesh>& meshes,
+                         const std::function<void(const std::string&)>& progress = {});
+
+// A summary of several lines per mesh for the terminal: counts, times, accuracy, topology,
+// each headed "surface N of M:" when there are several.
+std::string meshSummary(const std::vector<SurfaceMesh>& meshes);
 
 }  // namespace zs::app

@@ -37,9 +37,10 @@ std::string runPrintJob(const PrintJob& job) {
   page.picture = std::move(frame.color);
   page.title = job.title;
   page.description = job.description;
-  page.formulas.emplace_back(scene.formula, scene.level);
-  for (const SurfaceEntry& more : scene.moreSurfaces)
-    page.formulas.emplace_back(more.formula, more.level);
+  for (std::size_t i = 0; i < surfaceCount(scene); ++i) {
+    const SurfaceEntry surface = surfaceAt(scene, i);
+    page.formulas.emplace_back(surface.formula, surface.level);
+  }
   if (auto parsed = parseSceneFormula(scene); std::holds_alternative<Formula>(parsed)) {
     const Graph& graph = std::get<Formula>(parsed).graph;
     const std::vector<double> values = paramValues(scene, graph);

@@ -49,20 +49,10 @@ std::optional<Scene> loadSceneArgs(const SceneArgs& args) {
   }
   Scene scene = std::get<Scene>(std::move(loaded));
   for (const std::string& formula : args.surfaces) {
-    if (surfaceCount(scene) >= static_cast<std::size_t>(kMaxSurfaces)) {
-      std::cerr << "error: --surface: at most " << kMaxSurfaces << " surfaces in a scene\n"
-                << "hint: combine surfaces into one formula (a product F*G draws both)\n";
+    if (std::string err = addSurface(scene, formula); !err.empty()) {
+      std::cerr << "--surface:\n" << err;
       return std::nullopt;
     }
-    const ParseResult parsed = parseFormula(formula);
-    if (const auto* err = std::get_if<ParseError>(&parsed)) {
-      std::cerr << "--surface:\n" << formatError(formula, *err);
-      return std::nullopt;
-    }
-    SurfaceEntry entry;
-    entry.formula = formula;
-    entry.materials = surfaceMaterials(surfaceCount(scene));
-    scene.moreSurfaces.push_back(std::move(entry));
   }
   // All --set at once: keys that constrain each other are checked after the last one.
   if (auto err = applyOverrides(scene, args.sets)) {

@@ -92,9 +92,9 @@ SurferFormula surferFormula(const std::string& formula, std::vector<std::string>
 }  // namespace
 
 std::variant<Exported, std::string> exportJsurf(const Scene& scene) {
-  if (!scene.moreSurfaces.empty()) {
+  if (surfaceCount(scene) > 1) {
     return "error: cannot export to SURFER: this scene has " +
-           std::to_string(1 + scene.moreSurfaces.size()) +
+           std::to_string(surfaceCount(scene)) +
            " surfaces, and a SURFER scene draws one\n"
            "hint: export one surface at a time (keep one [[surface]]), or draw their union as "
            "one formula, the product F*G\n";

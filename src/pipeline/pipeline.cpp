@@ -1,6 +1,5 @@
 #include "pipeline/pipeline.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <limits>
@@ -48,15 +47,15 @@ std::string constantFormulaNote(const Formula& formula, std::span<const double> 
 }
 
 // Several surfaces are traced as the product of their functions, which is undefined wherever
-// one of them is: there no surface is drawn, not even another one's.
-std::string partlyUndefinedNote(const Scene& scene) {
-  if (surfaceCount(scene) == 1) return {};
+// one of them is: there no surface is drawn, not even another one's. `roots`: each surface's
+// function in the product's graph.
+std::string partlyUndefinedNote(const Scene& scene, const Graph& graph,
+                                const std::vector<NodeId>& roots) {
+  if (roots.size() == 1) return {};
   std::string note;
-  for (std::size_t i = 0; i < surfaceCount(scene); ++i) {
-    ParseResult parsed = parseSurfaceFormula(scene, i);
-    const Formula* f = std::get_if<Formula>(&parsed);
-    if (!f || f->graph.isTotal(f->root)) continue;
-    note += "note: surface " + std::to_string(i + 1) + " (" + surfaceFormula(scene, i) +
+  for (std::size_t i = 0; i < roots.size(); ++i) {
+    if (graph.isTotal(roots[i])) continue;
+    note += "note: surface " + std::to_string(i + 1) + " (" + surfaceAt(scene, i).formula +
             ") may be undefined in places (a square root, logarithm, division...); the "
             "surfaces are traced as one product, so where it is undefined no surface is drawn\n";
   }
@@ -116,21 +115,15 @@ void findMarkedPoints(const Scene& scene, PreparedSurface& s) {
                      "(zeroset singular lists them)\n";
 }
 
-// Each surface's function as a node of the product's graph (the same nodes the product
-// was built from), with its materials and the intersection highlight.
-std::string surfacesBlock(const Scene& scene, Graph& graph) {
-  std::vector<NodeId> roots;
+// The surfaces block: each surface's function (`roots`, in the product's graph) with its
+// materials, and the intersection highlight.
+std::string surfacesBlock(const Scene& scene, Graph& graph, const std::vector<NodeId>& roots) {
   std::vector<SurfaceLook> looks;
-  const double ambient = std::max(scene.render.lights.ambient, 0.0);
-  auto phong = [&](const Material& m) {
-    return std::array<double, 4>{m.ambient * ambient, m.diffuse, m.specular,
-                                 std::max(m.shininess, 0.0)};
-  };
-  for (std::size_t i = 0; i < surfaceCount(scene); ++i) {
-    const Formula f = std::get<Formula>(parseSurfaceFormula(scene, i));  // parsed before
-    roots.push_back(copyInto(graph, f.graph, f.root));
-    const Materials& m = i == 0 ? scene.render.materials : scene.moreSurfaces[i - 1].materials;
-    looks.push_back({m.front.color, m.back.color, phong(m.front), phong(m.back)});
+  const double ambient = scene.render.lights.ambient;
+  for (std::size_t i = 0; i < roots.size(); ++i) {
+    const Materials m = surfaceAt(scene, i).materials;
+    looks.push_back({m.front.color, m.back.color, phongWeights(m.front, ambient),
+                     phongWeights(m.back, ambient)});
   }
   const Highlight& h = scene.render.intersection;
   return emitSurfacesGlsl(graph, roots, looks, {h.enabled, h.threshold, h.color});
@@ -154,7 +147,8 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
   PreparedSurface s;
   auto t = std::chrono::steady_clock::now();
   std::size_t failedSurface = 0;
-  ParseResult parsed = parseSceneFormula(scene, &failedSurface);
+  std::vector<NodeId> surfaceRoots;
+  ParseResult parsed = parseSceneFormula(scene, &failedSurface, &surfaceRoots);
   if (auto* err = std::get_if<ParseError>(&parsed))
     return formatSceneFormulaError(scene, failedSurface, *err);
   if (surfaceCount(scene) > 1 && scene.render.mode == RenderMode::Volume)
@@ -164,7 +158,8 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
   s.formula = std::get<Formula>(std::move(parsed));
   s.gradient = gradient(s.formula.graph, s.formula.root);
   s.params = paramValues(scene, s.formula.graph);
-  s.formulaNote = constantFormulaNote(s.formula, s.params) + partlyUndefinedNote(scene);
+  s.formulaNote = constantFormulaNote(s.formula, s.params) +
+                  partlyUndefinedNote(scene, s.formula.graph, surfaceRoots);
   s.times.parseMs = msSince(t);
 
   t = std::chrono::steady_clock::now();
@@ -195,7 +190,7 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
              " has parameters; it may use only x, y, z and constants\n";
     s.glsl.source += block;
   }
-  if (surfaceCount(scene) > 1) s.glsl.source += surfacesBlock(scene, s.formula.graph);
+  if (surfaceRoots.size() > 1) s.glsl.source += surfacesBlock(scene, s.formula.graph, surfaceRoots);
   std::string markers;
   if (scene.render.singular.enabled) {
     if (options.markedPoints) s.singularPoints = *options.markedPoints;

@@ -249,8 +249,11 @@ std::variant<ProbeResult, std::string> SurfaceProbe::pixel(std::span<const doubl
 namespace {
 
 std::vector<std::pair<std::string, double>> functionsOf(const Scene& scene) {
-  std::vector<std::pair<std::string, double>> out{{scene.formula, scene.level}};
-  for (const SurfaceEntry& e : scene.moreSurfaces) out.emplace_back(e.formula, e.level);
+  std::vector<std::pair<std::string, double>> out;
+  for (std::size_t i = 0; i < surfaceCount(scene); ++i) {
+    const SurfaceEntry surface = surfaceAt(scene, i);
+    out.emplace_back(surface.formula, surface.level);
+  }
   return out;
 }
 

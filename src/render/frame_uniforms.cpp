@@ -131,10 +131,9 @@ FrameUniforms frameUniforms(const RenderSettings& s, const Domain& clip, const F
 
   // The lights themselves are shader constants (render/shading_defines.hpp).
   const Materials& m = s.materials;
-  const double ambient = std::max(s.lights.ambient, 0.0);
   auto phong = [&](const char* name, const Material& material) {
-    u.vec4(name, material.ambient * ambient, material.diffuse, material.specular,
-           std::max(material.shininess, 0.0));
+    const std::array<double, 4> w = phongWeights(material, s.lights.ambient);
+    u.vec4(name, w[0], w[1], w[2], w[3]);
   };
   u.vec3("rtFrontColor", m.front.color);
   u.vec3("rtBackColor", m.back.color);

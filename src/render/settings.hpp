@@ -121,6 +121,13 @@ struct Material {
   bool operator==(const Material&) const = default;
 };
 
+// A material's Phong weights as the shader takes them: (ambient * the scene's ambient light,
+// diffuse, specular, shininess), negative ambient light and shininess taken as 0.
+inline std::array<double, 4> phongWeights(const Material& m, double ambientLight) {
+  return {m.ambient * (ambientLight > 0 ? ambientLight : 0.0), m.diffuse, m.specular,
+          m.shininess > 0 ? m.shininess : 0.0};
+}
+
 // front: where the gradient of F points towards the viewer; back: the other side (the
 // inside of a closed surface, seen through a cut).
 struct Materials {

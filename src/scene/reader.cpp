@@ -242,10 +242,6 @@ class Reader {
                        [&](const KeySpec& k) { return k.name.starts_with(prefix); });
   }
 
-  // The keys that belong in the first [[surface]] table of a file that has them.
-  static bool describesFirstSurface(std::string_view key) {
-    return key == kFormulaKey || key.starts_with("materials.");
-  }
   SceneError outsideSurfaceList(Position pos, const std::string& key) const {
     return src_.error(pos, key,
                       key + " describes the first surface, but this file lists its surfaces in "

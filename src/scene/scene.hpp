@@ -23,9 +23,6 @@ struct SurfaceEntry {
   bool operator==(const SurfaceEntry&) const = default;
 };
 
-// The default materials of surface i (0-based): each surface its own color.
-Materials surfaceMaterials(std::size_t i);
-
 struct Scene {
   std::string formula = "x^2 + y^2 + z^2 - 1";
   std::vector<std::pair<std::string, double>> params;  // in file order

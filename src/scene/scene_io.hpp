@@ -64,18 +64,30 @@ std::string saveScene(const Scene& scene);
 //     hint: ...
 std::string formatSceneError(const SceneError& error);
 
-// How many surfaces the scene draws (1 + moreSurfaces), and surface i's formula text.
-std::size_t surfaceCount(const Scene& scene);
-const std::string& surfaceFormula(const Scene& scene, std::size_t i);
+// The surfaces of a scene (scene/surfaces.cpp). Surface 0 is the scene's own formula, level
+// and render.materials; surfaces 1.. are moreSurfaces.
 
-// Surface i (0: the scene's own formula) parsed as the function whose zero set is drawn:
-// F - level (F itself at level 0). Errors point into surfaceFormula(scene, i).
+// How many surfaces the scene draws (1 + moreSurfaces), and surface i as an entry.
+std::size_t surfaceCount(const Scene& scene);
+SurfaceEntry surfaceAt(const Scene& scene, std::size_t i);
+
+// The default materials of surface i: each surface its own colors.
+Materials surfaceMaterials(std::size_t i);
+
+// Appends a surface with this formula and its default materials; "" on success, else the
+// formula's caret error or why no more surfaces fit, ready to print.
+std::string addSurface(Scene& scene, std::string_view formula);
+
+// Surface i parsed as the function whose zero set is drawn: F - level (F itself at level 0).
+// Errors point into that surface's formula.
 ParseResult parseSurfaceFormula(const Scene& scene, std::size_t i);
 
 // The function whose zero set is the whole picture: surface 0's, or for several surfaces the
 // product of theirs, whose zero set is their union. On error `failedSurface` (when given)
-// says which surface's formula the error points into.
-ParseResult parseSceneFormula(const Scene& scene, std::size_t* failedSurface = nullptr);
+// says which surface's formula the error points into; on success `surfaceRoots` (when given)
+// holds each surface's function as a node of the result's graph.
+ParseResult parseSceneFormula(const Scene& scene, std::size_t* failedSurface = nullptr,
+                              std::vector<NodeId>* surfaceRoots = nullptr);
 
 // The scene with surface i alone: its formula, level and materials in the scene's own
 // fields, every other setting kept (what the per-surface commands work on).

@@ -4,6 +4,8 @@
 #include <array>
 #include <limits>
 
+#include "scene/scene_io.hpp"
+
 namespace zs::scene_detail {
 
 namespace {
@@ -174,12 +176,6 @@ const KeySpec kSurfaceKeys[] = {
 
 #undef ZS_FIELD
 
-// Surface i of a scene (0: the scene's own formula, level and materials) as an entry.
-SurfaceEntry surfaceAt(const Scene& s, std::size_t i) {
-  if (i > 0) return s.moreSurfaces[i - 1];
-  return SurfaceEntry{s.formula, s.level, s.render.materials};
-}
-
 const ListSpec kLists[] = {
     {kLightSourcesKey, "light", kLightKeys, static_cast<std::size_t>(kMaxLights),
      "{ kind = \"point\", position = [0, 0, 5] }",
@@ -268,6 +264,11 @@ const KeySpec* findKey(std::string_view dottedName) {
     if (k.name == dottedName) return &k;
   }
   return nullptr;
+}
+
+bool describesFirstSurface(std::string_view dottedName) {
+  return dottedName == kFormulaKey || dottedName == "surface.level" ||
+         dottedName.starts_with("materials.");
 }
 
 bool isTableName(std::string_view dottedName) {

@@ -83,6 +83,10 @@ const ListSpec* findList(std::string_view dottedName);
 std::span<const KeySpec> lightKeySpecs();  // the keys of one [[lights.source]] entry
 const KeySpec* findListKey(const ListSpec& list, std::string_view name);
 
+// The keys of the first surface that a file with [[surface]] tables keeps inside the first
+// of them instead: formula, surface.level and materials.*.
+bool describesFirstSurface(std::string_view dottedName);
+
 // True for "camera", "lights", "lights.point", "clip", ...: names that hold other keys.
 bool isTableName(std::string_view dottedName);
 

@@ -105,9 +105,6 @@ std::string saveScene(const Scene& scene) {
   // Several surfaces are all written as [[surface]] tables, the first one's formula, level
   // and materials included (TOML cannot have both [surface] and [[surface]]).
   const bool surfaceList = !scene.moreSurfaces.empty();
-  auto describesFirstSurface = [](std::string_view key) {
-    return key == "surface.level" || key.starts_with("materials.");
-  };
   if (!surfaceList) out += "formula = " + tomlString(scene.formula) + "\n";
   bool paramsWritten = false;
   std::string_view table;

@@ -48,14 +48,7 @@ std::string WebSession::setFormula(std::string_view formula) {
 }
 
 std::string WebSession::addSurface(std::string_view formula) {
-  if (std::string error = formulaError(formula); !error.empty()) return error;
-  if (surfaceCount(scene_) >= static_cast<std::size_t>(kMaxSurfaces))
-    return "error: at most " + std::to_string(kMaxSurfaces) + " surfaces in a scene\n";
-  SurfaceEntry entry;
-  entry.formula = std::string(formula);
-  entry.materials = surfaceMaterials(surfaceCount(scene_));
-  scene_.moreSurfaces.push_back(std::move(entry));
-  return {};
+  return zs::addSurface(scene_, formula);
 }
 
 std::string WebSession::loadSurf(std::string_view text, std::string_view fileName) {

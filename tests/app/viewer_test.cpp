@@ -33,6 +33,14 @@ double distance(const Vec3& a, const Vec3& b) {
   return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 }
 
+// The window's size, from the log's "ready WxH" line.
+void windowSize(ViewerSession& v, int& width, int& height) {
+  const std::string log = v.log();
+  const std::size_t ready = log.find("ready ");
+  ASSERT_NE(ready, std::string::npos) << log;
+  ASSERT_EQ(std::sscanf(log.c_str() + ready, "ready %dx%d", &width, &height), 2) << log;
+}
+
 #define START(session) \
   ASSERT_TRUE(session.ok()) << session.error()
 
@@ -63,11 +71,8 @@ TEST(Viewer, DragRotatesTheCameraAroundTheTarget) {
 TEST(Viewer, HoverShowsTheCurvaturesUnderThePointer) {
   ViewerSession v("hover", {"x^2 + y^2 + z^2 - 1"});
   START(v);
-  const std::string log = v.log();
   int width = 0, height = 0;
-  const std::size_t ready = log.find("ready ");
-  ASSERT_NE(ready, std::string::npos) << log;
-  ASSERT_EQ(std::sscanf(log.c_str() + ready, "ready %dx%d", &width, &height), 2) << log;
+  ASSERT_NO_FATAL_FAILURE(windowSize(v, width, height));
   v.move(width / 2 + 7, height / 2 - 5);  // over the unit sphere, right of the panel
   const std::string line = v.waitLog("probe: ", 20);
   double k = 0, h = 0, k1 = 0, k2 = 0;
@@ -110,11 +115,8 @@ TEST(Viewer, SeveralSurfacesAreProbedAndMeshedEachOnItsOwn) {
   ViewerSession v("surfaces", {"x^2 + y^2 + z^2 - 1", "--surface",
                                "x^2 + y^2 + (z - 1.25)^2 - 0.04", "--set", "camera.eye=[0,0,4]"});
   START(v);
-  const std::string log = v.log();
   int width = 0, height = 0;
-  const std::size_t ready = log.find("ready ");
-  ASSERT_NE(ready, std::string::npos) << log;
-  ASSERT_EQ(std::sscanf(log.c_str() + ready, "ready %dx%d", &width, &height), 2) << log;
+  ASSERT_NO_FATAL_FAILURE(windowSize(v, width, height));
   v.move(width / 2 + 1, height / 2 + 1);  // the picture's centre: the small ball
   const std::string line = v.waitLog("probe: surface 2 of 2 ", 20);
   double k = 0, h = 0;

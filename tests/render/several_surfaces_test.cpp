@@ -8,6 +8,7 @@
 #include <string>
 
 #include "render_support.hpp"
+#include "scene/scene_io.hpp"
 
 namespace zs {
 namespace {
@@ -65,18 +66,22 @@ class SeveralSurfaces : public ::testing::TestWithParam<TracingMethod> {
     s.silhouette.enabled = false;
     s.border.enabled = false;
     s.background = {0, 0, 0};
-    s.intersection = RenderSettings{}.intersection;
     s.materials.front.specular = 0;
     return s;
+  }
+  // Both spheres in settings(), the intersection curves drawn or not.
+  void render(bool highlight, Frame& frame) {
+    std::unique_ptr<RayTracer> t = tracer(highlight);
+    ASSERT_NE(t, nullptr);
+    frame = t->render(settings(), Domain{}, kSize, kSize);
+    ASSERT_EQ(frame.error, "");
   }
 };
 
 TEST_P(SeveralSurfaces, EveryPixelShowsTheNearerSphereInItsOwnMaterial) {
-  auto t = tracer(false);
-  ASSERT_NE(t, nullptr);
   const RenderSettings s = settings();
-  const Frame f = t->render(s, Domain{}, kSize, kSize);
-  ASSERT_EQ(f.error, "");
+  Frame f;
+  ASSERT_NO_FATAL_FAILURE(render(false, f));
   int onA = 0, onB = 0;
   for (int j = 0; j < kSize; ++j) {
     for (int i = 0; i < kSize; ++i) {
@@ -121,11 +126,9 @@ TEST_P(SeveralSurfaces, EveryPixelShowsTheNearerSphereInItsOwnMaterial) {
 }
 
 TEST_P(SeveralSurfaces, TheCircleWhereTheyMeetIsMarkedWhereItProjects) {
-  auto t = tracer(true);
-  ASSERT_NE(t, nullptr);
   const RenderSettings s = settings();
-  const Frame f = t->render(s, Domain{}, kSize, kSize);
-  ASSERT_EQ(f.error, "");
+  Frame f;
+  ASSERT_NO_FATAL_FAILURE(render(true, f));
   int marked = 0, onCircle = 0, markedOnCircle = 0;
   for (int j = 0; j < kSize; ++j) {
     for (int i = 0; i < kSize; ++i) {

@@ -14,6 +14,7 @@
 
 #include "app/viewer/panel.hpp"
 #include "i18n/translate.hpp"
+#include "scene/scene_io.hpp"
 
 namespace zs::app {
 namespace {
@@ -248,12 +249,9 @@ void surfaces(Scene& scene) {
     typed.erase(typed.begin() + std::ptrdiff_t(removed));
     shown.erase(shown.begin() + std::ptrdiff_t(removed));
   }
-  if (int(more.size()) + 1 < kMaxSurfaces && ImGui::Button(i18n::label("add surface"))) {
-    SurfaceEntry e;
-    e.formula = "z";  // a plane through the middle: visible at once, easy to edit
-    e.materials = surfaceMaterials(more.size() + 1);
-    more.push_back(e);
-  }
+  // A plane through the middle: visible at once, easy to edit.
+  if (int(more.size()) + 1 < kMaxSurfaces && ImGui::Button(i18n::label("add surface")))
+    addSurface(scene, "z");
   if (!more.empty()) highlight(N_("intersection curves"), scene.render.intersection);
 }
 

@@ -9,8 +9,6 @@
 #include "app/mesh_export.hpp"
 #include "app/repl/scene_edit.hpp"
 #include "app/viewer/viewer.hpp"
-#include "scene/scene_io.hpp"
-#include "app/text_output.hpp"
 #include "i18n/translate.hpp"
 
 namespace zs::app {
@@ -33,23 +31,12 @@ void Viewer::startMeshExport() {
   request.output = nextFreePath(dir, stem + "-level" + std::to_string(request.settings.level), ".stl").string();
   stats_.status = i18n::format(i18n::tr("exporting a mesh at level %d..."), request.settings.level);
   meshExport_ = std::async(std::launch::async, [scene = scene_, request] {
-    // One mesh per surface, as `zeroset mesh` writes them (stem-1.stl, stem-2.stl...).
-    const std::size_t count = surfaceCount(scene);
-    std::string summary;
-    for (std::size_t i = 0; i < count; ++i) {
-      MeshExport one = request;
-      one.output = surfacePath(request.output, i, count).string();
-      MeshExportReport report;
-      const std::string error = exportMesh(surfaceScene(scene, i), one, report);
-      if (!error.empty()) {
-        glfwPostEmptyEvent();
-        return FileJobResult{error, panelError(error)};
-      }
-      summary += meshSummary(report, one.output);
-    }
+    std::vector<SurfaceMesh> meshes;
+    const std::string error = exportMeshes(scene, request, meshes);
     glfwPostEmptyEvent();  // wake the loop to show it
-    return FileJobResult{summary, i18n::format(i18n::tr("mesh written: %s"),
-                                               surfacePath(request.output, 0, count).c_str())};
+    if (!error.empty()) return FileJobResult{error, panelError(error)};
+    return FileJobResult{meshSummary(meshes), i18n::format(i18n::tr("mesh written: %s"),
+                                                           meshes.front().output.c_str())};
   });
 }
 
