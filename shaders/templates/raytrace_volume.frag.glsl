@@ -5,8 +5,9 @@
 // v = zs_F(p) has the color of the diverging map of v / range and the extinction
 // density * exp(-(v / falloff)^2). `steps` samples, one at the middle of each step (the
 // midpoint rule), composited front to back; docs/renderer.md, "Volume rendering", has the
-// step error. Joined after raytrace_shading.frag.glsl; compiled only where RT_VOLUME is
-// defined (ProgramVariant::volume).
+// step error. The last piece of every program (it follows the interval method's, whose
+// zs_FAffine and rtHalfWidth it uses); compiled only where RT_VOLUME is defined
+// (ProgramVariant::volume).
 
 #ifdef RT_VOLUME
 // Blue for -1, white for 0, red for +1 (clamped beyond): the curvature colorings' map.
@@ -16,7 +17,59 @@ vec3 rtVolumeColor(float x) {
   return t < 0.0 ? mix(white, blue, -t) : mix(white, red, t);
 }
 
+// A step whose midpoint's value of F lies at least this many falloffs from the level has an
+// extinction below density * exp(-16): it is skipped (docs/renderer.md, "Volume rendering",
+// has the error).
+const float RT_VOLUME_CLEAR = 4.0;
+// The ray is walked in runs of RT_VOLUME_RUN steps, and a run whose window is wider than
+// RT_VOLUME_PART steps in parts that long, each with its own window. Every pixel walks the
+// same runs and parts: on llvmpipe neighbouring pixels run in lock step, and a walk whose
+// runs grow and shrink per pixel (tried) costs what its slowest pixel costs.
+const int RT_VOLUME_RUN = 256, RT_VOLUME_PART = 64;
+
+// The steps [first, last) of the n steps of length h from ta whose midpoints may lie in the
+// band |F| < band: by the interval method's affine form over the n steps (the pipeline draws
+// a volume with that program, RT_HAS_BEAM), where |c + s tau| < r + band; first = last = n
+// where none. Other programs sample every step.
+ivec2 rtVolumeWindow(vec3 o, vec3 d, float ta, float h, int n, float band) {
+#ifdef RT_HAS_BEAM
+  float tb = ta + float(n) * h, tm = 0.5 * ta + 0.5 * tb, hw = rtHalfWidth(ta, tb, tm);
+  vec3 F;
+  vec2 D;
+  bool partial;
+  zs_FAffine(o, d, tm, hw, F, D, partial);
+  vec2 range = zsa_range(F);  // empty where F is defined nowhere: nothing to draw either
+  if (!(range.x < band && range.y > -band)) return ivec2(n);
+  float reach = F.z + band;
+  if (!(F.y != 0.0) || isinf(reach)) return ivec2(0, n);
+  // tau where c + s tau = -reach and = +reach, as step positions k (midpoint k + 1/2), one
+  // step wider on each side for the rounding of tau <-> t <-> k.
+  vec2 tau = (vec2(-reach, reach) - F.x) / F.y;
+  vec2 k = (tm + hw * vec2(min(tau.x, tau.y), max(tau.x, tau.y)) - ta) / h - 0.5;
+  return ivec2(clamp(floor(k.x - 0.0625), 0.0, float(n)), clamp(floor(k.y + 0.0625) + 1.0, 0.0, float(n)));
+#else
+  return ivec2(0, n);
+#endif
+}
+
+// Composites the samples of steps [from, to) (from < to) of length h from t0 over color.
+void rtVolumeSamples(vec3 o, vec3 d, float t0, float h, int from, int to, inout vec3 color,
+                     inout float through) {
+  int k = from;
+  do {
+    vec3 p = o + (t0 + (float(k) + 0.5) * h) * d;
+    float v = zs_F(p);
+    if (!isnan(v) && !isinf(v)) {
+      float u = v / rt.volumeFalloff;
+      float alpha = 1.0 - exp(-rt.volumeDensity * exp(-u * u) * h);
+      color += through * alpha * rtVolumeColor(v / rt.volumeRange);
+      through *= 1.0 - alpha;
+    }
+  } while (++k < to);
+}
+
 // The ray's color over the background; `through` is how much of the background shows.
+// Only the steps in the windows of rtVolumeWindow are sampled; the others are skipped.
 vec3 rtVolume(vec3 o, vec3 d, out float through) {
   vec2 span = rtDomainSpan(o, d, safeInverse(d));
   float t0 = max(span.x, 0.0);
@@ -25,17 +78,24 @@ vec3 rtVolume(vec3 o, vec3 d, out float through) {
   if (!(span.y > t0)) return color;
   int steps = max(rt.volumeSteps, 1);
   float h = (span.y - t0) / float(steps);
+  float band = RT_VOLUME_CLEAR * rt.volumeFalloff;
   int i = 0;
   do {
-    vec3 p = o + (t0 + (float(i) + 0.5) * h) * d;
-    float v = zs_F(p);
-    if (!isnan(v) && !isinf(v)) {
-      float u = v / rt.volumeFalloff;
-      float alpha = 1.0 - exp(-rt.volumeDensity * exp(-u * u) * h);
-      color += through * alpha * rtVolumeColor(v / rt.volumeRange);
-      through *= 1.0 - alpha;
+    int n = min(RT_VOLUME_RUN, steps - i);
+    ivec2 w = rtVolumeWindow(o, d, t0 + float(i) * h, h, n, band);
+    if (w.y - w.x > RT_VOLUME_PART) {
+      int j = w.x - w.x % RT_VOLUME_PART;
+      do {
+        int m = min(RT_VOLUME_PART, n - j);
+        ivec2 p = rtVolumeWindow(o, d, t0 + float(i + j) * h, h, m, band);
+        if (p.x < p.y) rtVolumeSamples(o, d, t0, h, i + j + p.x, i + j + p.y, color, through);
+        j += RT_VOLUME_PART;
+      } while (j < w.y);
+    } else if (w.x < w.y) {
+      rtVolumeSamples(o, d, t0, h, i + w.x, i + w.y, color, through);
     }
-  } while (++i < steps && through > 1e-4);
+    i += n;
+  } while (i < steps && through > 1e-4);
   return color;
 }
 #endif

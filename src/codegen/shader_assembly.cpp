@@ -163,13 +163,14 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
   appendPiece(out, "shaders/templates/" + std::string(kRaytraceTemplate), string++, raytrace);
   appendPiece(out, "shaders/templates/" + std::string(kShadingTemplate), string++,
               shaderTemplate(kShadingTemplate));
-  appendPiece(out, "shaders/templates/" + std::string(kVolumeTemplate), string++,
-              shaderTemplate(kVolumeTemplate));
   appendPiece(out, "shaders/templates/" + std::string(marchName), string++, march);
   if (!firstRoots.empty())
     appendPiece(out, "shaders/templates/" + std::string(kFirstRootsTemplate), string++, firstRoots);
   if (interval)
-    appendPiece(out, "shaders/templates/" + std::string(kBeamTemplate), string, shaderTemplate(kBeamTemplate));
+    appendPiece(out, "shaders/templates/" + std::string(kBeamTemplate), string++, shaderTemplate(kBeamTemplate));
+  // Last: a volume skips stretches with the interval method's zs_FAffine and rtHalfWidth.
+  appendPiece(out, "shaders/templates/" + std::string(kVolumeTemplate), string,
+              shaderTemplate(kVolumeTemplate));
   return out;
 }
 

@@ -172,6 +172,12 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
       options.bernsteinAboveLimit && scene.render.tracing.method == TracingMethod::Bernstein;
   s.method = resolveMethod(scene.render.tracing.method, s.formula, s.methodWarning,
                            anyDegree ? std::numeric_limits<int>::max() : maxBernsteinDegree(options));
+  // A volume finds no roots; it skips the stretches of its rays where the interval method's
+  // affine form keeps F far from the level (raytrace_volume.frag.glsl), so it is that program.
+  if (scene.render.mode == RenderMode::Volume) {
+    s.method = TracingMethod::Interval;
+    s.methodWarning.clear();
+  }
   s.hierarchy = tracingHierarchy(s.formula, s.params, s.octree, s.method);
   s.times.octreeMs = msSince(t);
 

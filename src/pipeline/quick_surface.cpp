@@ -32,7 +32,9 @@ std::variant<QuickSurface, std::string> prepareQuickSurface(const Scene& scene) 
   OctreeResult tree = buildOctree(formula, q.params, toBox(scene.domain), shallow,
                                   toBall(scene.domain));
   if (auto* err = std::get_if<OctreeError>(&tree)) return "error: " + err->message + "\n";
-  q.sampling = scene.render.tracing.method == TracingMethod::Sampling;
+  // A volume skips stretches by the affine form, which only the interval program has.
+  q.sampling = scene.render.tracing.method == TracingMethod::Sampling &&
+               scene.render.mode != RenderMode::Volume;
   q.hierarchy = tracingHierarchy(formula, q.params, std::get<Octree>(tree),
                                  q.sampling ? TracingMethod::Sampling : TracingMethod::Interval);
   q.prepareMs =

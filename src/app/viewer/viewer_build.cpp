@@ -19,6 +19,7 @@ bool needsBuild(const Scene& a, const Scene& b) {
   return a.formula != b.formula || a.level != b.level || a.params != b.params ||
          a.domain != b.domain ||
          a.octree != b.octree || a.render.tracing.method != b.render.tracing.method ||
+         a.render.mode != b.render.mode ||  // a volume is the interval method's program
          a.render.singular != b.render.singular ||  // the markers are part of the shader
          // so are the second derivatives that the curvature colorings need
          needsCurvature(a.render.shading.color) != needsCurvature(b.render.shading.color) ||
