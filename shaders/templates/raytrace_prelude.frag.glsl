@@ -21,6 +21,12 @@ const float zs_FLT_MAX = 3.4028235e38;
 // the boundary of F's domain is not part of the surface.
 bool zs_isUndefined(float f) { return f >= zs_UNDEFINED; }
 
+// Several surfaces whose product stands in 1 for a surface's F where F is undefined
+// (scene/surfaces.cpp): bit i set where the last zs_F or zs_FGrad took stand-in i. The
+// product jumps where a stand-in starts or ends, which the sampling method must not take for
+// a root. Always 0 for one surface.
+uint zs_standIns = 0u;
+
 // ---- results --------------------------------------------------------------------------
 // u: some operation F needs was outside its domain. NaN can still arise from inf - inf or
 // 0 * inf after an overflow; it is reported as undefined too.

@@ -21,7 +21,10 @@ uvec4 rtNode(int i) { return texelFetch(rtHierarchy, i); }
 
 const int RT_SEGS = 8;         // leaf segments per ray; overflow widens the farthest
 const int RT_MAX_EVALS = 4096; // safety bound on F evaluations per ray
-const int SAMPLE = 0, BISECT_F = 1, BISECT_D = 2;  // what the sampling loop found
+// What the sampling loop found: a sign change, a minimum of |F|, or a stand-in's edge
+// (zs_standIns: where the product jumps, a sign change between the two samples says
+// nothing, so the edge is located first and each side's signs are compared on their own).
+const int SAMPLE = 0, BISECT_F = 1, BISECT_D = 2, EDGE = 3;
 
 int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS],
             out vec4 hitG[RT_MAX_HITS]) {
@@ -76,6 +79,7 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
   int k = 1, steps = 0, next = 0, evals = 0;  // k > steps: load the next segment
   float t0 = 0.0, h = 0.0;
   float ta = 0.0, fa = 0.0, da = 0.0;  // previous sample (value, derivative along d)
+  uint ma = 0u;                        // and the stand-ins it took (zs_standIns)
   bool havePrev = false;
   for (int round = 0; round < 64 && evals < RT_MAX_EVALS; ++round) {
     if (k > steps) {  // the nearest slot left, merged with the slots it overlaps
@@ -91,25 +95,30 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
     }
     int mode = SAMPLE;
     float tm = t0 + float(k) * h, ts = 0.0, fs = 0.0, ds = 0.0;
+    uint ms = 0u;
     for (; evals < RT_MAX_EVALS; ++evals) {
       vec4 g = zs_FGrad(o + tm * d);
       float f = g.w, df = dot(g.xyz, d);
+      uint m = zs_standIns;
       if (zs_isUndefined(f)) {
         havePrev = false;  // F's domain boundary is not the surface
+      } else if (havePrev && m != ma) {
+        mode = EDGE;
       } else if (havePrev && sign(f) != sign(fa)) {
         mode = BISECT_F;
       } else if (havePrev && (rt.tangentRoots != 0) && fa * da < 0.0 && f * df > 0.0) {
         mode = BISECT_D;  // |F| fell, then rose
       } else {
-        ta = tm; fa = f; da = df; havePrev = true;
+        ta = tm; fa = f; da = df; ma = m; havePrev = true;
       }
-      if (mode != SAMPLE) { ts = tm; fs = f; ds = df; break; }
+      if (mode != SAMPLE) { ts = tm; fs = f; ds = df; ms = m; break; }
       if (++k > steps) break;
       tm = t0 + float(k) * h;
     }
     if (mode == SAMPLE) continue;
 
     float lo = ta, flo = fa, hi = ts, fhi = fs, tHit = 0.0, tSplit = 0.0, fSplit = 0.0, dSplit = 0.0;
+    uint mlo = ma, mhi = ms, mSplit = 0u;
     vec4 gHit = vec4(0.0);
     bool record = false, split = false, abandon = false;
     for (int b = 0; b < rt.maxBisections; ++b) {
@@ -117,15 +126,30 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
       vec4 g = zs_FGrad(o + tmid * d);
       ++evals;
       float f = g.w, df = dot(g.xyz, d);
+      uint m = zs_standIns;
       tHit = tmid; gHit = g;
       if (zs_isUndefined(f)) { abandon = true; break; }
       if (mode == BISECT_D && sign(f) != sign(flo)) {
         // F crossed zero at the extremum: two roots. Bisect the first on F; the
         // second is found by re-sampling from here (below).
-        mode = BISECT_F; split = true; tSplit = tmid; fSplit = f; dSplit = df;
+        mode = BISECT_F; split = true; tSplit = tmid; fSplit = f; dSplit = df; mSplit = m;
       }
-      if (mode == BISECT_F) {
-        if (sign(f) == sign(flo)) { lo = tmid; flo = f; } else { hi = tmid; fhi = f; }
+      if (mode == EDGE) {
+        if (m == mlo) { lo = tmid; flo = f; } else { hi = tmid; fhi = f; mhi = m; }
+        if (hi - lo <= rt.epsilon) {
+          // The edge lies in [lo, hi]: a sign change before it, else one after it, is a root
+          // to bisect on F; neither: none in this step (sampling goes on after it).
+          bool before = sign(flo) != sign(fa);
+          bool after = !before && sign(fs) != sign(fhi) && ms == mhi;
+          if (!before && !after) break;
+          mode = BISECT_F;
+          float elo = lo, eflo = flo, ehi = hi, efhi = fhi;
+          uint emlo = mlo, emhi = mhi;
+          lo = before ? ta : ehi; flo = before ? fa : efhi; mlo = before ? ma : emhi;
+          hi = before ? elo : ts; fhi = before ? eflo : fs; mhi = before ? emlo : ms;
+        }
+      } else if (mode == BISECT_F) {
+        if (sign(f) == sign(flo)) { lo = tmid; flo = f; mlo = m; } else { hi = tmid; fhi = f; mhi = m; }
         if (f == 0.0 || hi - lo <= rt.epsilon) break;
       } else {  // sign(F_lo) * dF/dt is negative while |F| falls
         if (sign(flo) * df < 0.0) lo = tmid; else hi = tmid;
@@ -138,17 +162,20 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
       // its width, where f is smooth) and at a pole it grows: a bracket 4 times narrower than
       // the sample step whose ends still hold half of what the samples held is no surface.
       record = !(hi - lo <= 0.25 * (ts - ta) && abs(flo) + abs(fhi) > 0.5 * (abs(fa) + abs(fs)));
+      // Ends that took different stand-ins: the bracket holds a surface's domain edge, where
+      // the product jumps (zs_standIns), and that is no surface either.
+      record = record && mlo == mhi;
       if (gHit.w != 0.0) tHit = clamp(lo + (hi - lo) * flo / (flo - fhi), lo, hi);
-    } else if (!abandon) {
+    } else if (mode == BISECT_D && !abandon) {
       // A tangent root where the distance estimate |F|/|grad F| at the extremum is
       // below the tolerance: a ray grazing the surface closer than that, or touching a
       // double root (where F and grad F both vanish), hits it.
       record = abs(gHit.w) <= rt.tangentTolerance * length(gHit.xyz);
     }
     if (split && !abandon) {  // re-sample [tSplit, ts] for the second root of the pair
-      ta = tSplit; fa = fSplit; da = dSplit; havePrev = true;
+      ta = tSplit; fa = fSplit; da = dSplit; ma = mSplit; havePrev = true;
     } else {
-      ta = ts; fa = fs; da = ds; havePrev = !zs_isUndefined(fs); ++k;
+      ta = ts; fa = fs; da = ds; ma = ms; havePrev = !zs_isUndefined(fs); ++k;
     }
     if (!record) continue;
     if (domainDepth(o + tHit * d) < -1e-5 * length(rt.domainMax - rt.domainMin))

@@ -37,7 +37,79 @@ std::vector<std::string> nameNodes(const Graph& g, const std::vector<NodeId>& or
   return names;
 }
 
+BodyWriter::BodyWriter(const Graph& g, const std::vector<std::string>& names)
+    : g_(g), names_(names) {
+  for (std::size_t i = 0; i < g.size() && !perNode_; ++i)
+    perNode_ = g[static_cast<NodeId>(i)].op == Op::IfDefined;
+  if (perNode_) flags_.assign(g.size(), "false");
+}
+
+namespace {
+
+std::string either(const std::string& a, const std::string& b) {
+  if (a == "true" || b == "true") return "true";
+  if (a == "false") return b;
+  if (b == "false") return a;
+  return a + " || " + b;
+}
+
+}  // namespace
+
+std::string BodyWriter::standIns(const std::vector<NodeId>& nodes) const {
+  std::string bits;
+  unsigned bit = 0;
+  for (NodeId id : nodes) {
+    if (g_[id].op != Op::IfDefined || bit >= 32) continue;
+    const std::string& a = flagOf(g_[id].a);
+    const std::string mask = std::to_string(1u << bit++) + "u";
+    if (a == "false") continue;
+    bits += (bits.empty() ? "" : " | ") + (a == "true" ? mask : "((" + a + ") ? " + mask + " : 0u)");
+  }
+  return "  zs_standIns = " + (bits.empty() ? std::string("0u") : bits) + ";\n";
+}
+
+void BodyWriter::nodeWithOwnFlag(NodeId id) {
+  const Node& n = g_[id];
+  std::string& own = flags_[static_cast<std::size_t>(id)];
+  if (n.op == Op::Const && std::isnan(n.value)) own = "true";
+  if (isLeaf(n.op)) return;
+  const std::string& fa = flagOf(n.a);
+  const std::string fb = n.b == kNoNode ? std::string("false") : flagOf(n.b);
+  const std::string mine = "u_" + name(id);
+  if (n.op == Op::IfDefined) {  // b where a is defined, else 0
+    if (fa == "false") {
+      own = fb;
+      declare(name(id), name(n.b));
+    } else if (fa == "true") {
+      own = "false";
+      declare(name(id), "0.0");
+    } else {
+      own = fb == "false" ? "false" : mine;
+      if (own == mine) out += "  bool " + mine + " = !(" + fa + ") && (" + fb + ");\n";
+      declare(name(id), "(" + fa + ") ? 0.0 : " + name(n.b));
+    }
+    return;
+  }
+  const bool canFail = opCanBeUndefined(n.op) || (n.op == Op::PowI && n.ival < 0);
+  const std::string in = either(fa, fb);
+  if (canFail || in.find(' ') != std::string::npos) {
+    out += "  bool " + mine + " = " + in + ";\n";
+    own = mine;
+  } else {
+    own = in;  // "false", "true" or one operand's flag: nothing to write
+  }
+  if (n.op == Op::PowI) {
+    powi(id, name(n.a), n.ival, own);
+    return;
+  }
+  declare(name(id), glslOpExpression(n.op, name(n.a), n.b == kNoNode ? "" : name(n.b), own));
+}
+
 void BodyWriter::node(NodeId id, const std::string& flag) {
+  if (perNode_) {
+    nodeWithOwnFlag(id);
+    return;
+  }
   const Node& n = g_[id];
   if (n.op == Op::Const && std::isnan(n.value)) {
     // A NaN constant (e.g. folded sqrt(-1)) makes F undefined wherever it is used.

@@ -34,6 +34,13 @@ std::string paramDeclaration(const Graph& g) {
   return s + "\n";
 }
 
+// With per-node flags (body_writer.hpp): true where any of `ids` is undefined.
+std::string anyOf(const BodyWriter& body, std::initializer_list<NodeId> ids) {
+  std::string s;
+  for (NodeId id : ids) s += (s.empty() ? "" : " || ") + body.flagOf(id);
+  return s;
+}
+
 }  // namespace
 
 GlslFormula emitFormulaGlsl(const Graph& g, NodeId f, const std::array<NodeId, 3>& grad) {
@@ -55,6 +62,7 @@ GlslFormula emitFormulaGlsl(const Graph& g, NodeId f, const std::array<NodeId, 3
   s += "\nfloat zs_F(vec3 p) {\n";
   s += "  bool zs_u = false;  // set where p is outside F's domain\n";
   s += fBody.out;
+  if (fBody.perNodeFlags()) s += "  zs_u = " + fBody.flagOf(f) + ";\n" + fBody.standIns(fNodes);
   s += "  return zs_finishF(" + nameOf(f) + ", zs_u);\n}\n";
 
   // In zs_FGrad a node that F itself needs reports to zs_u, a node only the gradient needs
@@ -65,6 +73,10 @@ GlslFormula emitFormulaGlsl(const Graph& g, NodeId f, const std::array<NodeId, 3
   s += "  bool zs_u = false;   // set where p is outside F's domain\n";
   s += "  bool zs_ug = false;  // set where p is outside the gradient's domain\n";
   s += gradBody.out;
+  if (gradBody.perNodeFlags()) {
+    s += "  zs_u = " + gradBody.flagOf(f) + ";\n  zs_ug = " +
+         anyOf(gradBody, {grad[0], grad[1], grad[2]}) + ";\n" + gradBody.standIns(fNodes);
+  }
   s += "  return zs_finishFGrad(vec3(" + nameOf(grad[0]) + ", " + nameOf(grad[1]) + ", " +
        nameOf(grad[2]) + "), " + nameOf(f) + ", zs_u, zs_ug);\n}\n";
   result.temporaries = gradBody.temporaries;
@@ -82,6 +94,8 @@ std::string gradientFunction(Graph& g, NodeId f, const std::string& name) {
   auto nameOf = [&](NodeId id) { return names[static_cast<std::size_t>(id)]; };
   BodyWriter body(g, names);
   for (NodeId id : all) body.node(id, "zs_u");
+  if (body.perNodeFlags())
+    body.out += "  zs_u = " + anyOf(body, {f, grad[0], grad[1], grad[2]}) + ";\n";
   return "vec4 " + name + "(vec3 p) {\n  bool zs_u = false;\n" + body.out +
          "  return zs_u ? vec4(0.0, 0.0, 0.0, uintBitsToFloat(0x7FC00000u))\n"
          "              : vec4(" + nameOf(grad[0]) + ", " + nameOf(grad[1]) + ", " +

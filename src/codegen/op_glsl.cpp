@@ -44,6 +44,7 @@ bool opCanBeUndefined(Op op) {
     case Op::Sin: case Op::Cos: case Op::Tan: case Op::Atan: case Op::Atan2:
     case Op::Sinh: case Op::Cosh: case Op::Tanh: case Op::Exp: case Op::Cbrt:
     case Op::Abs: case Op::Sign: case Op::Floor: case Op::Ceil: case Op::Min: case Op::Max:
+    case Op::IfDefined:  // it stops undefinedness (body_writer.cpp)
       return false;
   }
   return false;
@@ -80,6 +81,8 @@ std::string glslOpExpression(Op op, std::string_view a, std::string_view b,
     case Op::Exp: case Op::Abs: case Op::Sign: case Op::Floor: case Op::Ceil:
       return call(glsl, a);
     case Op::Min: case Op::Max: return call(glsl, a, b);
+    case Op::IfDefined:
+      throw std::logic_error("glslOpExpression: IfDefined is emitted by the body writer");
   }
   throw std::logic_error("glslOpExpression: opcode out of range");
 }

@@ -58,6 +58,8 @@ std::string glslAffineOpExpression(Op op, std::string_view a, std::string_view b
     case Op::Sinh: case Op::Cosh: case Op::Tanh: case Op::Cbrt: case Op::Sign: case Op::Floor:
     case Op::Ceil:
       return viaInterval(op, a, b, ival, flag);
+    case Op::IfDefined:
+      throw std::logic_error("glslAffineOpExpression: IfDefined is emitted with its flags");
   }
   throw std::logic_error("glslAffineOpExpression: opcode out of range");
 }
@@ -100,6 +102,8 @@ std::string glslIntervalOpExpression(Op op, std::string_view a, std::string_view
     case Op::Ceil: return rule("ceil", a);
     case Op::Min: return rule("min", a, b);
     case Op::Max: return rule("max", a, b);
+    case Op::IfDefined:
+      throw std::logic_error("glslIntervalOpExpression: IfDefined is emitted with its flags");
   }
   throw std::logic_error("glslIntervalOpExpression: opcode out of range");
 }

@@ -141,7 +141,7 @@ std::optional<int> polynomialDegree(const Graph& g, NodeId root) {
       case Op::Pow: case Op::Sin: case Op::Cos: case Op::Tan: case Op::Asin: case Op::Acos:
       case Op::Atan: case Op::Atan2: case Op::Sinh: case Op::Cosh: case Op::Tanh: case Op::Exp:
       case Op::Log: case Op::Sqrt: case Op::Cbrt: case Op::Abs: case Op::Sign: case Op::Floor:
-      case Op::Ceil: case Op::Min: case Op::Max:
+      case Op::Ceil: case Op::Min: case Op::Max: case Op::IfDefined:
         // Not polynomial operations; a subexpression free of x, y, z is still a coefficient.
         if (g.isSpatiallyConstant(id)) r = Poly{{Monomial{0, 0, 0}, 1.0 + 0.5 * id}};
         break;

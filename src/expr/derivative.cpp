@@ -69,6 +69,8 @@ NodeId derive(Builder& B, NodeId self, const Node& n, NodeId da, NodeId db) {
                                                 B.sub(da, db)));
       return n.op == Op::Min ? B.sub(mean, half) : B.add(mean, half);
     }
+    // 0 where a is undefined, a constant there: b's derivative where a is defined.
+    case Op::IfDefined: return g.binary(Op::IfDefined, a, db);
   }
   return B.c(0);
 }

@@ -37,6 +37,7 @@ bool opIsTotal(Op op) {
     case Op::Cos: case Op::Atan: case Op::Atan2: case Op::Sinh: case Op::Cosh: case Op::Tanh:
     case Op::Exp: case Op::Cbrt: case Op::Abs: case Op::Sign: case Op::Floor: case Op::Ceil:
     case Op::Min: case Op::Max:
+    case Op::IfDefined:  // defined where b is (0 where a is not): total when its operands are
       return true;
   }
   return false;

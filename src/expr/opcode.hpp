@@ -9,7 +9,8 @@ namespace zs {
 
 // X(Enum, spelling, arity, kind, glsl)
 //   spelling: how the parser and printer write it (function name, operator symbol)
-//   kind:     Leaf, Prefix (unary minus), Infix (binary operator), Call (function syntax)
+//   kind:     Leaf, Prefix (unary minus), Infix (binary operator), Call (function syntax),
+//             Internal (built by zeroset, never parsed; printed with call syntax)
 //   glsl:     the GLSL spelling the code generator starts from ("" = emitted specially)
 #define ZS_OPCODES(X)                              \
   X(Const, "", 0, Leaf, "")                        \
@@ -43,9 +44,12 @@ namespace zs {
   X(Floor, "floor", 1, Call, "floor")              \
   X(Ceil, "ceil", 1, Call, "ceil")                 \
   X(Min, "min", 2, Call, "min")                    \
-  X(Max, "max", 2, Call, "max")
+  X(Max, "max", 2, Call, "max")                    \
+  /* b where a is defined, else 0: the one operation that stops undefinedness; several */ \
+  /* surfaces' product takes each as "F where defined, else 1" (scene/surfaces.cpp) */     \
+  X(IfDefined, "ifdefined", 2, Internal, "")
 
-enum class OpKind : std::uint8_t { Leaf, Prefix, Infix, Call };
+enum class OpKind : std::uint8_t { Leaf, Prefix, Infix, Call, Internal };
 
 enum class Op : std::uint8_t {
 #define ZS_ENUM(name, spelling, arity, kind, glsl) name,

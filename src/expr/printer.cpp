@@ -81,6 +81,7 @@ std::optional<std::string> print(const Graph& g, NodeId root, std::size_t maxCha
         }
         break;
       case OpKind::Call:
+      case OpKind::Internal:
         if (n.op == Op::Pow && !hugeIntegerExponent(g, n.b)) {
           p.text = slot(n.a, kAtom) + "^" + slot(n.b, kUnary);
           p.prec = kPower;

@@ -38,6 +38,7 @@ double applyScalar(Op op, double a, double b, std::int32_t ival, double value) {
     case Op::Ceil: return std::ceil(a);
     case Op::Min: return std::isnan(a) || std::isnan(b) ? NAN : std::fmin(a, b);
     case Op::Max: return std::isnan(a) || std::isnan(b) ? NAN : std::fmax(a, b);
+    case Op::IfDefined: return std::isnan(a) ? 0.0 : b;
   }
   return NAN;
 }

@@ -219,8 +219,11 @@ std::variant<GpuTape, std::string> encodeGpuTape(const Graph& g, NodeId f,
   const char* tooMany = "more values are live at once than the tape interpreter has registers";
 
   std::vector<std::uint32_t> fOut, gradOut, affineOut;
-  for (NodeId id : reachable(g, {f, grad[0], grad[1], grad[2]}))
+  for (NodeId id : reachable(g, {f, grad[0], grad[1], grad[2]})) {
+    if (opInfo(g[id].op).kind == OpKind::Internal)
+      return "the tape interpreter runs the formula language's operations only";
     tape.polynomialOnly = tape.polynomialOnly && isPolynomialOp(g[id].op);
+  }
   const std::uint32_t fBegin = here();
   if (!emitPointProgram(g, {f}, f, t, fOut, tape.pointRegisters)) return tooMany;
   const std::uint32_t gradBegin = here();

@@ -54,7 +54,8 @@ std::string pointDispatch(bool polynomialOnly) {
       "// One operation at a point; flag: set where it is undefined (the formula block's zs_u).\n"
       "float zs_tapeOp(int code, vec3 p, float a, float b, uint w, inout bool flag) {\n",
       "0.0", [&](Op op) -> std::string {
-        if (polynomialOnly && !isPolynomialOp(op)) return {};
+        if ((polynomialOnly && !isPolynomialOp(op)) || opInfo(op).kind == OpKind::Internal)
+          return {};  // internal operations never reach a tape (gpu_tape.cpp)
         switch (op) {
           case Op::Const: return "uintBitsToFloat(w)";
           case Op::VarX: return "p.x";
@@ -74,7 +75,9 @@ std::string affineDispatch(bool polynomialOnly) {
       "exponent.\n"
       "vec4 zs_tapeAffineRule(int code, vec4 a, vec4 b, int k, inout bool flag) {\n",
       "zsa_whole()", [&](Op op) -> std::string {
-        if (isLeaf(op) || (polynomialOnly && !isPolynomialOp(op))) return {};
+        if (isLeaf(op) || (polynomialOnly && !isPolynomialOp(op)) ||
+            opInfo(op).kind == OpKind::Internal)
+          return {};
         // The exponent is data here: both of the emitter's choices, chosen at run time.
         if (op == Op::PowI)
           return "k == 2 ? " + glslAffineOpExpression(op, "a", "", 2, "flag") + " : zsa_powi(a, k)";

@@ -6,6 +6,9 @@ namespace zs {
 
 Interval applyInterval(Op op, Interval a, Interval b, std::int32_t ival, double value) {
   const int arity = opInfo(op).arity;
+  // b where a is defined, else 0. An interval does not say whether its operation was defined
+  // on the whole box or on a part of it, so 0 joins b wherever a is defined somewhere.
+  if (op == Op::IfDefined) return a.isEmpty() ? Interval::point(0.0) : hull(b, Interval::point(0.0));
   // Undefined operands make the result undefined: the formula is defined nowhere there.
   if ((arity >= 1 && a.isEmpty()) || (arity >= 2 && b.isEmpty())) return Interval::empty();
   switch (op) {
@@ -41,6 +44,7 @@ Interval applyInterval(Op op, Interval a, Interval b, std::int32_t ival, double 
     case Op::Ceil: return ia::ceil(a);
     case Op::Min: return ia::min(a, b);
     case Op::Max: return ia::max(a, b);
+    case Op::IfDefined: break;  // above
   }
   return Interval::whole();  // unreachable for valid ops; whole is the safe answer
 }

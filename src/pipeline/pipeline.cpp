@@ -46,21 +46,6 @@ std::string constantFormulaNote(const Formula& formula, std::span<const double> 
   return text;
 }
 
-// Several surfaces are traced as the product of their functions, which is undefined wherever
-// one of them is: there no surface is drawn, not even another one's. `roots`: each surface's
-// function in the product's graph.
-std::string partlyUndefinedNote(const Scene& scene, const Graph& graph,
-                                const std::vector<NodeId>& roots) {
-  if (roots.size() == 1) return {};
-  std::string note;
-  for (std::size_t i = 0; i < roots.size(); ++i) {
-    if (graph.isTotal(roots[i])) continue;
-    note += "note: surface " + std::to_string(i + 1) + " (" + surfaceAt(scene, i).formula +
-            ") may be undefined in places (a square root, logarithm, division...); the "
-            "surfaces are traced as one product, so where it is undefined no surface is drawn\n";
-  }
-  return note;
-}
 
 }  // namespace
 
@@ -158,8 +143,7 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
   s.formula = std::get<Formula>(std::move(parsed));
   s.gradient = gradient(s.formula.graph, s.formula.root);
   s.params = paramValues(scene, s.formula.graph);
-  s.formulaNote = constantFormulaNote(s.formula, s.params) +
-                  partlyUndefinedNote(scene, s.formula.graph, surfaceRoots);
+  s.formulaNote = constantFormulaNote(s.formula, s.params);
   s.times.parseMs = msSince(t);
 
   t = std::chrono::steady_clock::now();

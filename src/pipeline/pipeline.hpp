@@ -39,8 +39,7 @@ struct PreparedSurface {
   std::vector<std::array<double, 3>> singularPoints;
   std::string singularNote;
   // What to tell the user about the function traced ("" if nothing): F does not depend on
-  // x, y, z (nothing to draw, or F = 0 everywhere), or one of several surfaces may be
-  // undefined in places, where their product is undefined too.
+  // x, y, z (nothing to draw, or F = 0 everywhere).
   std::string formulaNote;
   std::string vertexShader, fragmentShader;
   StageTimes times;

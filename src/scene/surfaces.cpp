@@ -57,6 +57,16 @@ ParseResult parseSceneFormula(const Scene& scene, std::size_t* failedSurface,
   auto* product = std::get_if<Formula>(&parsed);
   std::vector<NodeId> roots;
   if (product) roots.push_back(product->root);
+  // The product's zero set is the union of the surfaces' only where every factor is defined:
+  // a factor that may be undefined somewhere stands in it as "F where F is defined, else 1",
+  // IfDefined(F, F - 1) + 1, so that another surface is still drawn there.
+  auto standIn = [&](NodeId root) {
+    Graph& g = product->graph;
+    if (surfaceCount(scene) == 1 || g.isTotal(root)) return root;
+    const NodeId one = g.constant(1.0);
+    return g.binary(Op::Add, g.binary(Op::IfDefined, root, g.binary(Op::Sub, root, one)), one);
+  };
+  if (product) product->root = standIn(product->root);
   for (std::size_t i = 1; product && i < surfaceCount(scene); ++i) {
     ParseResult factor = parseSurfaceFormula(scene, i);
     if (std::holds_alternative<ParseError>(factor)) {
@@ -65,7 +75,7 @@ ParseResult parseSceneFormula(const Scene& scene, std::size_t* failedSurface,
     }
     const Formula& f = std::get<Formula>(factor);
     roots.push_back(copyInto(product->graph, f.graph, f.root));
-    product->root = product->graph.binary(Op::Mul, product->root, roots.back());
+    product->root = product->graph.binary(Op::Mul, product->root, standIn(roots.back()));
   }
   if (product && surfaceRoots) *surfaceRoots = std::move(roots);
   return parsed;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "expr/tape.hpp"
 #include "interval/interval.hpp"
 
 namespace zs {
@@ -57,12 +58,25 @@ TEST(IntervalRules, UndefinedPropagatesThroughEveryOperation) {
   const Interval e = Interval::empty();
   for (int i = 0; i < kOpCount; ++i) {
     const Op op = Op(i);
-    if (opInfo(op).arity == 0) continue;
+    if (opInfo(op).arity == 0 || op == Op::IfDefined) continue;  // the one that stops it
     EXPECT_TRUE(applyInterval(op, e, {1, 2}, 2, 0).isEmpty()) << opInfo(op).enumName;
     if (opInfo(op).arity == 2) {
       EXPECT_TRUE(applyInterval(op, {1, 2}, e, 2, 0).isEmpty()) << opInfo(op).enumName;
     }
   }
+}
+
+// b where a is defined, else 0: an interval does not say whether a was defined on all of the
+// box, so 0 joins b wherever a is defined somewhere.
+TEST(IntervalRules, IfDefinedIsBWhereAIsDefinedAndZeroElsewhere) {
+  const Interval e = Interval::empty();
+  EXPECT_EQ(applyInterval(Op::IfDefined, e, {3, 4}, 0, 0), Interval::point(0));
+  EXPECT_EQ(applyInterval(Op::IfDefined, {1, 2}, {3, 4}, 0, 0), (Interval{0, 4}));
+  EXPECT_EQ(applyInterval(Op::IfDefined, {1, 2}, {-4, -3}, 0, 0), (Interval{-4, 0}));
+  EXPECT_EQ(applyInterval(Op::IfDefined, {1, 2}, e, 0, 0), Interval::point(0));
+  EXPECT_EQ(applyScalar(Op::IfDefined, NAN, 5, 0, 0), 0.0);
+  EXPECT_EQ(applyScalar(Op::IfDefined, 1, 5, 0, 0), 5.0);
+  EXPECT_TRUE(std::isnan(applyScalar(Op::IfDefined, 1, NAN, 0, 0)));
 }
 
 TEST(IntervalRules, SinAndCosIncludeTheExtremaInside) {

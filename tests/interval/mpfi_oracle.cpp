@@ -135,6 +135,7 @@ bool apply(mpfi_ptr r, Op op, mpfi_ptr a, mpfi_ptr b, int ival, double value, bo
     case Op::Cbrt: mpfi_cbrt(r, a); return true;
     case Op::Abs: mpfi_abs(r, a); return true;
     case Op::Sign: case Op::Floor: case Op::Ceil: case Op::Min: case Op::Max: return false;
+    case Op::IfDefined: return false;  // definedness, not arithmetic
   }
   return false;
 }

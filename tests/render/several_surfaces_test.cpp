@@ -153,6 +153,51 @@ TEST_P(SeveralSurfaces, TheCircleWhereTheyMeetIsMarkedWhereItProjects) {
   EXPECT_EQ(markedOnCircle, onCircle) << "a pixel on the circle is not marked";
 }
 
+// A surface undefined in places (sqrt(0.3 - x) - 0.2: the plane x = 0.26, undefined for
+// x > 0.3) hides no other surface there: the product takes 1 for it where it is undefined
+// (scene/surfaces.cpp). Every method draws the unit sphere's part x > 0.3 at its depth, and
+// no hit lies off both surfaces: the product's jump at x = 0.3 is no surface.
+TEST_P(SeveralSurfaces, ASurfaceUndefinedInPlacesHidesNoOtherThere) {
+  std::string error;
+  ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
+  test::SurfaceSpec spec{"x^2+y^2+z^2-1", {}, 3};
+  spec.method = GetParam();
+  SurfaceEntry plane;
+  plane.formula = "sqrt(0.3 - x) - 0.2";
+  plane.materials = surfaceMaterials(1);
+  spec.moreSurfaces = {plane};
+  auto t = test::makeTracer(spec, error);
+  ASSERT_NE(t, nullptr) << error;
+  const RenderSettings s = settings();
+  const Frame f = t->render(s, Domain{}, kSize, kSize);
+  ASSERT_EQ(f.error, "");
+  int sphereRight = 0;
+  for (int j = 0; j < kSize; ++j) {
+    for (int i = 0; i < kSize; ++i) {
+      const std::optional<Vec3> hit = test::hitPoint(f, s.camera, i, j);
+      if (hit) {
+        const Vec3& p = *hit;
+        const double offSphere = std::abs(std::hypot(p[0], p[1], p[2]) - 1);
+        EXPECT_LT(std::min(offSphere, std::abs(p[0] - 0.26)), 0.02)
+            << "a hit on neither surface at " << i << "," << j << ": " << p[0] << ", " << p[1]
+            << ", " << p[2];
+      }
+      // From x = 0.6 a ray reaches the sphere's points with x > 0.3 before x = 0.26.
+      const Ray ray = primaryRay(s.camera, kSize, kSize, i, j);
+      const double ts = sphereHit(ray, 0, 1);
+      const Ray o = primaryRay(s.camera, kSize, kSize, i + 0.5, j + 0.5);
+      const Ray m = primaryRay(s.camera, kSize, kSize, i - 0.5, j - 0.5);
+      if (std::isnan(ts) || std::isnan(sphereHit(o, 0, 1)) || std::isnan(sphereHit(m, 0, 1)))
+        continue;
+      if (ray.origin[0] + ts * ray.direction[0] < 0.32) continue;
+      ASSERT_TRUE(hit) << "the sphere is missing at " << i << "," << j;
+      EXPECT_LT(std::abs(std::hypot((*hit)[0], (*hit)[1], (*hit)[2]) - 1), 2e-3) << i << "," << j;
+      ++sphereRight;
+    }
+  }
+  EXPECT_GT(sphereRight, 200);
+}
+
 INSTANTIATE_TEST_SUITE_P(Methods, SeveralSurfaces, ::testing::ValuesIn(test::kEveryMethod),
                          test::methodName);
 
