@@ -25,6 +25,15 @@ const int RT_MAX_EVALS = 4096; // safety bound on F evaluations per ray
 // (zs_standIns: where the product jumps, a sign change between the two samples says
 // nothing, so the edge is located first and each side's signs are compared on their own).
 const int SAMPLE = 0, BISECT_F = 1, BISECT_D = 2, EDGE = 3;
+// Only a formula block with stand-ins defines ZS_STAND_INS: the others compile no edge code
+// (llvmpipe runs every branch of the bisection loop's body, taken or not).
+#ifdef ZS_STAND_INS
+#define RT_STAND_INS zs_standIns
+#define RT_STAND_IN_EDGE(m, ma) ((m) != (ma))
+#else
+#define RT_STAND_INS 0u
+#define RT_STAND_IN_EDGE(m, ma) false
+#endif
 
 int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS],
             out vec4 hitG[RT_MAX_HITS]) {
@@ -99,10 +108,10 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
     for (; evals < RT_MAX_EVALS; ++evals) {
       vec4 g = zs_FGrad(o + tm * d);
       float f = g.w, df = dot(g.xyz, d);
-      uint m = zs_standIns;
+      uint m = RT_STAND_INS;
       if (zs_isUndefined(f)) {
         havePrev = false;  // F's domain boundary is not the surface
-      } else if (havePrev && m != ma) {
+      } else if (havePrev && RT_STAND_IN_EDGE(m, ma)) {
         mode = EDGE;
       } else if (havePrev && sign(f) != sign(fa)) {
         mode = BISECT_F;
@@ -126,7 +135,7 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
       vec4 g = zs_FGrad(o + tmid * d);
       ++evals;
       float f = g.w, df = dot(g.xyz, d);
-      uint m = zs_standIns;
+      uint m = RT_STAND_INS;
       tHit = tmid; gHit = g;
       if (zs_isUndefined(f)) { abandon = true; break; }
       if (mode == BISECT_D && sign(f) != sign(flo)) {
@@ -134,6 +143,7 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
         // second is found by re-sampling from here (below).
         mode = BISECT_F; split = true; tSplit = tmid; fSplit = f; dSplit = df; mSplit = m;
       }
+#ifdef ZS_STAND_INS
       if (mode == EDGE) {
         if (m == mlo) { lo = tmid; flo = f; } else { hi = tmid; fhi = f; mhi = m; }
         if (hi - lo <= rt.epsilon) {
@@ -148,7 +158,9 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
           lo = before ? ta : ehi; flo = before ? fa : efhi; mlo = before ? ma : emhi;
           hi = before ? elo : ts; fhi = before ? eflo : fs; mhi = before ? emlo : ms;
         }
-      } else if (mode == BISECT_F) {
+      } else
+#endif
+      if (mode == BISECT_F) {
         if (sign(f) == sign(flo)) { lo = tmid; flo = f; mlo = m; } else { hi = tmid; fhi = f; mhi = m; }
         if (f == 0.0 || hi - lo <= rt.epsilon) break;
       } else {  // sign(F_lo) * dF/dt is negative while |F| falls
@@ -164,7 +176,7 @@ int rtMarch(vec3 o, vec3 d, float tStart, int wanted, out float hitT[RT_MAX_HITS
       record = !(hi - lo <= 0.25 * (ts - ta) && abs(flo) + abs(fhi) > 0.5 * (abs(fa) + abs(fs)));
       // Ends that took different stand-ins: the bracket holds a surface's domain edge, where
       // the product jumps (zs_standIns), and that is no surface either.
-      record = record && mlo == mhi;
+      record = record && !RT_STAND_IN_EDGE(mlo, mhi);
       if (gHit.w != 0.0) tHit = clamp(lo + (hi - lo) * flo / (flo - fhi), lo, hi);
     } else if (mode == BISECT_D && !abandon) {
       // A tangent root where the distance estimate |F|/|grad F| at the extremum is

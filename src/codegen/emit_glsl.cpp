@@ -59,6 +59,8 @@ GlslFormula emitFormulaGlsl(const Graph& g, NodeId f, const std::array<NodeId, 3
 
   BodyWriter fBody(g, names);
   for (NodeId id : fNodes) fBody.node(id, "zs_u");
+  // The sampling method's edge code (raytrace_sampling.frag.glsl) where F has stand-ins.
+  if (fBody.perNodeFlags()) s += "#define ZS_STAND_INS\n";
   s += "\nfloat zs_F(vec3 p) {\n";
   s += "  bool zs_u = false;  // set where p is outside F's domain\n";
   s += fBody.out;
