@@ -44,16 +44,12 @@ BodyWriter::BodyWriter(const Graph& g, const std::vector<std::string>& names)
   if (perNode_) flags_.assign(g.size(), "false");
 }
 
-namespace {
-
-std::string either(const std::string& a, const std::string& b) {
+std::string glslOr(const std::string& a, const std::string& b) {
   if (a == "true" || b == "true") return "true";
   if (a == "false") return b;
   if (b == "false") return a;
   return a + " || " + b;
 }
-
-}  // namespace
 
 std::string BodyWriter::standIns(const std::vector<NodeId>& nodes) const {
   std::string bits;
@@ -91,7 +87,7 @@ void BodyWriter::nodeWithOwnFlag(NodeId id) {
     return;
   }
   const bool canFail = opCanBeUndefined(n.op) || (n.op == Op::PowI && n.ival < 0);
-  const std::string in = either(fa, fb);
+  const std::string in = glslOr(fa, fb);
   if (canFail || in.find(' ') != std::string::npos) {
     out += "  bool " + mine + " = " + in + ";\n";
     own = mine;

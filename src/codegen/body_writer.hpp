@@ -16,6 +16,9 @@ namespace zs {
 // temporary name otherwise. Computed once so that a node has the same name in every body.
 std::vector<std::string> nameNodes(const Graph& g, const std::vector<NodeId>& order);
 
+// a || b for GLSL bool expressions, where "false" and "true" are known values.
+std::string glslOr(const std::string& a, const std::string& b);
+
 // Writes the statements of one function body, node by node in topological order.
 //
 // A graph without IfDefined needs one flag per body: every node that can be undefined

@@ -5,6 +5,7 @@
 
 #include "codegen/glsl_literal.hpp"
 #include "codegen/affine_lowering.hpp"
+#include "codegen/body_writer.hpp"
 #include "codegen/op_interval_glsl.hpp"
 
 namespace zs {
@@ -28,12 +29,6 @@ struct Bodies {
   std::string fUndefined, fPartial, dfUndefined, dfPartial;
 };
 
-std::string either(const std::string& a, const std::string& b) {
-  if (a == "true" || b == "true") return "true";
-  if (a == "false") return b;
-  if (b == "false") return a;
-  return a + " || " + b;
-}
 
 Bodies writeSteps(const AffineProgram& program) {
   static constexpr const char* kAxis[] = {"AX", "AY", "AZ"};
@@ -75,8 +70,8 @@ Bodies writeSteps(const AffineProgram& program) {
       std::string u = undefined[std::size_t(std::max(s.a, 0))];
       std::string p = partial[std::size_t(std::max(s.a, 0))];
       if (s.b >= 0 && s.kind != AffineStep::Kind::SinCos) {
-        u = either(u, undefined[std::size_t(s.b)]);
-        p = either(p, partial[std::size_t(s.b)]);
+        u = glslOr(u, undefined[std::size_t(s.b)]);
+        p = glslOr(p, partial[std::size_t(s.b)]);
       }
       if (s.a < 0) u = p = "false";
       if (s.kind == AffineStep::Kind::Constant && s.nan) u = "true";
@@ -85,7 +80,7 @@ Bodies writeSteps(const AffineProgram& program) {
         flag = "u_a" + std::to_string(mine);
         body += "  bool " + flag + " = " + u + ";\n  zsi_partial = false;\n";
         u = flag;
-        p = either("zsi_partial", p);
+        p = glslOr("zsi_partial", p);
       }
       undefined[i] = u;
       partial[i] = p;
@@ -120,7 +115,7 @@ Bodies writeSteps(const AffineProgram& program) {
           body += "  bool " + partial[i] + " = zsi_partial" +
                   (partial[std::size_t(s.a)] == "false" && (s.b < 0 || partial[std::size_t(s.b)] == "false")
                        ? std::string()
-                       : " || " + either(partial[std::size_t(s.a)],
+                       : " || " + glslOr(partial[std::size_t(s.a)],
                                          s.b < 0 ? std::string("false") : partial[std::size_t(s.b)])) +
                   ";\n";
         }
@@ -185,7 +180,7 @@ IntervalGlsl emitIntervalGlsl(const Graph& graph, NodeId f) {
     s += ray.df;
     s += "  zs_ug = " + ray.dfUndefined + ";\n";
     s += "  zsa_finish(" + ray.fResult + ", " + ray.dfResult + ", zs_u, zs_ug || " +
-         either(ray.fPartial, ray.dfPartial) + ", F, D);\n}\n";
+         glslOr(ray.fPartial, ray.dfPartial) + ", F, D);\n}\n";
     return {s};
   }
   s += "  partial = zsi_partial;\n";

@@ -240,4 +240,10 @@ std::vector<NodeId> reachable(const Graph& g, const std::vector<NodeId>& roots) 
   return out;
 }
 
+NodeId definedOrOne(Graph& g, NodeId f) {
+  if (g.isTotal(f)) return f;
+  const NodeId one = g.constant(1.0);
+  return g.binary(Op::Add, g.binary(Op::IfDefined, f, g.binary(Op::Sub, f, one)), one);
+}
+
 }  // namespace zs

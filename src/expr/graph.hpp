@@ -80,6 +80,10 @@ class Graph {
 // subexpressions merge and parameters match by name); returns its id in `to`.
 NodeId copyInto(Graph& to, const Graph& from, NodeId root);
 
+// f where f is defined, else 1: IfDefined(f, f - 1) + 1, or f itself where it is total. The
+// product of several surfaces takes each factor so (scene/surfaces.cpp).
+NodeId definedOrOne(Graph& g, NodeId f);
+
 // Nodes reachable from `roots`, in increasing id order (a topological order).
 std::vector<NodeId> reachable(const Graph& g, const std::vector<NodeId>& roots);
 

@@ -61,10 +61,7 @@ ParseResult parseSceneFormula(const Scene& scene, std::size_t* failedSurface,
   // a factor that may be undefined somewhere stands in it as "F where F is defined, else 1",
   // IfDefined(F, F - 1) + 1, so that another surface is still drawn there.
   auto standIn = [&](NodeId root) {
-    Graph& g = product->graph;
-    if (surfaceCount(scene) == 1 || g.isTotal(root)) return root;
-    const NodeId one = g.constant(1.0);
-    return g.binary(Op::Add, g.binary(Op::IfDefined, root, g.binary(Op::Sub, root, one)), one);
+    return surfaceCount(scene) == 1 ? root : definedOrOne(product->graph, root);
   };
   if (product) product->root = standIn(product->root);
   for (std::size_t i = 1; product && i < surfaceCount(scene); ++i) {

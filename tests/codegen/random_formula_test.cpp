@@ -115,7 +115,7 @@ INSTANTIATE_TEST_SUITE_P(Shards, RandomFormulaShard, ::testing::Range(0, kShards
 // every method's shader passes glslang, in desktop GLSL and GLSL ES.
 TEST(RandomFormula, SeveralSurfacesPassGlslangForEveryMethod) {
   std::mt19937_64 rng(20261127);
-  int polynomials = 0;
+  int polynomials = 0, standIns = 0;
   for (int scene = 0; scene < 24; ++scene) {
     const int count = 2 + scene % 3;
     Formula product;
@@ -129,13 +129,17 @@ TEST(RandomFormula, SeveralSurfacesPassGlslangForEveryMethod) {
       surfaces.push_back(std::move(*f));
     }
     SCOPED_TRACE("surfaces: " + texts);
-    product.root = copyInto(product.graph, surfaces[0].graph, surfaces[0].root);
+    // As scene/surfaces.cpp forms it: a factor undefined in places stands in as 1 there.
+    product.root = definedOrOne(product.graph,
+                                copyInto(product.graph, surfaces[0].graph, surfaces[0].root));
     for (int i = 1; i < count; ++i) {
       product.root = product.graph.binary(
-          Op::Mul, product.root, copyInto(product.graph, surfaces[i].graph, surfaces[i].root));
+          Op::Mul, product.root,
+          definedOrOne(product.graph, copyInto(product.graph, surfaces[i].graph, surfaces[i].root)));
     }
     const std::array<NodeId, 3> grad = gradient(product.graph, product.root);
     GlslFormula glsl = emitFormulaGlsl(product.graph, product.root, grad);
+    standIns += glsl.source.find("#define ZS_STAND_INS") != std::string::npos;
     std::vector<NodeId> roots;
     std::vector<SurfaceLook> looks;
     for (const Formula& f : surfaces) {
@@ -164,6 +168,7 @@ TEST(RandomFormula, SeveralSurfacesPassGlslangForEveryMethod) {
     }
   }
   EXPECT_GT(polynomials, 0) << "no product was a polynomial: Bernstein untested";
+  EXPECT_GT(standIns, 0) << "no factor was undefined in places: the stand-ins untested";
 }
 
 // One very large formula: the sum of many random terms (shared subexpressions are merged by
