@@ -42,13 +42,15 @@ double circleDistance(const Vec3& p) {
 
 class SeveralSurfaces : public ::testing::TestWithParam<TracingMethod> {
  protected:
-  std::unique_ptr<RayTracer> tracer(bool highlight) {
+  // The unit sphere and the surface `second`, traced by the method under test.
+  std::unique_ptr<RayTracer> tracer(bool highlight,
+                                    const std::string& second = "(x-0.7)^2+y^2+z^2-0.36") {
     std::string error;
     EXPECT_NE(test::context(Backend::Egl, error), nullptr) << error;
     test::SurfaceSpec spec{"x^2+y^2+z^2-1", {}, 3};
     spec.method = GetParam();
     SurfaceEntry b;
-    b.formula = "(x-0.7)^2+y^2+z^2-0.36";
+    b.formula = second;
     b.materials = surfaceMaterials(1);
     b.materials.front.specular = 0;  // no white highlight where the colors are compared
     spec.moreSurfaces = {b};
@@ -68,6 +70,13 @@ class SeveralSurfaces : public ::testing::TestWithParam<TracingMethod> {
     s.background = {0, 0, 0};
     s.materials.front.specular = 0;
     return s;
+  }
+  // Whether pixel (i, j)'s corners lie on both sides of the sphere's outline: a ray there
+  // grazes it within a small fraction of a pixel.
+  static bool grazes(const Camera& camera, int i, int j, double cx, double r) {
+    const Ray o = primaryRay(camera, kSize, kSize, i + 0.5, j + 0.5);
+    const Ray m = primaryRay(camera, kSize, kSize, i - 0.5, j - 0.5);
+    return std::isnan(sphereHit(o, cx, r)) != std::isnan(sphereHit(m, cx, r));
   }
   // Both spheres in settings(), the intersection curves drawn or not.
   void render(bool highlight, Frame& frame) {
@@ -89,12 +98,7 @@ TEST_P(SeveralSurfaces, EveryPixelShowsTheNearerSphereInItsOwnMaterial) {
       const double ta = sphereHit(ray, 0, 1), tb = sphereHit(ray, kCentreB, kRadiusB);
       const double t0 = std::isnan(ta) ? tb : std::isnan(tb) ? ta : std::min(ta, tb);
       // Pixels whose ray grazes a sphere within a small fraction of a pixel are left out.
-      auto grazes = [&](double cx, double r) {
-        const Ray o = primaryRay(s.camera, kSize, kSize, i + 0.5, j + 0.5);
-        const Ray m = primaryRay(s.camera, kSize, kSize, i - 0.5, j - 0.5);
-        return std::isnan(sphereHit(o, cx, r)) != std::isnan(sphereHit(m, cx, r));
-      };
-      if (grazes(0, 1) || grazes(kCentreB, kRadiusB)) continue;
+      if (grazes(s.camera, i, j, 0, 1) || grazes(s.camera, i, j, kCentreB, kRadiusB)) continue;
       const std::optional<Vec3> hit = test::hitPoint(f, s.camera, i, j);
       if (std::isnan(t0)) {
         EXPECT_FALSE(hit) << "a hit where neither sphere is, at " << i << "," << j;
@@ -158,16 +162,8 @@ TEST_P(SeveralSurfaces, TheCircleWhereTheyMeetIsMarkedWhereItProjects) {
 // (scene/surfaces.cpp). Every method draws the unit sphere's part x > 0.3 at its depth, and
 // no hit lies off both surfaces: the product's jump at x = 0.3 is no surface.
 TEST_P(SeveralSurfaces, ASurfaceUndefinedInPlacesHidesNoOtherThere) {
-  std::string error;
-  ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
-  test::SurfaceSpec spec{"x^2+y^2+z^2-1", {}, 3};
-  spec.method = GetParam();
-  SurfaceEntry plane;
-  plane.formula = "sqrt(0.3 - x) - 0.2";
-  plane.materials = surfaceMaterials(1);
-  spec.moreSurfaces = {plane};
-  auto t = test::makeTracer(spec, error);
-  ASSERT_NE(t, nullptr) << error;
+  std::unique_ptr<RayTracer> t = tracer(false, "sqrt(0.3 - x) - 0.2");
+  ASSERT_NE(t, nullptr);
   const RenderSettings s = settings();
   const Frame f = t->render(s, Domain{}, kSize, kSize);
   ASSERT_EQ(f.error, "");
@@ -185,10 +181,7 @@ TEST_P(SeveralSurfaces, ASurfaceUndefinedInPlacesHidesNoOtherThere) {
       // From x = 0.6 a ray reaches the sphere's points with x > 0.3 before x = 0.26.
       const Ray ray = primaryRay(s.camera, kSize, kSize, i, j);
       const double ts = sphereHit(ray, 0, 1);
-      const Ray o = primaryRay(s.camera, kSize, kSize, i + 0.5, j + 0.5);
-      const Ray m = primaryRay(s.camera, kSize, kSize, i - 0.5, j - 0.5);
-      if (std::isnan(ts) || std::isnan(sphereHit(o, 0, 1)) || std::isnan(sphereHit(m, 0, 1)))
-        continue;
+      if (std::isnan(ts) || grazes(s.camera, i, j, 0, 1)) continue;
       if (ray.origin[0] + ts * ray.direction[0] < 0.32) continue;
       ASSERT_TRUE(hit) << "the sphere is missing at " << i << "," << j;
       EXPECT_LT(std::abs(std::hypot((*hit)[0], (*hit)[1], (*hit)[2]) - 1), 2e-3) << i << "," << j;
