@@ -21,6 +21,9 @@ namespace zs {
 namespace {
 
 constexpr int kGrid = 256;
+// Each bracket is narrowed to a billionth of the grid's spacing (2^-30), far below any leaf's
+// size, so a bracket meets a kept leaf only where its sign change does.
+constexpr int kBisections = 30;
 
 struct Case {
   std::string name;
@@ -73,26 +76,28 @@ std::vector<Box> signChangeBrackets(const Formula& f, const Box& d) {
   PointEvaluator pe(tape);
   auto at = [&](const std::array<double, 3>& p) { return pe.eval1(p[0], p[1], p[2]); };
 
+  // Every pair of neighbours along each axis, in the grid's own order (the neighbour along
+  // `axis` lies `stride` entries further on), so each pass reads the grid front to back.
   std::vector<Box> brackets;
   for (int axis = 0; axis < 3; ++axis) {
-    for (int u = 0; u < kGrid; ++u)
-      for (int v = 0; v < kGrid; ++v)
-        for (int w = 0; w + 1 < kGrid; ++w) {
-          // grid indices of the two ends, the running index along `axis`
-          int e0[3] = {u, v, v}, e1[3];
-          e0[axis] = w;
-          e0[(axis + 1) % 3] = u;
-          e0[(axis + 2) % 3] = v;
-          std::copy(e0, e0 + 3, e1);
-          e1[axis] = w + 1;
-          const int s0 = s[idx(e0[0], e0[1], e0[2])], s1 = s[idx(e1[0], e1[1], e1[2])];
+    const std::size_t stride = axis == 0 ? std::size_t(kGrid) * kGrid : axis == 1 ? kGrid : 1;
+    for (int i = 0; i < kGrid; ++i)
+      for (int j = 0; j < kGrid; ++j)
+        for (int k = 0; k < kGrid; ++k) {
+          const int e0[3] = {i, j, k};
+          const int w = e0[axis];
+          if (w + 1 >= kGrid) continue;
+          const std::size_t n = idx(i, j, k);
+          const int s0 = s[n], s1 = s[n + stride];
           if (s0 == 2 || s1 == 2) continue;
-          std::array<double, 3> p0{coord(0, e0[0]), coord(1, e0[1]), coord(2, e0[2])}, p1 = p0;
-          p1[std::size_t(axis)] = coord(std::size_t(axis), w + 1);
-          if (s0 == 0) brackets.push_back({p0, p0});
+          if (s0 == 0) {
+            const std::array<double, 3> p0{coord(0, i), coord(1, j), coord(2, k)};
+            brackets.push_back({p0, p0});
+          }
           if (s0 * s1 >= 0) continue;
-          double lo = p0[std::size_t(axis)], hi = p1[std::size_t(axis)];
-          for (int step = 0; step < 60; ++step) {
+          const std::array<double, 3> p0{coord(0, i), coord(1, j), coord(2, k)};
+          double lo = p0[std::size_t(axis)], hi = coord(std::size_t(axis), w + 1);
+          for (int step = 0; step < kBisections; ++step) {
             const double mid = 0.5 * (lo + hi);
             if (mid <= lo || mid >= hi) break;
             std::array<double, 3> m = p0;
