@@ -64,7 +64,11 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     float tolerance = rt.tangentTolerance / len;  // in units of s
     bool mayZoom = windows + 1 < RT_MAX_WINDOWS && len > 4.0 * rt.tangentTolerance;
     bool zoom = false;
-    done = !defined;  // F undefined on the whole ray: nothing to find
+    // F undefined on the whole ray, or an empty segment (a ray that misses the domain or is
+    // cut away by a clip plane): nothing to find. Such a lane still runs the isolation body
+    // once, on coefficients of no meaning, so `none` holds for it there: a root "found" in
+    // them would be refined on a window of negative length, whose stop test never passes.
+    done = !defined || !(len > 0.0);
     u = 0.0;
     size = 1.0;
     // Isolation: the first interval of the tree, left to right, that holds a root. The body
@@ -77,7 +81,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
       // Signs the rounding cannot have changed.
       bool startPos = b[0] > noise, startNeg = b[0] < -noise;
       bool endPos = b[zs_DEGREE] > noise, endNeg = b[zs_DEGREE] < -noise;
-      bool none = !(k.x <= noise && k.y >= -noise);  // also NaN (overflow): nothing to find
+      bool none = done || !(k.x <= noise && k.y >= -noise);  // also NaN (overflow)
       bool monotone = k.w == 0.0;
       // Monotone with both ends of one sign: no root, and no touching either (the least |f|
       // is at an end, which the neighbouring interval holds).
