@@ -78,13 +78,26 @@ Comparison compare(const std::string& formula, const Domain& domain, Vec3 eye,
     depth = t0 <= t1 ? referenceFirstHit(eval, r, t0, t1) : NAN;
     return !std::isnan(depth);
   };
+  // The rays half a pixel from a center lie on edges that two pixels share: each is traced
+  // once. across(i, j): (i - 1/2, j), i in [0, kSize]; along(i, j): (i, j - 1/2), j likewise.
+  std::vector<char> across(std::size_t(kSize + 1) * kSize), along(std::size_t(kSize) * (kSize + 1));
+  for (int j = 0; j < kSize; ++j)
+    for (int i = 0; i <= kSize; ++i) {
+      double unused = 0;
+      across[std::size_t(j) * (kSize + 1) + i] = hitAt(i - 0.5, j, unused);
+    }
+  for (int j = 0; j <= kSize; ++j)
+    for (int i = 0; i < kSize; ++i) {
+      double unused = 0;
+      along[std::size_t(j) * kSize + i] = hitAt(i, j - 0.5, unused);
+    }
   for (int j = 0; j < kSize; ++j) {
     for (int i = 0; i < kSize; ++i) {
-      double depth = 0, unused = 0;
+      double depth = 0;
       const bool hit = hitAt(i, j, depth);
-      bool stable = true;
-      for (auto [di, dj] : {std::pair{-0.5, 0.0}, {0.5, 0.0}, {0.0, -0.5}, {0.0, 0.5}})
-        stable = stable && hitAt(i + di, j + dj, unused) == hit;
+      const std::size_t a = std::size_t(j) * (kSize + 1) + i, b = std::size_t(j) * kSize + i;
+      const bool stable = bool(across[a]) == hit && bool(across[a + 1]) == hit &&
+                          bool(along[b]) == hit && bool(along[b + kSize]) == hit;
       if (!stable) continue;
       const float got = frame.depth.at(i, j);
       c.referenceHits += hit;
