@@ -193,7 +193,7 @@ const PICTURES = [
              'shading.contours.function="x*y"', 'shading.contours.width=0.03']],
   ['torus', ['render.mode="volume"', 'background=[0.05,0.05,0.1]']],  // F's field as a volume
 ];
-const PICTURE_SHARDS = 3;
+const PICTURE_SHARDS = 4;
 for (let k = 0; k < PICTURE_SHARDS; k++) {
   cases[`pictures-${k + 1}-of-${PICTURE_SHARDS}`] = async () => {
     // The shard's first scene opens the page; the others load into it.
@@ -656,9 +656,10 @@ cases['languages'] = async () => {
 const GROUPS = {
   errors: ['bad-formula-keeps-picture', 'bad-url-shows-error-above-default'],
   'files-and-layouts': ['drop-surf-loads', 'bad-file', 'embed-and-size', 'phone-layout'],
-  pointer: ['hover-shows-curvature', 'touch-drag-turns', 'kiosk'],
+  pointer: ['hover-shows-curvature', 'touch-drag-turns'],
   links: ['share-link', 'bad-url-parameters'],
-  panels: ['light-edit-redraws', 'clip-plane-panel', 'surfaces-panel', 'lost-context-recovers'],
+  panels: ['light-edit-redraws', 'clip-plane-panel'],
+  'surfaces-and-lost-context': ['surfaces-panel', 'lost-context-recovers'],
 };
 for (const [group, members] of Object.entries(GROUPS)) {
   cases[group] = async () => {
