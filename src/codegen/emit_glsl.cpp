@@ -36,8 +36,8 @@ std::string paramDeclaration(const Graph& g) {
 
 // With per-node flags (body_writer.hpp): true where any of `ids` is undefined.
 std::string anyOf(const BodyWriter& body, std::initializer_list<NodeId> ids) {
-  std::string s;
-  for (NodeId id : ids) s += (s.empty() ? "" : " || ") + body.flagOf(id);
+  std::string s = "false";
+  for (NodeId id : ids) s = glslOr(s, body.flagOf(id));
   return s;
 }
 

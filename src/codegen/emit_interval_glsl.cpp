@@ -29,7 +29,6 @@ struct Bodies {
   std::string fUndefined, fPartial, dfUndefined, dfPartial;
 };
 
-
 Bodies writeSteps(const AffineProgram& program) {
   static constexpr const char* kAxis[] = {"AX", "AY", "AZ"};
   static constexpr const char* kDirection[] = {"d.x", "d.y", "d.z"};
@@ -79,8 +78,7 @@ Bodies writeSteps(const AffineProgram& program) {
       if (s.kind == AffineStep::Kind::Rule) {
         flag = "u_a" + std::to_string(mine);
         body += "  bool " + flag + " = " + u + ";\n  zsi_partial = false;\n";
-        u = flag;
-        p = glslOr("zsi_partial", p);
+        u = flag;  // its partial flag follows the rule (below)
       }
       undefined[i] = u;
       partial[i] = p;
@@ -112,12 +110,9 @@ Bodies writeSteps(const AffineProgram& program) {
                                        s.ival, flag));
         if (out.perStep) {  // the rule's own partiality, with its operands'
           partial[i] = "p_" + names[i];
-          body += "  bool " + partial[i] + " = zsi_partial" +
-                  (partial[std::size_t(s.a)] == "false" && (s.b < 0 || partial[std::size_t(s.b)] == "false")
-                       ? std::string()
-                       : " || " + glslOr(partial[std::size_t(s.a)],
-                                         s.b < 0 ? std::string("false") : partial[std::size_t(s.b)])) +
-                  ";\n";
+          const std::string operands = glslOr(
+              partial[std::size_t(s.a)], s.b < 0 ? std::string("false") : partial[std::size_t(s.b)]);
+          body += "  bool " + partial[i] + " = " + glslOr("zsi_partial", operands) + ";\n";
         }
         break;
       case AffineStep::Kind::Scale:

@@ -46,7 +46,6 @@ std::string constantFormulaNote(const Formula& formula, std::span<const double> 
   return text;
 }
 
-
 }  // namespace
 
 Box toBox(const Domain& domain) {
