@@ -186,6 +186,9 @@ void Viewer::frame() {
   } else {
     glfwWaitEventsTimeout(0.5);
   }
+  // Right after the events are read: input queued while the last frame was busy (a long
+  // compile, say) has been noted, so time the viewer itself spent is not a visitor's idleness.
+  returnToStartIfIdle();
   holdQuickKeys();
   runPending();
   takeBuild();
@@ -198,7 +201,6 @@ void Viewer::frame() {
       std::fflush(stdout);
     }
   }
-  returnToStartIfIdle();
 
   int width = 0, height = 0;
   window_->framebufferSize(width, height);
