@@ -19,7 +19,7 @@ let core, session, renderer;
 let scale = 1;            // drawing-buffer scale: 1 at rest, reducedScale() while moving
 // The cost per pixel of the latest picture and of the latest first picture (ms): the
 // viewer's time budgets pick the reduced sizes from them (src/interact/trace_budget.hpp).
-let msPerPixel = 0, quickMsPerPixel = 0;
+let msPerPixel = 0;
 let fixedSize = null;     // &size=WxH
 let examples = [];
 let currentExample = -1;
@@ -63,7 +63,7 @@ function fullSize() {
 // The scale of a first picture (`first`) or of a picture while dragging: the viewer's rule.
 function reducedScale(first) {
   const [w, h] = fullSize();
-  return 1 / core.traceScale(first, first ? quickMsPerPixel : msPerPixel, w, h);
+  return 1 / (first ? session.quickScale(w, h) : core.dragScale(msPerPixel, w, h));
 }
 
 function resizeCanvas() {
@@ -140,7 +140,7 @@ function showFirstPicture() {
                 { quick: true, whole: true })
     .then((ms) => {
       if (ms === null) return;
-      if (ms > 0) quickMsPerPixel = ms / pixels;
+      session.quickDrawn(ms, pixels);
       statusLine.textContent = `${tr('first picture')} · ${canvas.width}×${canvas.height} · ${ms.toFixed(1)} ms`;
       root.dataset.firstPicture = formula;
       root.dataset.firstPictures = String(Number(root.dataset.firstPictures || 0) + 1);

@@ -19,9 +19,40 @@ inline int scaleForBudget(double msPerPixel, int width, int height, double budge
   return hi;
 }
 
-// A first picture while typing: at least half the size each way, at most a quarter.
+// A first picture while typing: at least half the size each way, at most an eighth.
 inline constexpr double kFirstPictureBudgetMs = 40;
-inline constexpr int kFirstPictureMinScale = 2, kFirstPictureMaxScale = 4;
+inline constexpr int kFirstPictureMinScale = 2, kFirstPictureMaxScale = 8;
+
+// What a first picture (the tape interpreter's) costs, learnt from the ones before it, for
+// the size of the next. The last picture's cost per pixel alone misjudges the keystroke that
+// changes most: the one that makes a surface appear where the last formula drew nothing, or
+// that adds a term. So the estimate is also the tape's length times the most a picture has
+// cost per pixel and tape instruction (through the same dispatch: the polynomial one or the
+// one with every operation), which fades by kForget with each later picture so that one
+// costly formula does not keep every later picture small.
+class FirstPictureCost {
+ public:
+  static constexpr double kForget = 0.75;
+
+  // The divisor of each side for a width x height picture of a tape of `instructions` steps.
+  int scale(int width, int height, int instructions, bool polynomial) const {
+    const double perPixel =
+        std::max(lastPerPixel_, perInstruction_[polynomial] * double(std::max(1, instructions)));
+    return scaleForBudget(perPixel, width, height, kFirstPictureBudgetMs, kFirstPictureMinScale,
+                          kFirstPictureMaxScale);
+  }
+  // A first picture of `pixels` pixels took `ms`.
+  void measured(double ms, double pixels, int instructions, bool polynomial) {
+    if (!(ms > 0) || !(pixels > 0)) return;
+    lastPerPixel_ = ms / pixels;
+    double& most = perInstruction_[polynomial];
+    most = std::max(lastPerPixel_ / double(std::max(1, instructions)), kForget * most);
+  }
+
+ private:
+  double lastPerPixel_ = 0;
+  double perInstruction_[2] = {0, 0};  // [polynomial]: ms per pixel and tape instruction
+};
 
 // A picture while a drag, a wheel or a slider moves it: 30 frames a second, down to a
 // quarter of the size each way.

@@ -232,13 +232,11 @@ std::string kioskRefusalJs(const std::string& formula, int maxDegree) {
   return interact::kioskRefusal(formula, policy);
 }
 
-// The divisor of each side for a picture while typing (first) or dragging, from the cost
-// per pixel of the last picture of that kind: the viewer's rule (interact/trace_budget.hpp).
-int traceScaleJs(bool first, double msPerPixel, int width, int height) {
-  using namespace interact;
-  return first ? scaleForBudget(msPerPixel, width, height, kFirstPictureBudgetMs,
-                                kFirstPictureMinScale, kFirstPictureMaxScale)
-               : dragScale(msPerPixel, width, height);
+// The divisor of each side for a picture while dragging, from the cost per pixel of the
+// last one: the viewer's rule (interact/trace_budget.hpp). A first picture's is the
+// session's quickScale.
+int dragScaleJs(double msPerPixel, int width, int height) {
+  return interact::dragScale(msPerPixel, width, height);
 }
 
 val formulaKeyRowsJs() {
@@ -271,7 +269,7 @@ std::string knownLanguageJs(const std::string& tag) { return i18n::knownLanguage
 
 EMSCRIPTEN_BINDINGS(zeroset) {
   emscripten::function("keys", &keysJs);
-  emscripten::function("traceScale", &traceScaleJs);
+  emscripten::function("dragScale", &dragScaleJs);
   emscripten::function("kioskDefaults", &kioskDefaultsJs);
   emscripten::function("kioskRefusal", &kioskRefusalJs);
   emscripten::function("formulaKeyRows", &formulaKeyRowsJs);
@@ -314,6 +312,8 @@ EMSCRIPTEN_BINDINGS(zeroset) {
       .function("quickPrepared", &WebSession::quickPrepared)
       .function("quickPolynomialOnly", &WebSession::quickPolynomialOnly)
       .function("quickFragmentShader", &WebSession::quickFragmentShader)
+      .function("quickScale", &WebSession::quickScale)
+      .function("quickDrawn", &WebSession::quickDrawn)
       .function("quickTape", &quickTapeJs)
       .function("interpreterShaders", &interpreterShadersJs)
       .function("quickHierarchy", &quickHierarchyJs)

@@ -124,6 +124,17 @@ const std::string& WebSession::vertexShader() const {
   return surface_ ? surface_->vertexShader : none;
 }
 
+int WebSession::quickScale(int width, int height) {
+  if (!quick_) return interact::kFirstPictureMinScale;
+  sizedInstructions_ = quick_->tape.instructions();
+  sizedPolynomial_ = quick_->tape.polynomialOnly;
+  return quickCost_.scale(width, height, sizedInstructions_, sizedPolynomial_);
+}
+
+void WebSession::quickDrawn(double ms, double pixels) {
+  quickCost_.measured(ms, pixels, sizedInstructions_, sizedPolynomial_);
+}
+
 std::string WebSession::prepareQuick() {
   quick_.reset();
   std::variant<QuickSurface, std::string> result;

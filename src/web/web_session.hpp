@@ -17,6 +17,7 @@
 
 #include "interact/key_bindings.hpp"
 #include "pipeline/pipeline.hpp"
+#include "interact/trace_budget.hpp"
 #include "pipeline/quick_surface.hpp"
 #include "probe/probe.hpp"
 #include "render/frame_uniforms.hpp"
@@ -75,6 +76,11 @@ class WebSession {
   // The interpreter's fragment shader for the quick surface (the same for every formula of
   // one method kind and dispatch, so the page compiles it once), with the scene's variant.
   std::string quickFragmentShader() const;
+  // The divisor of each side for the quick surface's first picture at width x height, from
+  // the first pictures drawn so far (the viewer's rule: interact/trace_budget.hpp), and what
+  // one of them cost.
+  int quickScale(int width, int height);
+  void quickDrawn(double ms, double pixels);  // the picture sized by the last quickScale
   // Every interpreter shader the scene's method can use (polynomial dispatch, every
   // operation), with the scene's variant: what the page compiles in the background ahead of
   // the first keystroke.
@@ -139,6 +145,9 @@ class WebSession {
   GpuHierarchy gpu_;
   std::vector<float> params_;
   std::optional<QuickSurface> quick_;
+  interact::FirstPictureCost quickCost_;
+  int sizedInstructions_ = 0;     // the tape of the picture quickScale sized last
+  bool sizedPolynomial_ = true;
   GpuHierarchy quickGpu_;
   std::string importNotes_;
   int generation_ = 0;

@@ -20,6 +20,7 @@
 #include "interact/formula_keyboard.hpp"
 #include "interact/key_bindings.hpp"
 #include "interact/kiosk.hpp"
+#include "interact/trace_budget.hpp"
 #include "process.hpp"
 #include "render/camera.hpp"
 
@@ -263,4 +264,50 @@ TEST(FormulaKeyboard, KeysAppendAndBackspaceRemovesACharacterOrAFunction) {
 }
 
 }  // namespace
+// A first picture while typing (interact/trace_budget.hpp): sized from the pictures before
+// it, so that it keeps to its budget also where the cost jumps.
+TEST(FirstPictureCost, UnmeasuredIsHalfSizeThenTheBudgetDecides) {
+  interact::FirstPictureCost cost;
+  EXPECT_EQ(cost.scale(800, 600, 10, true), interact::kFirstPictureMinScale);
+  // Within the budget at 400 x 300: the same formula stays at half size.
+  cost.measured(39, 400.0 * 300, 10, true);
+  EXPECT_EQ(cost.scale(800, 600, 10, true), 2);
+  // Four times that cost per pixel: a quarter of the pixels.
+  cost.measured(4 * 39, 400.0 * 300, 10, true);
+  EXPECT_EQ(cost.scale(800, 600, 10, true), 4);
+  // However costly, never below an eighth each way.
+  cost.measured(100000, 100.0 * 75, 10, true);
+  EXPECT_EQ(cost.scale(800, 600, 10, true), interact::kFirstPictureMaxScale);
+}
+
+TEST(FirstPictureCost, ALongerTapeIsSizedByTheMostATapeInstructionCost) {
+  interact::FirstPictureCost cost;
+  // A 5-instruction tape at the budget, then a picture of nothing that cost almost nothing.
+  cost.measured(40, 400.0 * 300, 5, true);
+  cost.measured(1, 400.0 * 300, 6, true);
+  // The last picture alone would say half size; a tape of 20 instructions is sized as if
+  // each instruction cost what the 5-instruction tape's did (faded once).
+  EXPECT_EQ(interact::scaleForBudget(1.0 / (400 * 300), 800, 600, interact::kFirstPictureBudgetMs,
+                                     interact::kFirstPictureMinScale,
+                                     interact::kFirstPictureMaxScale),
+            2);
+  const double perPixel = 0.75 * 40.0 / (400 * 300) / 5 * 20;
+  EXPECT_EQ(cost.scale(800, 600, 20, true),
+            interact::scaleForBudget(perPixel, 800, 600, interact::kFirstPictureBudgetMs,
+                                     interact::kFirstPictureMinScale,
+                                     interact::kFirstPictureMaxScale));
+  EXPECT_GE(cost.scale(800, 600, 20, true), 3);
+  // The dispatch with every operation learns apart: nothing measured there yet.
+  EXPECT_EQ(cost.scale(800, 600, 20, false), 2);
+}
+
+TEST(FirstPictureCost, OneCostlyFormulaFadesAway) {
+  interact::FirstPictureCost cost;
+  cost.measured(400, 400.0 * 300, 10, true);  // ten times the budget
+  EXPECT_GE(cost.scale(800, 600, 10, true), 4);
+  // Cheap pictures after it: the costly one's weight fades by kForget each time.
+  for (int i = 0; i < 12; ++i) cost.measured(4, 400.0 * 300, 10, true);
+  EXPECT_EQ(cost.scale(800, 600, 10, true), 2);
+}
+
 }  // namespace zs::app

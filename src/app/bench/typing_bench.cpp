@@ -64,7 +64,7 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
       [&warmer] { warmer.stop(); });
   ctx.context->makeCurrent();  // the worker's context loads its own entry points
   Scene scene = base;
-  double msPerPixel = 0;  // of the last first picture: picks the next one's size
+  interact::FirstPictureCost cost;  // of the first pictures so far: picks the next one's size
   for (std::size_t n = 1; n <= formula.size(); ++n) {
     Keystroke key;
     key.text = formula.substr(0, n);
@@ -76,18 +76,20 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
       out.keys.push_back(key);
       continue;
     }
-    key.quickCpuMs = std::get<QuickSurface>(quick).prepareMs;
-    const int scale = interact::scaleForBudget(
-        msPerPixel, out.width, out.height, interact::kFirstPictureBudgetMs,
-        interact::kFirstPictureMinScale, interact::kFirstPictureMaxScale);
+    const QuickSurface& surface = std::get<QuickSurface>(quick);
+    key.quickCpuMs = surface.prepareMs;
+    const int instructions = surface.tape.instructions();
+    const bool polynomial = surface.tape.polynomialOnly;
+    const int scale = cost.scale(out.width, out.height, instructions, polynomial);
     key.firstWidth = std::max(1, out.width / scale);
     key.firstHeight = std::max(1, out.height / scale);
     std::string error;
     const auto drawStart = Clock::now();
-    if (RayTracer* interpreter = interpreters.load(std::get<QuickSurface>(quick), error))
+    if (RayTracer* interpreter = interpreters.load(surface, error))
       error = interpreter->drawOffscreen(scene.render, scene.domain, key.firstWidth, key.firstHeight);
     glFinish();
-    msPerPixel = msSince(drawStart) / (double(key.firstWidth) * key.firstHeight);
+    cost.measured(msSince(drawStart), double(key.firstWidth) * key.firstHeight, instructions,
+                  polynomial);
     key.firstMs = msSince(start);
     const std::uint64_t id = worker.submit(scene);
     std::optional<app::SurfaceWorker::Result> result;
@@ -115,8 +117,8 @@ std::string typingReport(const TypingResults& r) {
   char line[512];
   std::snprintf(line, sizeof line,
                 "Typing, one character at a time: first picture by the tape interpreter at half "
-                "to a quarter of the size each way (as the viewer picks it from the last first "
-                "picture's cost), final picture by the formula's own shader at %dx%d (compiled "
+                "to an eighth of the size each way (as the viewer picks it from the first "
+                "pictures' costs), final picture by the formula's own shader at %dx%d (compiled "
                 "and warmed on a worker thread). The interpreters (polynomial and every "
                 "operation) were compiled once before typing: %.0f ms.\n\n",
                 r.width, r.height, r.interpreterMs);

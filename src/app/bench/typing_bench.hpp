@@ -1,7 +1,7 @@
 #pragma once
 // `zeroset bench --typing FORMULA`: replays typing FORMULA one character at a time, as the
 // viewer handles a keystroke, and times each keystroke to its first picture (the tape
-// interpreter's, src/interpreter, at half to a quarter of the size each way as the viewer
+// interpreter's, src/interpreter, at half to an eighth of the size each way as the viewer
 // picks it: interact/trace_budget.hpp) and to its final picture (the
 // formula's own shader, compiled and warmed on a worker thread with a context of its own,
 // then drawn at full size). The next key is typed after the final picture, so each

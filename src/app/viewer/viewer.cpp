@@ -146,10 +146,7 @@ void Viewer::traceIfNeeded(int width, int height) {
   int scale = 0;
   if (dirty_) {
     scale = moving ? reducedScale(width, height)
-            : quick ? interact::scaleForBudget(quickMsPerPixel_, width, height,
-                                               interact::kFirstPictureBudgetMs,
-                                               interact::kFirstPictureMinScale,
-                                               interact::kFirstPictureMaxScale)
+            : quick ? quickCost_.scale(width, height, quickInstructions_, quickPolynomial_)
                     : 1;
   }
   else if (refine_ && !moving && !quick) scale = 1;
@@ -159,7 +156,12 @@ void Viewer::traceIfNeeded(int width, int height) {
   const double ms = view_->trace(settings, scene_.domain, width, height, scale);
   const double samples = double(settings.samples) * settings.samples;
   const double perPixel = ms / (double(width / scale) * double(height / scale) * samples);
-  (quick ? quickMsPerPixel_ : msPerPixel_) = perPixel;
+  if (quick) {
+    quickCost_.measured(ms / samples, double(width / scale) * double(height / scale),
+                        quickInstructions_, quickPolynomial_);
+  } else {
+    msPerPixel_ = perPixel;
+  }
   stats_.traceMs = ms;
   stats_.traceScale = scale;
   stats_.curvatureRange = view_->curvatureRange();

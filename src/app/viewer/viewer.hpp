@@ -20,6 +20,7 @@
 #include "app/viewer/gallery_panel.hpp"
 #include "interact/key_bindings.hpp"
 #include "interact/kiosk.hpp"
+#include "interact/trace_budget.hpp"
 #include "app/viewer/panel.hpp"
 #include "app/viewer/hover_probe.hpp"
 #include "app/shader_warmer.hpp"
@@ -180,7 +181,9 @@ class Viewer {
   bool buttonsDown_[3] = {false, false, false};  // as ImGui was last told
   std::chrono::steady_clock::time_point lastWheel_{};
   double msPerPixel_ = 0;  // from the latest trace, to pick the reduced scale
-  double quickMsPerPixel_ = 0;  // the same for the latest first picture
+  interact::FirstPictureCost quickCost_;  // of the first pictures so far, to pick their scale
+  int quickInstructions_ = 0;             // the tape of the first picture shown
+  bool quickPolynomial_ = true;           // ... through the polynomial dispatch
   bool sliderActive_ = false, readyPrinted_ = false;
 
   // Mouse drags: which button, where it started, and the camera/light at the start.

@@ -63,6 +63,8 @@ void Viewer::showFirstPicture() {
   const auto* surface = std::get_if<QuickSurface>(&quick);
   if (!surface || !view_->showQuick(*surface)) return;  // the build will show it
   quickFormula_ = typed.formula;
+  quickInstructions_ = surface->tape.instructions();
+  quickPolynomial_ = surface->tape.polynomialOnly;
   dirty_ = true;
   uncounted_ = true;
   if (options_.log) {
