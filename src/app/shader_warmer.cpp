@@ -2,18 +2,23 @@
 
 #include <glad/gl.h>
 
+#include <algorithm>
+
+#include "interact/trace_budget.hpp"
+
 namespace zs::app {
 
-void drawWarmUp(RayTracer& tracer, ViewTarget& target, const Scene& scene) {
-  if (!target.ensure(16, 16)) return;
+void drawWarmUp(RayTracer& tracer, ViewTarget& target, const Scene& scene, int width,
+                int height) {
+  if (!target.ensure(width, height)) return;
   glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());
-  tracer.draw(scene.render, scene.domain, 16, 16);
+  tracer.draw(scene.render, scene.domain, width, height);
   // The reduced-resolution picture of a drag or a first picture draws without
   // supersampling (viewer.cpp): that variant too, where it differs.
   if (scene.render.samples > 1) {
     RenderSettings single = scene.render;
     single.samples = 1;
-    tracer.draw(single, scene.domain, 16, 16);
+    tracer.draw(single, scene.domain, width, height);
   }
   glFinish();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -62,7 +67,11 @@ void ShaderWarmer::wantInterpreters(const Scene& scene) {
       TapeInterpreters interpreters;  // its GL objects go before the context
       ViewTarget target;
       const std::string error = interpreters.warm(
-          sampling, single, [&](RayTracer& t, const Scene& s) { drawWarmUp(t, target, s); });
+          sampling, single, [&](RayTracer& t, const Scene& s) {
+            // At a first picture's size in a window of the scene's size (drawWarmUp says why).
+            drawWarmUp(t, target, s, std::max(1, s.width / interact::kFirstPictureMinScale),
+                       std::max(1, s.height / interact::kFirstPictureMinScale));
+          });
       interpretersWarm_[sampling] = error.empty();
     }
   });

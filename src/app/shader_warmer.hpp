@@ -56,8 +56,12 @@ class ShaderWarmer {
   std::array<std::atomic<bool>, 2> interpretersWarm_{};
 };
 
-// The window's variant of a picture in a ViewTarget of 16 x 16 pixels (the size does not
-// change the program): what the warmer and the window's own first use draw.
-void drawWarmUp(RayTracer& tracer, ViewTarget& target, const Scene& scene);
+// The window's variant of a picture in a ViewTarget of width x height pixels: what the
+// warmer and the window's own first use draw. Small is enough for a formula's own program;
+// llvmpipe's compiled variant of the interpreters was seen to differ with the picture's size
+// (a first picture of another size compiling again, over a second), so they warm at the
+// size of a first picture.
+void drawWarmUp(RayTracer& tracer, ViewTarget& target, const Scene& scene, int width = 16,
+                int height = 16);
 
 }  // namespace zs::app

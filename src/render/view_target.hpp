@@ -17,6 +17,7 @@ class ViewTarget {
   // cannot make it.
   bool ensure(int width, int height);
   unsigned framebuffer() const { return fbo_; }
+  unsigned colorTexture() const { return color_; }
   int width() const { return width_; }
   int height() const { return height_; }
 

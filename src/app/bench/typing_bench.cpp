@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <thread>
+#include <vector>
 
 #include "app/bench/bench_runner.hpp"
 #include "app/shader_warmer.hpp"
@@ -15,6 +16,7 @@
 #include "pipeline/quick_surface.hpp"
 #include "render/gl_context.hpp"
 #include "render/ray_tracer.hpp"
+#include "render/view_target.hpp"
 
 namespace zs::bench {
 namespace {
@@ -39,16 +41,33 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
     out.error = ctx.error;
     return out;
   }
+  // First pictures in a context of their own, as the viewer draws them (app/viewer/
+  // surface_view.hpp says why).
+  ContextResult first = createHeadlessContext(options.backend);
+  if (!first.context) {
+    out.error = first.error;
+    return out;
+  }
   // What a front end does once at start: the interpreters of the scene's method compiled
   // and drawn.
   const bool sampling = base.render.tracing.method == TracingMethod::Sampling;
   TapeInterpreters interpreters;
+  ViewTarget firstTarget, warmTarget;
+  // The interpreters' GL objects go while their context is current.
+  struct FirstCurrentAtEnd {
+    GlContext& context;
+    ~FirstCurrentAtEnd() { context.makeCurrent(); }
+  } firstCurrentAtEnd{*first.context};
+  std::vector<unsigned char> pixels;
   auto start = Clock::now();
+  Scene single = base;
+  single.render.samples = 1;  // first pictures draw without supersampling
   const std::string warmError =
-      interpreters.warm(sampling, base, [&](RayTracer& tracer, const Scene& scene) {
-        tracer.drawOffscreen(scene.render, scene.domain, std::max(1, out.width / 2),
-                             std::max(1, out.height / 2));
-        glFinish();
+      interpreters.warm(sampling, single, [&](RayTracer& tracer, const Scene& scene) {
+        // As the viewer warms them: at the size of a first picture.
+        app::drawWarmUp(tracer, warmTarget, scene,
+                        std::max(1, out.width / interact::kFirstPictureMinScale),
+                        std::max(1, out.height / interact::kFirstPictureMinScale));
       });
   if (!warmError.empty()) {
     out.error = "the tape interpreter cannot draw this scene: " + warmError;
@@ -56,6 +75,7 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
   }
   out.interpreterMs = msSince(start);
 
+  ctx.context->makeCurrent();
   RayTracer own;
   // The worker compiles and draws each formula's own shader in a context of its own first.
   app::ShaderWarmer warmer(app::ShaderWarmer::Target::Offscreen, options.backend);
@@ -84,10 +104,18 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
     key.firstWidth = std::max(1, out.width / scale);
     key.firstHeight = std::max(1, out.height / scale);
     std::string error;
+    first.context->makeCurrent();
     const auto drawStart = Clock::now();
-    if (RayTracer* interpreter = interpreters.load(surface, error))
-      error = interpreter->drawOffscreen(scene.render, scene.domain, key.firstWidth, key.firstHeight);
-    glFinish();
+    if (RayTracer* interpreter = interpreters.load(surface, error);
+        interpreter && firstTarget.ensure(key.firstWidth, key.firstHeight)) {
+      glBindFramebuffer(GL_FRAMEBUFFER, firstTarget.framebuffer());
+      interpreter->draw(scene.render, scene.domain, key.firstWidth, key.firstHeight);
+      // Read back, as the viewer does to show it in the window's context.
+      pixels.resize(std::size_t(key.firstWidth) * std::size_t(key.firstHeight) * 4);
+      glPixelStorei(GL_PACK_ALIGNMENT, 1);
+      glReadPixels(0, 0, key.firstWidth, key.firstHeight, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    }
     cost.measured(msSince(drawStart), double(key.firstWidth) * key.firstHeight, instructions,
                   polynomial);
     key.firstMs = msSince(start);
@@ -109,6 +137,7 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
     key.note = error.substr(0, error.find('\n'));
     out.keys.push_back(key);
   }
+  ctx.context->makeCurrent();  // the own tracer's GL objects go with their context
   return out;
 }
 

@@ -8,9 +8,39 @@
 #include <chrono>
 
 #include "app/shader_warmer.hpp"
+#include "interact/trace_budget.hpp"
 #include "pipeline/load_surface.hpp"
 
 namespace zs::app {
+
+SurfaceView::SurfaceView() : first_(std::make_unique<FirstPictures>()) {}
+
+SurfaceView::~SurfaceView() {
+  FirstPicturesScope scope(*this);  // their GL objects go with their context
+  quick_ = nullptr;
+  first_.reset();
+}
+
+SurfaceView::FirstPicturesScope::FirstPicturesScope(const SurfaceView& view) : view_(view) {
+  if (view_.firstContext_) view_.firstContext_->makeCurrent();
+}
+
+SurfaceView::FirstPicturesScope::~FirstPicturesScope() {
+  if (view_.firstContext_) view_.home_->makeCurrent();
+}
+
+void SurfaceView::drawFirstPicturesIn(std::unique_ptr<GlContext> first, GlContext* home) {
+  if (!first || !home) return;
+  {
+    FirstPicturesScope scope(*this);  // what was made in the window's context goes there
+    quick_ = nullptr;
+    first_.reset();
+  }
+  firstContext_ = std::move(first);
+  home_ = home;
+  FirstPicturesScope scope(*this);
+  first_ = std::make_unique<FirstPictures>();
+}
 
 std::string SurfaceView::upload(const PreparedSurface& surface, bool endsQuick) {
   std::string error = loadSurface(tracer_, surface);
@@ -20,24 +50,47 @@ std::string SurfaceView::upload(const PreparedSurface& surface, bool endsQuick) 
 
 void SurfaceView::setParams(std::span<const float> params) {
   tracer_.setParams(params);
-  if (quick_) quick_->setParams(params);
+  if (quick_) quick_->setParams(params);  // kept on the CPU until the next draw
 }
 
-void SurfaceView::warmInterpreters(const Scene& scene) {
+void SurfaceView::warmInterpreters(const Scene& scene, int width, int height) {
   const bool sampling = scene.render.tracing.method == TracingMethod::Sampling;
-  if (interpreters_.warmed(sampling)) return;
+  if (first_->interpreters.warmed(sampling)) return;
   Scene single = scene;
   single.render.samples = 1;
-  interpreters_.warm(sampling, single,
-                     [&](RayTracer& t, const Scene& s) { drawWarmUp(t, warmTarget_, s); });
+  FirstPicturesScope scope(*this);
+  first_->interpreters.warm(sampling, single, [&](RayTracer& t, const Scene& s) {
+    drawWarmUp(t, first_->warmTarget, s, std::max(1, width / interact::kFirstPictureMinScale),
+               std::max(1, height / interact::kFirstPictureMinScale));
+  });
 }
 
 bool SurfaceView::showQuick(const QuickSurface& surface) {
   std::string error;
-  RayTracer* tracer = interpreters_.load(surface, error);
+  FirstPicturesScope scope(*this);
+  RayTracer* tracer = first_->interpreters.load(surface, error);
   if (!tracer) return false;
   quick_ = tracer;
   return true;
+}
+
+void SurfaceView::traceQuick(ViewTarget& into, const RenderSettings& settings, const Domain& domain,
+                             int w, int h) {
+  quickPixels_.resize(std::size_t(w) * std::size_t(h) * 4);
+  {
+    FirstPicturesScope scope(*this);
+    if (!first_->target.ensure(w, h)) return;
+    glBindFramebuffer(GL_FRAMEBUFFER, first_->target.framebuffer());
+    quick_->draw(settings, domain, w, h);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, first_->target.framebuffer());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, quickPixels_.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+  glBindTexture(GL_TEXTURE_2D, into.colorTexture());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, quickPixels_.data());
+  glBindTexture(GL_TEXTURE_2D, 0);
 }
 
 double SurfaceView::trace(const RenderSettings& settings, const Domain& domain, int width,
@@ -48,8 +101,12 @@ double SurfaceView::trace(const RenderSettings& settings, const Domain& domain, 
   const int w = std::max(1, width / scale), h = std::max(1, height / scale);
   if (!target.ensure(w, h)) return 0;
   const auto start = std::chrono::steady_clock::now();
-  glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());
-  current().draw(settings, domain, w, h);
+  if (quick_ && firstContext_) {
+    traceQuick(target, settings, domain, w, h);
+  } else {
+    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());
+    current().draw(settings, domain, w, h);
+  }
   // Waiting here keeps the measured time honest and stops llvmpipe from queueing traces
   // behind each other while the mouse moves.
   glFinish();

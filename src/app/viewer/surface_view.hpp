@@ -6,9 +6,12 @@
 // runs at 1/scale of the window's resolution into a second, smaller target that the blit
 // stretches, so llvmpipe keeps up; when the drag ends the full-resolution image replaces it.
 // A new formula's first picture comes from the tape interpreter (docs/interpreter.md) until
-// its own surface is uploaded. Needs the window's GL context current for its whole life.
+// its own surface is uploaded, drawn in a GL context of its own where the viewer gives one.
+// Needs the window's GL context current for its whole life.
+#include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "pipeline/load_surface.hpp"
 #include "pipeline/pipeline.hpp"
@@ -19,9 +22,17 @@ namespace zs::app {
 
 class SurfaceView {
  public:
-  SurfaceView() = default;
+  SurfaceView();
+  ~SurfaceView();
   SurfaceView(const SurfaceView&) = delete;
   SurfaceView& operator=(const SurfaceView&) = delete;
+
+  // First pictures in `first`, a GL context made for them (`home` is the window's, current
+  // again after each use). llvmpipe drops a context's least recently used compiled programs
+  // beyond a budget, and a formula's own program compiled beside the interpreter with every
+  // operation would drop the interpreter's: the next first picture would compile it again,
+  // a pause of over a second (docs/interpreter.md). Call before the interpreters warm up.
+  void drawFirstPicturesIn(std::unique_ptr<GlContext> first, GlContext* home);
 
   // Compiles the shaders (skipped when their text equals the current program's: a new
   // parameter value or octree level changes only the hierarchy), then sets the hierarchy
@@ -33,8 +44,9 @@ class SurfaceView {
 
   // The interpreters compiled for this kind of method (fast once the surface worker's
   // ShaderWarmer has compiled them: the driver's cache holds them).
-  void warmInterpreters(const Scene& scene);
-  bool interpretersWarm(bool sampling) const { return interpreters_.warmed(sampling); }
+  // width x height: the window's, whose first pictures they draw.
+  void warmInterpreters(const Scene& scene, int width, int height);
+  bool interpretersWarm(bool sampling) const { return first_->interpreters.warmed(sampling); }
   // Draws `surface` with the tape interpreter from the next trace on, until an upload that
   // ends it; false (nothing changes) when no interpreter is ready for it.
   bool showQuick(const QuickSurface& surface);
@@ -59,10 +71,34 @@ class SurfaceView {
   RayTracer& current() { return quick_ ? *quick_ : tracer_; }
   const RayTracer& current() const { return quick_ ? *quick_ : tracer_; }
 
+  // The interpreters and what they draw into: GL objects of the first pictures' context.
+  struct FirstPictures {
+    TapeInterpreters interpreters;
+    ViewTarget warmTarget, target;
+  };
+  // Makes the first pictures' context current for its life, the window's again after.
+  class FirstPicturesScope {
+   public:
+    explicit FirstPicturesScope(const SurfaceView& view);
+    ~FirstPicturesScope();
+    FirstPicturesScope(const FirstPicturesScope&) = delete;
+    FirstPicturesScope& operator=(const FirstPicturesScope&) = delete;
+
+   private:
+    const SurfaceView& view_;
+  };
+  // Draws the first picture w x h in its own context, reads it back and copies it into
+  // `into` (a target of the window's context).
+  void traceQuick(ViewTarget& into, const RenderSettings& settings, const Domain& domain, int w,
+                  int h);
+
   RayTracer tracer_;
-  TapeInterpreters interpreters_;
+  std::unique_ptr<GlContext> firstContext_;
+  GlContext* home_ = nullptr;
+  std::unique_ptr<FirstPictures> first_;
+  std::vector<unsigned char> quickPixels_;
   RayTracer* quick_ = nullptr;  // the interpreter drawing a first picture, or none
-  ViewTarget full_, reduced_, warmTarget_;
+  ViewTarget full_, reduced_;
   int lastScale_ = 0;  // which target holds the latest image; 0 = none yet
 };
 

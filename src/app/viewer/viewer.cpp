@@ -51,6 +51,14 @@ std::unique_ptr<Viewer> Viewer::open(const ViewerOptions& options, std::string& 
   }
   glfwSwapInterval(0);  // llvmpipe frames are slow enough; vsync would only add latency
   v->view_ = std::make_unique<SurfaceView>();
+  // First pictures in a hidden window's context of their own (SurfaceView says why); where
+  // none can be made they share the window's.
+  if (auto first = GlfwWindowContext::create(16, 16, options.title, false); first.context) {
+    v->window_->makeCurrent();
+    v->view_->drawFirstPicturesIn(std::move(first.context), v->window_.get());
+  } else {
+    v->window_->makeCurrent();
+  }
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -197,7 +205,9 @@ void Viewer::frame() {
   // Once the worker has compiled the interpreters, the window's compile of them is quick.
   const bool sampling = scene_.render.tracing.method == TracingMethod::Sampling;
   if (!view_->interpretersWarm(sampling) && warmer_->interpretersWarm(sampling)) {
-    view_->warmInterpreters(scene_);
+    int width = 0, height = 0;
+    window_->framebufferSize(width, height);
+    view_->warmInterpreters(scene_, width, height);
     if (options_.log) {
       std::printf("first pictures ready\n");
       std::fflush(stdout);
