@@ -1,6 +1,7 @@
 #include "pipeline/load_surface.hpp"
 
 #include <iostream>
+#include <string_view>
 
 #include "interpreter/interpreter_glsl.hpp"
 
@@ -34,7 +35,10 @@ std::string loadQuickSurface(RayTracer& tracer, const QuickSurface& surface) {
 
 std::string TapeInterpreters::warm(bool sampling, const Scene& base, const Draw& draw) {
   // A sphere (polynomial), "x^2" seen edge-on (a view with nothing in it) and a sphere with a
-  // sine in it (every operation).
+  // sine in it (every operation). The spheres are drawn twice: from the scene's eye, where
+  // most tiles are clear and the frame skips them with a stencil test (render/beam_pass.hpp),
+  // and from the domain's centre, where no tile is clear and the frame runs without one, as
+  // for a surface that fills the picture. llvmpipe compiles a variant for each.
   for (const char* formula : {"x^2+y^2+z^2-1", "x^2", "x^2+y^2+z^2-1+sin(x)/9"}) {
     Scene scene = base;
     scene.formula = formula;
@@ -50,6 +54,17 @@ std::string TapeInterpreters::warm(bool sampling, const Scene& base, const Draw&
       return err;
     if (std::string err = loadQuickSurface(*tracer, q); !err.empty()) return err;
     draw(*tracer, scene);
+    if (std::string_view(formula) != "x^2") {
+      Scene inside = scene;
+      const Domain box = boundingBox(scene.domain);
+      const Camera& camera = scene.render.camera;
+      for (int i = 0; i < 3; ++i) {
+        const double centre = 0.5 * (box.min[i] + box.max[i]);
+        inside.render.camera.eye[i] = centre;
+        inside.render.camera.target[i] = centre + (camera.target[i] - camera.eye[i]);
+      }
+      draw(*tracer, inside);
+    }
   }
   warmed_[sampling] = true;
   return {};
