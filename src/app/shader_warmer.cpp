@@ -66,13 +66,16 @@ void ShaderWarmer::wantInterpreters(const Scene& scene) {
     {
       TapeInterpreters interpreters;  // its GL objects go before the context
       ViewTarget target;
-      const std::string error = interpreters.warm(
-          sampling, single, [&](RayTracer& t, const Scene& s) {
-            // At a first picture's size in a window of the scene's size (drawWarmUp says why).
-            drawWarmUp(t, target, s, std::max(1, s.width / interact::kFirstPictureMinScale),
-                       std::max(1, s.height / interact::kFirstPictureMinScale));
-          });
+      const auto draw = [&](RayTracer& t, const Scene& s) {
+        // At a first picture's size in a window of the scene's size (drawWarmUp says why).
+        drawWarmUp(t, target, s, std::max(1, s.width / interact::kFirstPictureMinScale),
+                   std::max(1, s.height / interact::kFirstPictureMinScale));
+      };
+      const std::string error = interpreters.warm(sampling, single, draw);
       interpretersWarm_[sampling] = error.empty();
+      // Then, while the window's first pictures already draw, the variant for pictures a
+      // surface fills, into the driver's shader cache for the window's first use.
+      if (error.empty()) interpreters.warmFilledPictures(sampling, single, draw);
     }
   });
 }

@@ -1,7 +1,6 @@
 #include "pipeline/load_surface.hpp"
 
 #include <iostream>
-#include <string_view>
 
 #include "interpreter/interpreter_glsl.hpp"
 
@@ -33,18 +32,27 @@ std::string loadQuickSurface(RayTracer& tracer, const QuickSurface& surface) {
   return {};
 }
 
+namespace {
+
+// The warm-up's scene for `formula`: the interpreter's method, no curvature or markers.
+Scene warmUpScene(const Scene& base, const char* formula, bool sampling) {
+  Scene scene = base;
+  scene.formula = formula;
+  scene.render.tracing.method = sampling ? TracingMethod::Sampling : TracingMethod::Interval;
+  if (needsCurvature(scene.render.shading.color)) scene.render.shading.color = ColorMode::Material;
+  scene.render.singular.enabled = false;
+  return scene;
+}
+
+// A sphere (polynomial) and a sphere with a sine in it (every operation).
+constexpr const char* kWarmSpheres[] = {"x^2+y^2+z^2-1", "x^2+y^2+z^2-1+sin(x)/9"};
+
+}  // namespace
+
 std::string TapeInterpreters::warm(bool sampling, const Scene& base, const Draw& draw) {
-  // A sphere (polynomial), "x^2" seen edge-on (a view with nothing in it) and a sphere with a
-  // sine in it (every operation). The spheres are drawn twice: from the scene's eye, where
-  // most tiles are clear and the frame skips them with a stencil test (render/beam_pass.hpp),
-  // and from the domain's centre, where no tile is clear and the frame runs without one, as
-  // for a surface that fills the picture. llvmpipe compiles a variant for each.
-  for (const char* formula : {"x^2+y^2+z^2-1", "x^2", "x^2+y^2+z^2-1+sin(x)/9"}) {
-    Scene scene = base;
-    scene.formula = formula;
-    scene.render.tracing.method = sampling ? TracingMethod::Sampling : TracingMethod::Interval;
-    if (needsCurvature(scene.render.shading.color)) scene.render.shading.color = ColorMode::Material;
-    scene.render.singular.enabled = false;
+  // The spheres, and "x^2" seen edge-on (a view with nothing in it).
+  for (const char* formula : {kWarmSpheres[0], "x^2", kWarmSpheres[1]}) {
+    const Scene scene = warmUpScene(base, formula, sampling);
     auto quick = prepareQuickSurface(scene);
     if (auto* err = std::get_if<std::string>(&quick)) return *err;
     const QuickSurface& q = std::get<QuickSurface>(quick);
@@ -54,19 +62,32 @@ std::string TapeInterpreters::warm(bool sampling, const Scene& base, const Draw&
       return err;
     if (std::string err = loadQuickSurface(*tracer, q); !err.empty()) return err;
     draw(*tracer, scene);
-    if (std::string_view(formula) != "x^2") {
-      Scene inside = scene;
-      const Domain box = boundingBox(scene.domain);
-      const Camera& camera = scene.render.camera;
-      for (int i = 0; i < 3; ++i) {
-        const double centre = 0.5 * (box.min[i] + box.max[i]);
-        inside.render.camera.eye[i] = centre;
-        inside.render.camera.target[i] = centre + (camera.target[i] - camera.eye[i]);
-      }
-      draw(*tracer, inside);
-    }
   }
   warmed_[sampling] = true;
+  return {};
+}
+
+std::string TapeInterpreters::warmFilledPictures(bool sampling, const Scene& base,
+                                                 const Draw& draw) {
+  if (!warmed_[sampling]) return "the interpreters are not warmed up";
+  for (const char* formula : kWarmSpheres) {
+    Scene scene = warmUpScene(base, formula, sampling);
+    auto quick = prepareQuickSurface(scene);
+    if (auto* err = std::get_if<std::string>(&quick)) return *err;
+    const QuickSurface& q = std::get<QuickSurface>(quick);
+    RayTracer* tracer = tracers_[sampling][q.tape.polynomialOnly].get();
+    if (!tracer) return "the interpreters are not warmed up";
+    if (std::string err = loadQuickSurface(*tracer, q); !err.empty()) return err;
+    // From the domain's centre every tile sees the sphere.
+    const Domain box = boundingBox(scene.domain);
+    const Camera camera = scene.render.camera;
+    for (int i = 0; i < 3; ++i) {
+      const double centre = 0.5 * (box.min[i] + box.max[i]);
+      scene.render.camera.eye[i] = centre;
+      scene.render.camera.target[i] = centre + (camera.target[i] - camera.eye[i]);
+    }
+    draw(*tracer, scene);
+  }
   return {};
 }
 

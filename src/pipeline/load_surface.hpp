@@ -35,6 +35,12 @@ class TapeInterpreters {
   // variant a first picture uses: a surface, and a view that shows none. `base` gives the
   // settings. What a front end does once, before the first keystroke. "" on success.
   std::string warm(bool sampling, const Scene& base, const Draw& draw);
+  // After warm: the variant of a picture that its surface fills. A frame skips its clear
+  // tiles with a stencil test only where enough tiles are clear (render/beam_pass.hpp), and
+  // a software rasterizer compiles a program again for each such state, so the warm-up also
+  // draws its spheres from the domain's centre, where no tile is clear. A front end that
+  // warms on a background thread does this after saying that first pictures are ready.
+  std::string warmFilledPictures(bool sampling, const Scene& base, const Draw& draw);
   bool warmed(bool sampling) const { return warmed_[sampling]; }
   // The warmed interpreter that runs `surface`, loaded with it; null with `error` set when
   // none is warmed for it or the load failed.

@@ -62,13 +62,15 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
   auto start = Clock::now();
   Scene single = base;
   single.render.samples = 1;  // first pictures draw without supersampling
-  const std::string warmError =
-      interpreters.warm(sampling, single, [&](RayTracer& tracer, const Scene& scene) {
-        // As the viewer warms them: at the size of a first picture.
-        app::drawWarmUp(tracer, warmTarget, scene,
-                        std::max(1, out.width / interact::kFirstPictureMinScale),
-                        std::max(1, out.height / interact::kFirstPictureMinScale));
-      });
+  const auto draw = [&](RayTracer& tracer, const Scene& scene) {
+    // As the viewer warms them: at the size of a first picture.
+    app::drawWarmUp(tracer, warmTarget, scene,
+                    std::max(1, out.width / interact::kFirstPictureMinScale),
+                    std::max(1, out.height / interact::kFirstPictureMinScale));
+  };
+  // Both parts of the viewer's warm-up (the second runs in its background).
+  std::string warmError = interpreters.warm(sampling, single, draw);
+  if (warmError.empty()) warmError = interpreters.warmFilledPictures(sampling, single, draw);
   if (!warmError.empty()) {
     out.error = "the tape interpreter cannot draw this scene: " + warmError;
     return out;
