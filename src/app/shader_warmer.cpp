@@ -41,10 +41,14 @@ bool ShaderWarmer::ensureContext() {
 void ShaderWarmer::warm(const Scene& scene, const PreparedSurface& surface) {
   if (!ensureContext()) return;
   if (!loadSurface(*tracer_, surface).empty()) return;
+  // From the scene's eye at a quarter of its size: a picture like the front end's next full
+  // one, so that the variant llvmpipe compiles is the one that picture needs (drawWarmUp
+  // says why), for a sixteenth of its pixels.
+  const int width = std::max(1, scene.width / 4), height = std::max(1, scene.height / 4);
   if (kind_ == Target::Window) {
-    drawWarmUp(*tracer_, *target_, scene);
+    drawWarmUp(*tracer_, *target_, scene, width, height);
   } else {
-    tracer_->drawOffscreen(scene.render, scene.domain, 16, 16);
+    tracer_->drawOffscreen(scene.render, scene.domain, width, height);
     glFinish();
   }
 }

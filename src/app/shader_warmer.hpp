@@ -1,7 +1,7 @@
 #pragma once
 // The surface worker's second job (surface_worker.hpp, its warm-up step): in a headless GL
-// context of its own, compile each new surface's program and draw it once, small, into a
-// target of the formats the front end draws to (the viewer's window: render/view_target.hpp;
+// context of its own, compile each new surface's program and draw it once, at the scene's
+// size, into a target of the formats the front end draws to (the viewer's window: render/view_target.hpp;
 // `bench --typing`: the tracer's offscreen target), so the driver's shader cache holds the
 // very program the front end asks for next, and its compile of it takes milliseconds
 // instead of stopping the picture. When the formula box first gets the
@@ -57,10 +57,11 @@ class ShaderWarmer {
 };
 
 // The window's variant of a picture in a ViewTarget of width x height pixels: what the
-// warmer and the window's own first use draw. Small is enough for a formula's own program;
-// llvmpipe's compiled variant of the interpreters was seen to differ with the picture's size
-// (a first picture of another size compiling again, over a second), so they warm at the
-// size of a first picture.
+// warmer and the window's own first use draw. llvmpipe compiles a program again for each
+// state it is drawn in, and whether a frame skips its clear tiles with a stencil test
+// depends on the picture (render/beam_pass.hpp), so warm-ups draw pictures like the ones
+// that follow: a formula's own program at a quarter of the scene's size from its eye, the
+// interpreters at a first picture's size.
 void drawWarmUp(RayTracer& tracer, ViewTarget& target, const Scene& scene, int width = 16,
                 int height = 16);
 
