@@ -1,11 +1,11 @@
 #pragma once
 // The surface worker's second job (surface_worker.hpp, its warm-up step): in a headless GL
-// context of its own, compile each new surface's program and draw it once, at the scene's
-// size, into a target of the formats the front end draws to (the viewer's window: render/view_target.hpp;
-// `bench --typing`: the tracer's offscreen target), so the driver's shader cache holds the
-// very program the front end asks for next, and its compile of it takes milliseconds
-// instead of stopping the picture. When the formula box first gets the
-// focus it warms the tape interpreters (pipeline/load_surface.hpp) the same way, on a thread
+// context of its own, compile each new surface's program and draw it once, from the scene's
+// eye at a quarter of its size, into a target of the formats the front end draws to (the
+// viewer's window: render/view_target.hpp; `bench --typing`: the tracer's offscreen
+// target), so the driver's shader cache holds the very program the front end asks for
+// next, and its compile of it takes milliseconds instead of stopping the picture. When the
+// formula box first gets the focus it warms the tape interpreters (pipeline/load_surface.hpp) the same way, on a thread
 // and context of their own (seconds of JIT on llvmpipe that no build waits for, paid only by
 // a session that edits a formula); the window then draws every new formula's first picture
 // with them. Without a headless context (no EGL) it does nothing and the window compiles as
@@ -62,7 +62,7 @@ class ShaderWarmer {
 // depends on the picture (render/beam_pass.hpp), so warm-ups draw pictures like the ones
 // that follow: a formula's own program at a quarter of the scene's size from its eye, the
 // interpreters at a first picture's size.
-void drawWarmUp(RayTracer& tracer, ViewTarget& target, const Scene& scene, int width = 16,
-                int height = 16);
+void drawWarmUp(RayTracer& tracer, ViewTarget& target, const Scene& scene, int width,
+                int height);
 
 }  // namespace zs::app

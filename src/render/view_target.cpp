@@ -35,4 +35,20 @@ bool ViewTarget::ensure(int width, int height) {
   return true;
 }
 
+void ViewTarget::readPixels(std::vector<unsigned char>& rgba) const {
+  rgba.resize(std::size_t(width_) * std::size_t(height_) * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+}
+
+void ViewTarget::writePixels(const std::vector<unsigned char>& rgba) {
+  if (rgba.size() < std::size_t(width_) * std::size_t(height_) * 4) return;
+  glBindTexture(GL_TEXTURE_2D, color_);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
 }  // namespace zs

@@ -4,6 +4,8 @@
 // The viewer traces into these and blits them; its surface worker draws into one of the same
 // formats, so the program a worker compiles is the very variant the window then uses.
 // Needs a current GL context; its objects belong to it.
+#include <vector>
+
 namespace zs {
 
 class ViewTarget {
@@ -17,7 +19,10 @@ class ViewTarget {
   // cannot make it.
   bool ensure(int width, int height);
   unsigned framebuffer() const { return fbo_; }
-  unsigned colorTexture() const { return color_; }
+  // The picture as RGBA8 rows from the bottom, into `rgba` (resized); and written back from
+  // such rows, of this target's size (a picture read from a target of another context).
+  void readPixels(std::vector<unsigned char>& rgba) const;
+  void writePixels(const std::vector<unsigned char>& rgba);
   int width() const { return width_; }
   int height() const { return height_; }
 

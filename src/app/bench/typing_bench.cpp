@@ -112,11 +112,8 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
         interpreter && firstTarget.ensure(key.firstWidth, key.firstHeight)) {
       glBindFramebuffer(GL_FRAMEBUFFER, firstTarget.framebuffer());
       interpreter->draw(scene.render, scene.domain, key.firstWidth, key.firstHeight);
-      // Read back, as the viewer does to show it in the window's context.
-      pixels.resize(std::size_t(key.firstWidth) * std::size_t(key.firstHeight) * 4);
-      glPixelStorei(GL_PACK_ALIGNMENT, 1);
-      glReadPixels(0, 0, key.firstWidth, key.firstHeight, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      firstTarget.readPixels(pixels);  // as the viewer does, to show it in the window's context
     }
     cost.measured(msSince(drawStart), double(key.firstWidth) * key.firstHeight, instructions,
                   polynomial);

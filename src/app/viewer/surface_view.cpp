@@ -76,21 +76,15 @@ bool SurfaceView::showQuick(const QuickSurface& surface) {
 
 void SurfaceView::traceQuick(ViewTarget& into, const RenderSettings& settings, const Domain& domain,
                              int w, int h) {
-  quickPixels_.resize(std::size_t(w) * std::size_t(h) * 4);
   {
     FirstPicturesScope scope(*this);
     if (!first_->target.ensure(w, h)) return;
     glBindFramebuffer(GL_FRAMEBUFFER, first_->target.framebuffer());
     quick_->draw(settings, domain, w, h);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, first_->target.framebuffer());
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, quickPixels_.data());
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    first_->target.readPixels(quickPixels_);
   }
-  glBindTexture(GL_TEXTURE_2D, into.colorTexture());
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, quickPixels_.data());
-  glBindTexture(GL_TEXTURE_2D, 0);
+  into.writePixels(quickPixels_);
 }
 
 double SurfaceView::trace(const RenderSettings& settings, const Domain& domain, int width,

@@ -53,12 +53,9 @@ std::unique_ptr<Viewer> Viewer::open(const ViewerOptions& options, std::string& 
   v->view_ = std::make_unique<SurfaceView>();
   // First pictures in a hidden window's context of their own (SurfaceView says why); where
   // none can be made they share the window's.
-  if (auto first = GlfwWindowContext::create(16, 16, options.title, false); first.context) {
-    v->window_->makeCurrent();
-    v->view_->drawFirstPicturesIn(std::move(first.context), v->window_.get());
-  } else {
-    v->window_->makeCurrent();
-  }
+  auto first = GlfwWindowContext::create(16, 16, options.title, false);
+  v->window_->makeCurrent();  // a made context is current
+  if (first.context) v->view_->drawFirstPicturesIn(std::move(first.context), v->window_.get());
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
