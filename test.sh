@@ -17,4 +17,10 @@ ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 180 2>&1 | te
 echo "The ten slowest tests of this run (seconds):"
 sed -n 's/^ *[0-9]*\/[0-9]* Test *#[0-9]*: \([^ ]*\) .* \([0-9.]*\) sec$/\2 \1/p' "$log" |
   sort -rn | awk 'NR <= 10 {printf "  %7.2f  %s\n", $1, $2}'
+# A failing test's own output, last: what CI keeps of a run is its tail.
+if [ "$status" -ne 0 ]; then
+  awk '/Test *#[0-9]+: .*\*\*\*(Failed|Timeout|Exception)/ {keep = 1; n = 0; print "---- " $0; next}
+       /^ *Start *[0-9]+:|Test *#[0-9]+:|^[0-9]+% tests passed/ {keep = 0}
+       keep && n++ < 80' "$log"
+fi
 exit "$status"

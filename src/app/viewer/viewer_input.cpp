@@ -182,7 +182,11 @@ void Viewer::noteInput() {
 
 void Viewer::returnToStartIfIdle() {
   if (!options_.kiosk || !inputSinceStart_) return;
-  const std::chrono::duration<double> idle = std::chrono::steady_clock::now() - lastInput_;
+  // A visitor waiting for the surface they asked for is not idle: the time counts from the
+  // later of their last input and the build's arrival.
+  if (buildAt_ || worker_->busy()) return;
+  const std::chrono::duration<double> idle =
+      std::chrono::steady_clock::now() - std::max(lastInput_, lastBuilt_);
   if (idle.count() < options_.kiosk->idleSeconds) return;
   inputSinceStart_ = false;
   // What a visitor left moving stops: a drag, a play button's sweep, a pending build.
