@@ -213,7 +213,7 @@ class Viewer {
   std::string startLabel_;               // the start scene's example label, if it is one
   std::string startLanguage_;            // a kiosk's, restored for the next visitor
   std::chrono::steady_clock::time_point lastInput_ = std::chrono::steady_clock::now();
-  std::chrono::steady_clock::time_point lastBuilt_ = lastInput_;  // a build's result was taken
+  std::chrono::steady_clock::time_point lastBuilt_ = lastInput_;  // a new formula's build arrived
   bool inputSinceStart_ = false;         // kiosk: the start screen was left
   std::future<FileJobResult> meshExport_;  // a running export's summary
   std::future<FileJobResult> print_;       // a running print's message

@@ -108,7 +108,7 @@ std::string Viewer::onSceneEdited(const Scene& before) {
 void Viewer::takeBuild() {
   std::optional<SurfaceWorker::Result> result = worker_->take();
   if (!result) return;
-  lastBuilt_ = std::chrono::steady_clock::now();
+  if (result->scene.formula != built_.formula) lastBuilt_ = std::chrono::steady_clock::now();
   stats_.building = worker_->busy();
   const bool latest = result->id == worker_->lastSubmitted();
   std::string error;

@@ -182,9 +182,10 @@ void Viewer::noteInput() {
 
 void Viewer::returnToStartIfIdle() {
   if (!options_.kiosk || !inputSinceStart_) return;
-  // A visitor waiting for the surface they asked for is not idle: the time counts from the
-  // later of their last input and the build's arrival.
-  if (buildAt_ || worker_->busy()) return;
+  // A visitor waiting for a formula they typed is not idle: the time counts from the later of
+  // their last input and the new surface's arrival. (Rebuilds of the same formula, as a
+  // playing parameter asks for them all the time, do not hold it back.)
+  if (buildAt_ || (worker_->busy() && scene_.formula != built_.formula)) return;
   const std::chrono::duration<double> idle =
       std::chrono::steady_clock::now() - std::max(lastInput_, lastBuilt_);
   if (idle.count() < options_.kiosk->idleSeconds) return;
