@@ -29,13 +29,21 @@ inline constexpr int kFirstPictureMinScale = 2, kFirstPictureMaxScale = 8;
 // that adds a term. So the estimate is also the tape's length times the most a picture has
 // cost per pixel and tape instruction (through the same dispatch: the polynomial one or the
 // one with every operation), which fades by kForget with each later picture so that one
-// costly formula does not keep every later picture small.
+// costly formula does not keep every later picture small. That estimate is not stretched
+// far: a tape more than kStretch times as long as the longest measured (through the same
+// dispatch) is drawn at the smallest size. What a longer formula adds is often what makes
+// its picture costlier per instruction too (a surface with more sheets, more of the rays
+// with roots): the quartic x^4+y^4+z^4-(x^2+y^2+z^2) cost 3-4 times as much per pixel and
+// instruction as the prefix x^4+y^4+z before it.
 class FirstPictureCost {
  public:
   static constexpr double kForget = 0.75;
+  static constexpr double kStretch = 1.5;
 
   // The divisor of each side for a width x height picture of a tape of `instructions` steps.
   int scale(int width, int height, int instructions, bool polynomial) const {
+    if (double(instructions) > kStretch * double(longest_[polynomial]))
+      return kFirstPictureMaxScale;
     const double perPixel =
         std::max(lastPerPixel_, perInstruction_[polynomial] * double(std::max(1, instructions)));
     return scaleForBudget(perPixel, width, height, kFirstPictureBudgetMs, kFirstPictureMinScale,
@@ -47,11 +55,13 @@ class FirstPictureCost {
     lastPerPixel_ = ms / pixels;
     double& most = perInstruction_[polynomial];
     most = std::max(lastPerPixel_ / double(std::max(1, instructions)), kForget * most);
+    longest_[polynomial] = std::max(longest_[polynomial], instructions);
   }
 
  private:
   double lastPerPixel_ = 0;
   double perInstruction_[2] = {0, 0};  // [polynomial]: ms per pixel and tape instruction
+  int longest_[2] = {0, 0};            // [polynomial]: the longest tape measured
 };
 
 // A picture while a drag, a wheel or a slider moves it: 30 frames a second, down to a

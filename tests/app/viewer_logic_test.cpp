@@ -266,10 +266,10 @@ TEST(FormulaKeyboard, KeysAppendAndBackspaceRemovesACharacterOrAFunction) {
 }  // namespace
 // A first picture while typing (interact/trace_budget.hpp): sized from the pictures before
 // it, so that it keeps to its budget also where the cost jumps.
-TEST(FirstPictureCost, UnmeasuredIsHalfSizeThenTheBudgetDecides) {
+TEST(FirstPictureCost, UnmeasuredIsTheSmallestSizeThenTheBudgetDecides) {
   interact::FirstPictureCost cost;
-  EXPECT_EQ(cost.scale(800, 600, 10, true), interact::kFirstPictureMinScale);
-  // Within the budget at 400 x 300: the same formula stays at half size.
+  EXPECT_EQ(cost.scale(800, 600, 10, true), interact::kFirstPictureMaxScale);
+  // Within the budget at 400 x 300: the same formula is drawn at half size.
   cost.measured(39, 400.0 * 300, 10, true);
   EXPECT_EQ(cost.scale(800, 600, 10, true), 2);
   // Four times that cost per pixel: a quarter of the pixels.
@@ -285,20 +285,32 @@ TEST(FirstPictureCost, ALongerTapeIsSizedByTheMostATapeInstructionCost) {
   // A 5-instruction tape at the budget, then a picture of nothing that cost almost nothing.
   cost.measured(40, 400.0 * 300, 5, true);
   cost.measured(1, 400.0 * 300, 6, true);
-  // The last picture alone would say half size; a tape of 20 instructions is sized as if
+  // The last picture alone would say half size; a tape of 9 instructions is sized as if
   // each instruction cost what the 5-instruction tape's did (faded once).
   EXPECT_EQ(interact::scaleForBudget(1.0 / (400 * 300), 800, 600, interact::kFirstPictureBudgetMs,
                                      interact::kFirstPictureMinScale,
                                      interact::kFirstPictureMaxScale),
             2);
-  const double perPixel = 0.75 * 40.0 / (400 * 300) / 5 * 20;
-  EXPECT_EQ(cost.scale(800, 600, 20, true),
+  const double perPixel = 0.75 * 40.0 / (400 * 300) / 5 * 9;
+  EXPECT_EQ(cost.scale(800, 600, 9, true),
             interact::scaleForBudget(perPixel, 800, 600, interact::kFirstPictureBudgetMs,
                                      interact::kFirstPictureMinScale,
                                      interact::kFirstPictureMaxScale));
-  EXPECT_GE(cost.scale(800, 600, 20, true), 3);
+  EXPECT_GE(cost.scale(800, 600, 9, true), 3);
   // The dispatch with every operation learns apart: nothing measured there yet.
-  EXPECT_EQ(cost.scale(800, 600, 20, false), 2);
+  EXPECT_EQ(cost.scale(800, 600, 9, false), interact::kFirstPictureMaxScale);
+}
+
+TEST(FirstPictureCost, AFarLongerTapeThanAnyMeasuredIsDrawnSmallest) {
+  interact::FirstPictureCost cost;
+  cost.measured(10, 400.0 * 300, 48, true);  // a quarter of the budget
+  // Up to kStretch times the longest tape measured, the estimate decides...
+  EXPECT_EQ(cost.scale(800, 600, 72, true), 2);
+  // ... beyond, the smallest size: the estimate would be stretched too far.
+  EXPECT_EQ(cost.scale(800, 600, 73, true), interact::kFirstPictureMaxScale);
+  // Once measured, the longer tape is sized by its own cost.
+  cost.measured(10, 100.0 * 75, 83, true);
+  EXPECT_LT(cost.scale(800, 600, 83, true), interact::kFirstPictureMaxScale);
 }
 
 TEST(FirstPictureCost, OneCostlyFormulaFadesAway) {
