@@ -31,10 +31,9 @@ inline constexpr int kFirstPictureMinScale = 2, kFirstPictureMaxScale = 8;
 // one with every operation), which fades by kForget with each later picture so that one
 // costly formula does not keep every later picture small. That estimate is not stretched
 // far: a tape more than kStretch times as long as the longest measured (through the same
-// dispatch) is drawn at the smallest size. What a longer formula adds is often what makes
-// its picture costlier per instruction too (a surface with more sheets, more of the rays
-// with roots): the quartic x^4+y^4+z^4-(x^2+y^2+z^2) cost 3-4 times as much per pixel and
-// instruction as the prefix x^4+y^4+z before it.
+// dispatch) is drawn at the smallest size: what a longer formula adds is often what makes
+// each of its instructions costlier per pixel too (a surface with more sheets, more rays
+// with roots to isolate), which no picture of the shorter tape can show.
 class FirstPictureCost {
  public:
   static constexpr double kForget = 0.75;
