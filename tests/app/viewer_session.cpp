@@ -1,5 +1,7 @@
 #include "viewer_session.hpp"
 
+#include <signal.h>
+
 #include <algorithm>
 #include <chrono>
 #include <thread>
@@ -79,6 +81,10 @@ void ViewerSession::click(int x, int y) {
         std::to_string(y) + " click 1");
   pause(100);
 }
+
+void ViewerSession::freeze() { kill(child_->pid(), SIGSTOP); }
+
+void ViewerSession::thaw() { kill(child_->pid(), SIGCONT); }
 
 void ViewerSession::wheel(int clicks) {
   const int button = clicks > 0 ? 4 : 5;

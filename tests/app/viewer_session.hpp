@@ -30,6 +30,10 @@ class ViewerSession {
   void wheel(int clicks);  // positive: towards the user (zoom in)
   void click(int x, int y);  // left click at window pixels
   void move(int x, int y);   // the pointer to window pixels, no button
+  // Stops the viewer's process and lets it go on: what is sent meanwhile reaches it at once,
+  // as in a frame that took long.
+  void freeze();
+  void thaw();
 
   // Waits until the log holds `marker` after everything seen so far by waits; "" if not.
   std::string waitLog(const std::string& marker, double seconds = 60);

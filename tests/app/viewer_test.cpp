@@ -129,6 +129,21 @@ TEST(Viewer, SeveralSurfacesAreProbedAndMeshedEachOnItsOwn) {
   EXPECT_TRUE(std::filesystem::exists(v.dir() / "zeroset-level7-0001-2.stl")) << v.log();
 }
 
+// A click that takes the focus from the formula box and a key pressed after it, both
+// arriving during one long frame (the viewer stopped meanwhile): the key is the viewer's,
+// as it would be had the frame been quick, not lost to the box the click left.
+TEST(Viewer, AKeyAfterAClickInOneLongFrameIsTakenAfterTheClick) {
+  ViewerSession v("click_then_key", {"x^2 + y^2 - z^2 - 0.3"});
+  START(v);
+  v.key("f");  // the formula box takes the keys
+  v.freeze();
+  v.click(600, 300);  // on the picture: the box lets the keys go
+  v.key("b");
+  v.thaw();
+  ASSERT_FALSE(v.waitLog("border highlight off", 20).empty()) << v.log();
+  EXPECT_EQ(loadSaved(v.save()).formula, "x^2 + y^2 - z^2 - 0.3") << "no key reached the box";
+}
+
 TEST(Viewer, MeshAndPrintKeysWriteTheirFiles) {
   // A typed formula has no file: the mesh goes to the output folder, at the panel's level.
   ViewerSession v("mesh", {"x^2 + y^2 + z^2 - 1"});

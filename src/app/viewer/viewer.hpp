@@ -105,6 +105,8 @@ class Viewer {
   // finger) would reach ImGui as one click, at the second tap's place. Each press and
   // release is handed to ImGui in a frame of its own, where it happened.
   void replayMouseButtons();  // after ImGui's NewFrame of the platform backend
+  void inputAfterClicks();  // held until the clicks before it have reached the panel
+  bool clicksPending() const;
   void onMouseButton(int button, int action);
   void onCursor(double x, double y);
   void onScroll(double dy);
@@ -178,6 +180,15 @@ class Viewer {
     double x, y;
   };
   std::deque<MouseButtonEvent> mouseButtons_;  // replayMouseButtons
+  struct KeyEvent {
+    int key, mods;
+  };
+  // Input that came after a click not yet replayed (inputAfterClicks): the viewer's keys,
+  // and the characters taken back out of ImGui's queue (counted as they arrive, taken at the
+  // frame's start).
+  std::deque<KeyEvent> keysAfterClicks_;
+  std::vector<unsigned> charsAfterClicks_;
+  int charsArrivedAfterClicks_ = 0;
   bool buttonsDown_[3] = {false, false, false};  // as ImGui was last told
   std::chrono::steady_clock::time_point lastWheel_{};
   double msPerPixel_ = 0;  // from the latest trace, to pick the reduced scale

@@ -25,7 +25,14 @@ void Viewer::installCallbacks() {
   glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int mods) {
     self(win)->noteInput();
     if (action == GLFW_PRESS && key >= 0 && key < 512) self(win)->pressedSincePoll_.push_back(key);
-    if (action == GLFW_PRESS || action == GLFW_REPEAT) self(win)->onKey(key, mods);
+    if (action == GLFW_PRESS || action == GLFW_REPEAT) {
+      // A key pressed after a click that has not reached the panel yet (a slow frame held
+      // both) waits for it: the click may take the focus from a text box, which decides
+      // whether the key is the viewer's or the box's.
+      Viewer* v = self(win);
+      if (v->clicksPending()) v->keysAfterClicks_.push_back({key, mods});
+      else v->onKey(key, mods);
+    }
     self(win)->uiFrames_ = 3;
   });
   glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int button, int action, int) {
@@ -48,6 +55,9 @@ void Viewer::installCallbacks() {
   });
   glfwSetCharCallback(w, [](GLFWwindow* win, unsigned) {
     self(win)->noteInput();
+    // ImGui's callback, which this one precedes, queues the character for the panel: one
+    // typed after a pending click is taken back out of that queue (inputAfterClicks).
+    if (self(win)->clicksPending()) ++self(win)->charsArrivedAfterClicks_;
     self(win)->uiFrames_ = 3;
   });
   glfwSetWindowRefreshCallback(w, [](GLFWwindow* win) { self(win)->uiFrames_ = 3; });
@@ -91,6 +101,29 @@ void Viewer::replayMouseButtons() {
   for (int b = 0; b < 3; ++b) io.MouseDown[b] = buttonsDown_[b];
   io.MousePos = ImVec2(float(e.x), float(e.y));
   uiFrames_ = std::max(uiFrames_, 2);  // frames go on until the queue is empty
+}
+
+bool Viewer::clicksPending() const {
+  return !mouseButtons_.empty() || !keysAfterClicks_.empty() || !charsAfterClicks_.empty() ||
+         charsArrivedAfterClicks_ > 0;
+}
+
+void Viewer::inputAfterClicks() {
+  ImGuiIO& io = ImGui::GetIO();
+  const int arrived = std::min(charsArrivedAfterClicks_, io.InputQueueCharacters.Size);
+  for (int i = io.InputQueueCharacters.Size - arrived; i < io.InputQueueCharacters.Size; ++i)
+    charsAfterClicks_.push_back(io.InputQueueCharacters[i]);
+  io.InputQueueCharacters.resize(io.InputQueueCharacters.Size - arrived);
+  charsArrivedAfterClicks_ = 0;
+  // The last click was replayed in the frame before: the panel's focus is up to date.
+  if (!mouseButtons_.empty()) return;
+  while (!keysAfterClicks_.empty()) {
+    const KeyEvent e = keysAfterClicks_.front();
+    keysAfterClicks_.pop_front();
+    onKey(e.key, e.mods);
+  }
+  for (unsigned c : charsAfterClicks_) io.AddInputCharacter(c);
+  charsAfterClicks_.clear();
 }
 
 void Viewer::onKey(int key, int mods) {
@@ -195,6 +228,8 @@ void Viewer::returnToStartIfIdle() {
   std::fill(panel_.playing.begin(), panel_.playing.end(), 0);
   buildAt_.reset();
   mouseButtons_.clear();
+  keysAfterClicks_.clear();
+  charsAfterClicks_.clear();
   std::fill(std::begin(buttonsDown_), std::end(buttonsDown_), false);
   hover_.clear();
   // The exhibit's language for the next visitor.
