@@ -17,8 +17,8 @@ const MAX_DPR = 2;
 
 let core, session, renderer;
 let scale = 1;            // drawing-buffer scale: 1 at rest, reducedScale() while moving
-// The cost per pixel of the latest picture and of the latest first picture (ms): the
-// viewer's time budgets pick the reduced sizes from them (src/interact/trace_budget.hpp).
+// The cost per pixel of the latest picture (ms): the viewer's drag budget picks the reduced
+// size from it (src/interact/trace_budget.hpp); first pictures are sized by the session.
 let msPerPixel = 0;
 let fixedSize = null;     // &size=WxH
 let examples = [];

@@ -24,6 +24,12 @@ void drawWarmUp(RayTracer& tracer, ViewTarget& target, const Scene& scene, int w
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+void drawInterpreterWarmUp(RayTracer& tracer, ViewTarget& target, const Scene& scene,
+                           int windowWidth, int windowHeight) {
+  drawWarmUp(tracer, target, scene, std::max(1, windowWidth / interact::kFirstPictureMinScale),
+             std::max(1, windowHeight / interact::kFirstPictureMinScale));
+}
+
 bool ShaderWarmer::ensureContext() {
   if (context_) return true;
   if (failed_) return false;
@@ -71,9 +77,7 @@ void ShaderWarmer::wantInterpreters(const Scene& scene) {
       TapeInterpreters interpreters;  // its GL objects go before the context
       ViewTarget target;
       const auto draw = [&](RayTracer& t, const Scene& s) {
-        // At a first picture's size in a window of the scene's size (drawWarmUp says why).
-        drawWarmUp(t, target, s, std::max(1, s.width / interact::kFirstPictureMinScale),
-                   std::max(1, s.height / interact::kFirstPictureMinScale));
+        drawInterpreterWarmUp(t, target, s, s.width, s.height);  // a window of the scene's size
       };
       const std::string error = interpreters.warm(sampling, single, draw);
       interpretersWarm_[sampling] = error.empty();

@@ -5,11 +5,11 @@
 // viewer's window: render/view_target.hpp; `bench --typing`: the tracer's offscreen
 // target), so the driver's shader cache holds the very program the front end asks for
 // next, and its compile of it takes milliseconds instead of stopping the picture. When the
-// formula box first gets the focus it warms the tape interpreters (pipeline/load_surface.hpp) the same way, on a thread
-// and context of their own (seconds of JIT on llvmpipe that no build waits for, paid only by
-// a session that edits a formula); the window then draws every new formula's first picture
-// with them. Without a headless context (no EGL) it does nothing and the window compiles as
-// before.
+// formula box first gets the focus it warms the tape interpreters (pipeline/load_surface.hpp)
+// the same way, on a thread and context of their own (seconds of JIT on llvmpipe that no
+// build waits for, paid only by a session that edits a formula); the window then draws every
+// new formula's first picture with them. Without a headless context (no EGL) it does nothing
+// and the window compiles as before.
 #include <array>
 #include <atomic>
 #include <memory>
@@ -64,5 +64,9 @@ class ShaderWarmer {
 // interpreters at a first picture's size.
 void drawWarmUp(RayTracer& tracer, ViewTarget& target, const Scene& scene, int width,
                 int height);
+// An interpreter's warm-up (TapeInterpreters' Draw) for the first pictures of a window of
+// windowWidth x windowHeight: drawWarmUp at the largest size a first picture takes there.
+void drawInterpreterWarmUp(RayTracer& tracer, ViewTarget& target, const Scene& scene,
+                           int windowWidth, int windowHeight);
 
 }  // namespace zs::app

@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "interact/key_bindings.hpp"
-#include "pipeline/pipeline.hpp"
 #include "interact/trace_budget.hpp"
+#include "pipeline/pipeline.hpp"
 #include "pipeline/quick_surface.hpp"
 #include "probe/probe.hpp"
 #include "render/frame_uniforms.hpp"

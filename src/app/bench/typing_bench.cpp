@@ -63,10 +63,7 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
   Scene single = base;
   single.render.samples = 1;  // first pictures draw without supersampling
   const auto draw = [&](RayTracer& tracer, const Scene& scene) {
-    // As the viewer warms them: at the size of a first picture.
-    app::drawWarmUp(tracer, warmTarget, scene,
-                    std::max(1, out.width / interact::kFirstPictureMinScale),
-                    std::max(1, out.height / interact::kFirstPictureMinScale));
+    app::drawInterpreterWarmUp(tracer, warmTarget, scene, out.width, out.height);  // as the viewer
   };
   // Both parts of the viewer's warm-up (the second runs in its background).
   std::string warmError = interpreters.warm(sampling, single, draw);

@@ -8,7 +8,6 @@
 #include <chrono>
 
 #include "app/shader_warmer.hpp"
-#include "interact/trace_budget.hpp"
 #include "pipeline/load_surface.hpp"
 
 namespace zs::app {
@@ -60,8 +59,7 @@ void SurfaceView::warmInterpreters(const Scene& scene, int width, int height) {
   single.render.samples = 1;
   FirstPicturesScope scope(*this);
   first_->interpreters.warm(sampling, single, [&](RayTracer& t, const Scene& s) {
-    drawWarmUp(t, first_->warmTarget, s, std::max(1, width / interact::kFirstPictureMinScale),
-               std::max(1, height / interact::kFirstPictureMinScale));
+    drawInterpreterWarmUp(t, first_->warmTarget, s, width, height);
   });
 }
 

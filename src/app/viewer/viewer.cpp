@@ -145,7 +145,7 @@ void Viewer::traceIfNeeded(int width, int height) {
   stats_.width = width;
   stats_.height = height;
   const bool moving = interacting();
-  // A first picture (tape interpreter) is drawn at half resolution and not refined: the
+  // A first picture (tape interpreter) is drawn at reduced resolution and not refined: the
   // formula's own shader follows and draws the full one.
   const bool quick = view_->showingQuick();
   int scale = 0;
@@ -159,14 +159,10 @@ void Viewer::traceIfNeeded(int width, int height) {
   RenderSettings settings = scene_.render;
   if (scale > 1) settings.samples = 1;  // a moving preview needs no supersampling
   const double ms = view_->trace(settings, scene_.domain, width, height, scale);
-  const double samples = double(settings.samples) * settings.samples;
-  const double perPixel = ms / (double(width / scale) * double(height / scale) * samples);
-  if (quick) {
-    quickCost_.measured(ms / samples, double(width / scale) * double(height / scale),
-                        quickInstructions_, quickPolynomial_);
-  } else {
-    msPerPixel_ = perPixel;
-  }
+  const double rays =
+      double(width / scale) * double(height / scale) * settings.samples * settings.samples;
+  if (quick) quickCost_.measured(ms, rays, quickInstructions_, quickPolynomial_);
+  else msPerPixel_ = ms / rays;
   stats_.traceMs = ms;
   stats_.traceScale = scale;
   stats_.curvatureRange = view_->curvatureRange();
