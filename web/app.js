@@ -25,6 +25,9 @@ let examples = [];
 let currentExample = -1;
 let pending = null;       // the draw in flight
 let redrawQueued = false;
+// Formula edits typed, and how many of them the prepared scene has seen: a picture is the
+// current state's only when they agree (a draw begun before the last keystroke is not).
+let formulaEdits = 0, formulaEditsBuilt = 0;
 let firstPictureMs = null;
 let kiosk = null;         // kiosk=1: the exhibit's policy (kiosk.js)
 let startScene = null;    // kiosk=1: the start screen's scene, as .surf text
@@ -168,8 +171,8 @@ function redraw() {
     statusLine.textContent = `${tr(session.method())} · ${canvas.width}×${canvas.height} · ${ms.toFixed(1)} ms`;
     if (full) {
       if (firstPictureMs === null) firstPictureMs = performance.now();
-      if (errorBox.hidden) setState('ready');
-      else root.dataset.zeroset = 'error';
+      if (!errorBox.hidden) root.dataset.zeroset = 'error';
+      else if (formulaEditsBuilt === formulaEdits) setState('ready');
     }
     return ms;
   }).catch((e) => {
@@ -212,6 +215,7 @@ function buildTypedFormula() {
   clearTimeout(typingTimer);
   if (!session) return;
   setState('busy');
+  formulaEditsBuilt = formulaEdits;
   const error = (kiosk && kiosk.refusal(formulaInput.value)) || session.setFormula(formulaInput.value);
   if (error) { showError(error); return; }
   scale = 1;  // after a first picture at the reduced size
@@ -219,13 +223,18 @@ function buildTypedFormula() {
 }
 function formulaEdited() {
   clearTimeout(typingTimer);
+  ++formulaEdits;
   const refusal = kiosk && session ? kiosk.refusal(formulaInput.value) : '';
   if (refusal) {
+    formulaEditsBuilt = formulaEdits;  // the state is the refusal
     showError(refusal);
     if (scale !== 1 && session.prepared()) { scale = 1; redraw(); }  // not left at a first picture's size
     return;
   }
-  if (session) showFirstPicture();
+  if (session) {
+    setState('busy');  // the picture on screen is not the typed formula's yet
+    showFirstPicture();
+  }
   typingTimer = setTimeout(buildTypedFormula, 120);
 }
 formulaInput.addEventListener('focus', requestInterpreters);
