@@ -37,6 +37,16 @@
 // runs its body once more, masked, after its last iteration).
 
 
+// What rounding can have done to any coefficient of any restriction of b0 (4.): the Taylor
+// arithmetic and the conversion in zs_Wide (a priori, from the absolute-value bound), the
+// one rounding to zs_Real, and the de Casteljau steps (convex combinations: a few roundings
+// of the largest coefficient each). A volume's windows use it too (raytrace_volume.frag.glsl).
+zs_Real rtNoise(zs_Bound bound, zs_Real b0[zs_N]) {
+  return max(zs_Real(zs_ROUNDINGS * zs_WIDE_EPS * bound) +
+                 zs_EPS * zs_Real(8 * zs_DEGREE + 2) * zs_maxAbs(b0),
+             zs_NOISE_FLOOR);
+}
+
 const int RT_MAX_STEPS = 1000;  // safety bound on isolation + refinement steps per segment
 const int RT_MAX_WINDOWS = 48;  // safety bound on expansions per segment (5.)
 
@@ -54,13 +64,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     zs_Bound bound;
     bool defined = zs_FPolyOn(o, d, wa, wb, wide, bound);
     zs_toBernstein(wide, b0, c);
-    // What rounding can have done to any coefficient of any restriction (4.): the Taylor
-    // arithmetic and the conversion in zs_Wide (a priori, from the absolute-value bound), the
-    // one rounding to zs_Real, and the de Casteljau steps (convex combinations: a few
-    // roundings of the largest coefficient each).
-    zs_Real noise = max(zs_Real(zs_ROUNDINGS * zs_WIDE_EPS * bound) +
-                            zs_EPS * zs_Real(8 * zs_DEGREE + 2) * zs_maxAbs(b0),
-                        zs_NOISE_FLOOR);
+    zs_Real noise = rtNoise(bound, b0);
     float tolerance = rt.tangentTolerance / len;  // in units of s
     bool mayZoom = windows + 1 < RT_MAX_WINDOWS && len > 4.0 * rt.tangentTolerance;
     bool zoom = false;

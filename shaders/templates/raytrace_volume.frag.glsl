@@ -5,9 +5,10 @@
 // v = zs_F(p) has the color of the diverging map of v / range and the extinction
 // density * exp(-(v / falloff)^2). `steps` samples, one at the middle of each step (the
 // midpoint rule), composited front to back; docs/renderer.md, "Volume rendering", has the
-// step error. The last piece of every program (it follows the interval method's, whose
-// zs_FAffine and rtHalfWidth it uses); compiled only where RT_VOLUME is defined
-// (ProgramVariant::volume).
+// step error. The last piece of every program: it skips stretches far from the level with
+// what the interval method's pieces (zs_FAffine, rtHalfWidth) or the Bernstein method's
+// (zs_FPolyOn, zs_clearEnds, rtNoise) define before it; compiled only where RT_VOLUME is
+// defined (ProgramVariant::volume).
 
 #ifdef RT_VOLUME
 // Blue for -1, white for 0, red for +1 (clamped beyond): the curvature colorings' map.
@@ -25,14 +26,22 @@ const float RT_VOLUME_CLEAR = 4.0;
 // RT_VOLUME_PART steps in parts that long, each with its own window. Every pixel walks the
 // same runs and parts: on llvmpipe neighbouring pixels run in lock step, and a walk whose
 // runs grow and shrink per pixel (tried) costs what its slowest pixel costs.
+// Parts are shorter where the window comes from the ray polynomial's control points, whose
+// expansion costs less than an affine form and whose windows are tighter.
+#if defined(zs_Real) && !defined(RT_HAS_BEAM)
+const int RT_VOLUME_RUN = 256, RT_VOLUME_PART = 32;
+#else
 const int RT_VOLUME_RUN = 256, RT_VOLUME_PART = 64;
+#endif
 
 // The steps [first, last) of the n steps of length h from ta whose midpoints may lie in the
-// band |F| < band: by the interval method's affine form over the n steps (the pipeline draws
-// a volume with that program, RT_HAS_BEAM), where |c + s tau| < r + band; first = last = n
-// where none. Other programs sample every step.
-ivec2 rtVolumeWindow(vec3 o, vec3 d, float ta, float h, int n, float band) {
+// band |F| < band; first = last = n where none. The pipeline draws a volume with the
+// interval method's program (RT_HAS_BEAM) or, for a polynomial, the Bernstein method's;
+// the sampling program, which tests use as the reference, samples every step.
 #ifdef RT_HAS_BEAM
+// The interval method's program: by the affine form over the n steps, where
+// |c + s tau| < r + band.
+ivec2 rtVolumeWindow(vec3 o, vec3 d, float ta, float h, int n, float band) {
   float tb = ta + float(n) * h, tm = 0.5 * ta + 0.5 * tb, hw = rtHalfWidth(ta, tb, tm);
   vec3 F;
   vec2 D;
@@ -47,10 +56,32 @@ ivec2 rtVolumeWindow(vec3 o, vec3 d, float ta, float h, int n, float band) {
   vec2 tau = (vec2(-reach, reach) - F.x) / F.y;
   vec2 k = (tm + hw * vec2(min(tau.x, tau.y), max(tau.x, tau.y)) - ta) / h - 0.5;
   return ivec2(clamp(floor(k.x - 0.0625), 0.0, float(n)), clamp(floor(k.y + 0.0625) + 1.0, 0.0, float(n)));
-#else
-  return ivec2(0, n);
-#endif
 }
+#elif defined(zs_Real)
+// The Bernstein method's program (a polynomial F; zs_Real comes with its ray polynomial
+// block): f on the n steps, expanded about their middle, in the Bernstein basis. Where the
+// control points stay beyond band + noise there is nothing; else the stretch at each end
+// that the supporting line of the control points there keeps beyond the band is skipped
+// (zs_clearEnds), with 1/16 of a step of slack for the rounding of t <-> k.
+ivec2 rtVolumeWindow(vec3 o, vec3 d, float ta, float h, int n, float band) {
+  zs_Wide wide[zs_N];
+  zs_Bound bound;
+  zs_Real b[zs_N], c[zs_N];
+  if (!zs_FPolyOn(o, d, ta, ta + float(n) * h, wide, bound)) return ivec2(0, n);
+  zs_toBernstein(wide, b, c);
+  zs_Real lim = zs_Real(band) + rtNoise(bound, b);
+  zs_Real4 k = zs_classify(b);
+  if (!(k.x < lim && k.y > -lim)) return ivec2(n);  // also NaN (overflow)
+  vec2 clear = zs_clearEnds(b, lim);
+  // Step j's midpoint lies at (j + 1/2) / n of the stretch.
+  float first = ceil(clear.x * float(n) - 0.5 - 0.0625);
+  float last = floor((1.0 - clear.y) * float(n) - 0.5 + 0.0625) + 1.0;
+  return first < last ? ivec2(clamp(first, 0.0, float(n)), clamp(last, 0.0, float(n))) : ivec2(n);
+}
+#else
+// The sampling program: every step.
+ivec2 rtVolumeWindow(vec3 o, vec3 d, float ta, float h, int n, float band) { return ivec2(0, n); }
+#endif
 
 // Composites the samples of steps [from, to) (from < to) of length h from t0 over color.
 void rtVolumeSamples(vec3 o, vec3 d, float t0, float h, int from, int to, inout vec3 color,

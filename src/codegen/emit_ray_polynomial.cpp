@@ -1,6 +1,7 @@
 #include "codegen/emit_ray_polynomial.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
@@ -22,6 +23,17 @@ std::string doubleLiteral(double v) {
   std::string t = text;
   if (t.find_first_of(".e") == std::string::npos) t.insert(t.size() - 2, ".0");
   return v < 0 ? "(" + t + ")" : t;
+}
+
+// The float at or above v, as a literal: a factor that may only overestimate.
+std::string roundedUpLiteral(double v) {
+  float f = float(v);
+  if (double(f) < v) f = std::nextafter(f, INFINITY);
+  char text[40];
+  std::snprintf(text, sizeof text, "%.9g", double(f));
+  std::string t = text;
+  if (t.find_first_of(".e") == std::string::npos) t += ".0";
+  return t;
 }
 
 // The expansion's arithmetic as GLSL text: the operators of double (fp64), or calls to the
@@ -409,6 +421,27 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision, bool fp64) {
          idx("b", i) + "; bj = " + idx("b", i + 1) + "; i = " + std::to_string(i) + ".0; }\n";
   }
   s += "  return clamp((i + (bi != bj ? float(bi / (bi - bj)) : 0.0)) / float(zs_DEGREE), 0.0, 1.0);\n}\n";
+
+  // How much of [0, 1] at each end is proven to keep f beyond a band |f| < band, given
+  // lim = band + noise (every exact coefficient within noise of b_i): by the supporting line
+  // of the control points at that end. At the start, for b_0 > lim, the control points lie
+  // on or above b_0 - m t with m = max_i (b_0 - b_i) d / i, so f > band for t < (b_0 - lim)
+  // / m (mirrored for b_0 < -lim, and at the end). 0 at an end that may lie in the band;
+  // shrunk by 1e-5 for the rounding of its own arithmetic (a volume's skipped steps,
+  // raytrace_volume.frag.glsl).
+  s += "\nvec2 zs_clearEnds(" + arrayParam("b") + ", zs_Real lim) {\n";
+  s += "  zs_Real s0 = " + idx("b", 0) + " > 0.0 ? 1.0 : -1.0, h0 = s0 * " + idx("b", 0) +
+       " - lim, m0 = 0.0;\n";
+  s += "  zs_Real s1 = " + idx("b", d) + " > 0.0 ? 1.0 : -1.0, h1 = s1 * " + idx("b", d) +
+       " - lim, m1 = 0.0;\n";
+  const auto slope = [&](const std::string& sign, int from, int i, int steps) {
+    const std::string diff = sign + " * (" + idx("b", from) + " - " + idx("b", i) + ")";
+    return steps == d ? diff : diff + " * " + roundedUpLiteral(double(d) / double(steps));
+  };
+  for (int i = 1; i <= d; ++i) s += "  m0 = max(m0, " + slope("s0", 0, i, i) + ");\n";
+  for (int i = 0; i < d; ++i) s += "  m1 = max(m1, " + slope("s1", d, i, d - i) + ");\n";
+  s += "  return vec2(h0 > 0.0 ? (m0 > h0 ? float(h0 / m0) * 0.99999 : 1.0) : 0.0,\n"
+       "              h1 > 0.0 ? (m1 > h1 ? float(h1 / m1) * 0.99999 : 1.0) : 0.0);\n}\n";
 
   // Sign changes count b_i > 0 against b_i <= 0, so a zero coefficient never hides a root:
   // the hull test (min, max) decides emptiness, the counts only decide when to stop.

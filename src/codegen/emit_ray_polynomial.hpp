@@ -19,6 +19,7 @@
 //   float zs_firstCrossing(zs_Real b[zs_N]);  // first zero of the control polygon, in [0, 1]
 //   zs_Real zs_maxAbs(zs_Real b[zs_N]);       // largest |coefficient|
 //   zs_Real4 zs_classify(zs_Real b[zs_N]);  // (min, max, sign changes of b, of its derivative)
+//   vec2 zs_clearEnds(zs_Real b[zs_N], zs_Real lim);  // fractions at each end where |f| > band
 //
 // zs_FPoly is truncated Taylor arithmetic: every node carries the coefficients of its own
 // polynomial in s, up to its structural degree (expr/degree.hpp) and at most D, so products

@@ -168,7 +168,7 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
     appendPiece(out, "shaders/templates/" + std::string(kFirstRootsTemplate), string++, firstRoots);
   if (interval)
     appendPiece(out, "shaders/templates/" + std::string(kBeamTemplate), string++, shaderTemplate(kBeamTemplate));
-  // Last: a volume skips stretches with the interval method's zs_FAffine and rtHalfWidth.
+  // Last: a volume skips stretches with what the interval or Bernstein pieces define.
   appendPiece(out, "shaders/templates/" + std::string(kVolumeTemplate), string,
               shaderTemplate(kVolumeTemplate));
   return out;

@@ -155,10 +155,13 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
       options.bernsteinAboveLimit && scene.render.tracing.method == TracingMethod::Bernstein;
   s.method = resolveMethod(scene.render.tracing.method, s.formula, s.methodWarning,
                            anyDegree ? std::numeric_limits<int>::max() : maxBernsteinDegree(options));
-  // A volume finds no roots; it skips the stretches of its rays where the interval method's
-  // affine form keeps F far from the level (raytrace_volume.frag.glsl), so it is that program.
+  // A volume finds no roots; it skips the stretches of its rays where F is proven far from
+  // the level (raytrace_volume.frag.glsl): by the control points of the ray polynomial for a
+  // polynomial within the Bernstein method's degree limit, else by the interval method's
+  // affine form. So it is one of those programs, whatever tracing.method says.
   if (scene.render.mode == RenderMode::Volume) {
-    s.method = TracingMethod::Interval;
+    std::string unused;
+    s.method = resolveMethod(TracingMethod::Auto, s.formula, unused, maxBernsteinDegree(options));
     s.methodWarning.clear();
   }
   s.hierarchy = tracingHierarchy(s.formula, s.params, s.octree, s.method);

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <thread>
+#include <vector>
 
 #include "app/bench/thesis_data.hpp"
 #include "render/ray_tracer.hpp"
@@ -238,11 +239,15 @@ InputBenchResults runInputBench(const Scene& input, const BenchOptions& options)
   if (!context) return results;
   RayTracer tracer;
   payDriverStartUp(tracer, options);
-  // Every method that can trace the input, side by side (bernstein only for polynomials).
-  for (TracingMethod method :
-       {TracingMethod::Sampling, TracingMethod::Bernstein, TracingMethod::Interval}) {
-    // A volume is drawn by one program whatever the method (pipeline.cpp): one row.
-    if (input.render.mode == RenderMode::Volume && method != TracingMethod::Interval) continue;
+  // Every method that can trace the input, side by side (bernstein only for polynomials). A
+  // volume is drawn by the one program the pipeline picks whatever the method: one row, named
+  // after that program's method.
+  const bool volume = input.render.mode == RenderMode::Volume;
+  const std::vector<TracingMethod> methods =
+      volume ? std::vector<TracingMethod>{TracingMethod::Auto}
+             : std::vector<TracingMethod>{TracingMethod::Sampling, TracingMethod::Bernstein,
+                                          TracingMethod::Interval};
+  for (TracingMethod method : methods) {
     MethodResult r;
     r.method = method;
     Scene scene = input;
@@ -252,9 +257,10 @@ InputBenchResults runInputBench(const Scene& input, const BenchOptions& options)
     std::fprintf(stderr, "bench: %s, first frame...\n", tracingMethodName(method));
     std::optional<PreparedSurface> prepared;
     r.first = measureFirstFrame(0, scene, tracer, prepared);
+    if (volume && prepared) r.method = prepared->method;
     if (!r.first.error.empty()) {
       r.error = r.first.error;
-    } else if (prepared->method != method) {
+    } else if (prepared->method != r.method) {
       r.skipped = prepared->methodWarning;  // e.g. not a polynomial: no bernstein row
       while (!r.skipped.empty() && r.skipped.back() == '\n') r.skipped.pop_back();
     } else {
