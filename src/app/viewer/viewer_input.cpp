@@ -96,6 +96,10 @@ void Viewer::replayMouseButtons() {
   if (mouseButtons_.empty()) return;
   const MouseButtonEvent e = mouseButtons_.front();
   mouseButtons_.pop_front();
+  // A kiosk's idle time counts from when the click acts, not from when it arrived: in slow
+  // frames a queue of clicks (taps on the formula keyboard) can take longer to act than the
+  // idle time.
+  lastInput_ = std::chrono::steady_clock::now();
   buttonsDown_[e.button] = e.pressed;
   ImGuiIO& io = ImGui::GetIO();
   for (int b = 0; b < 3; ++b) io.MouseDown[b] = buttonsDown_[b];
@@ -215,10 +219,11 @@ void Viewer::noteInput() {
 
 void Viewer::returnToStartIfIdle() {
   if (!options_.kiosk || !inputSinceStart_) return;
-  // A visitor waiting for a formula they typed is not idle: the time counts from the later of
-  // their last input and the new surface's arrival. (Rebuilds of the same formula, as a
+  // A visitor whose input has not all acted yet, or who waits for a formula they typed, is not
+  // idle: the time counts from the later of their last input and the new surface's arrival. (Rebuilds of the same formula, as a
   // playing parameter asks for them all the time, do not hold it back.)
-  if (buildAt_ || (worker_->busy() && scene_.formula != built_.formula)) return;
+  if (clicksPending() || buildAt_ || (worker_->busy() && scene_.formula != built_.formula))
+    return;
   const std::chrono::duration<double> idle =
       std::chrono::steady_clock::now() - std::max(lastInput_, lastBuilt_);
   if (idle.count() < options_.kiosk->idleSeconds) return;
