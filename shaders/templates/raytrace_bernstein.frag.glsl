@@ -41,9 +41,11 @@
 // arithmetic and the conversion in zs_Wide (a priori, from the absolute-value bound), the
 // one rounding to zs_Real, and the de Casteljau steps (convex combinations: a few roundings
 // of the largest coefficient each). A volume's windows use it too (raytrace_volume.frag.glsl).
-zs_Real rtNoise(zs_Bound bound, zs_Real b0[zs_N]) {
+// maxAbs: zs_maxAbs(b0). (Not the array itself: an array parameter made Mesa's compiler
+// slow the whole isolation loop down.)
+zs_Real rtNoise(zs_Bound bound, zs_Real maxAbs) {
   return max(zs_Real(zs_ROUNDINGS * zs_WIDE_EPS * bound) +
-                 zs_EPS * zs_Real(8 * zs_DEGREE + 2) * zs_maxAbs(b0),
+                 zs_EPS * zs_Real(8 * zs_DEGREE + 2) * maxAbs,
              zs_NOISE_FLOOR);
 }
 
@@ -64,7 +66,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
     zs_Bound bound;
     bool defined = zs_FPolyOn(o, d, wa, wb, wide, bound);
     zs_toBernstein(wide, b0, c);
-    zs_Real noise = rtNoise(bound, b0);
+    zs_Real noise = rtNoise(bound, zs_maxAbs(b0));
     float tolerance = rt.tangentTolerance / len;  // in units of s
     bool mayZoom = windows + 1 < RT_MAX_WINDOWS && len > 4.0 * rt.tangentTolerance;
     bool zoom = false;

@@ -69,7 +69,7 @@ ivec2 rtVolumeWindow(vec3 o, vec3 d, float ta, float h, int n, float band) {
   zs_Real b[zs_N], c[zs_N];
   if (!zs_FPolyOn(o, d, ta, ta + float(n) * h, wide, bound)) return ivec2(0, n);
   zs_toBernstein(wide, b, c);
-  zs_Real lim = zs_Real(band) + rtNoise(bound, b);
+  zs_Real lim = zs_Real(band) + rtNoise(bound, zs_maxAbs(b));
   zs_Real4 k = zs_classify(b);
   if (!(k.x < lim && k.y > -lim)) return ivec2(n);  // also NaN (overflow)
   vec2 clear = zs_clearEnds(b, lim);
