@@ -41,8 +41,7 @@
 // arithmetic and the conversion in zs_Wide (a priori, from the absolute-value bound), the
 // one rounding to zs_Real, and the de Casteljau steps (convex combinations: a few roundings
 // of the largest coefficient each). A volume's windows use it too (raytrace_volume.frag.glsl).
-// maxAbs: zs_maxAbs(b0). (Not the array itself: an array parameter made Mesa's compiler
-// slow the whole isolation loop down.)
+// maxAbs: zs_maxAbs(b0).
 zs_Real rtNoise(zs_Bound bound, zs_Real maxAbs) {
   return max(zs_Real(zs_ROUNDINGS * zs_WIDE_EPS * bound) +
                  zs_EPS * zs_Real(8 * zs_DEGREE + 2) * maxAbs,
