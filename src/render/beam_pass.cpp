@@ -29,6 +29,16 @@ struct SavedBindings {
     glUseProgram(GLuint(program));
   }
 };
+
+// The size of a texture that holds n texels in a row and has no power of two for its size:
+// llvmpipe compiles a shader anew for each combination of "is a power of two" of the sizes
+// of the textures it reads (its sampler key), so a picture whose tiles came to 8 or 16 across
+// recompiled the whole ray tracer (a second or more). The texels past n are never read.
+int notPowerOfTwo(int n) {
+  const auto power = [](int k) { return k > 0 && (k & (k - 1)) == 0; };
+  while (power(n)) ++n;
+  return n;
+}
 }  // namespace
 
 BeamPass::~BeamPass() {
@@ -48,7 +58,7 @@ bool BeamPass::draw(unsigned beam, const FrameSetup& setup, int width, int heigh
   const int w = (width + kBeamTile - 1) / kBeamTile, h = (height + kBeamTile - 1) / kBeamTile;
   if (!fbo_ || w != tilesX_ || h != tilesY_) {
     release();
-    texture_ = newTexture2D(GL_RG32F, GL_RG, GL_FLOAT, w, h);
+    texture_ = newTexture2D(GL_RG32F, GL_RG, GL_FLOAT, notPowerOfTwo(w), notPowerOfTwo(h));
     glGenFramebuffers(1, &fbo_);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_, 0);

@@ -10,6 +10,7 @@
 // render hit the reference does not have, or one nearer than the reference's, is right where
 // the distance estimate |F| / |grad F| there is below the pixel footprint: the method draws
 // what it cannot separate from the surface at that size (docs/renderer.md).
+#include <glad/gl.h>
 #include <gtest/gtest.h>
 
 #include <array>
@@ -229,6 +230,34 @@ TEST(IntervalMethod, TileSkippingKeepsThePicture) {
     EXPECT_EQ(all.color.rgba, skipped.color.rgba);
     for (std::size_t p = 0; p < all.depth.values.size(); ++p)
       EXPECT_EQ(all.depth.values[p], skipped.depth.values[p]) << "pixel " << p;
+  }
+}
+
+// llvmpipe compiles a shader anew for each pattern of "this texture's sides are powers of
+// two": the beam's texture (one texel per tile) has no side a power of two, so that pictures
+// whose tiles come to 8 or 16 across do not recompile the ray tracer (a second and more).
+TEST(IntervalMethod, TheBeamsTextureHasNoSideAPowerOfTwo) {
+  std::string error;
+  ASSERT_NE(test::context(Backend::Egl, error), nullptr) << error;
+  auto tracer = test::makeTracer({"x^2 + y^2 + z^2 - 1 + 0.1*sin(5*x)", cube(1.5), 1}, error);
+  ASSERT_NE(tracer, nullptr) << error;
+  const RenderSettings s = test::testSettings({0.6, 0.9, 3.2});
+  const auto power = [](int k) { return k > 0 && (k & (k - 1)) == 0; };
+  // Tiles of 8 pixels: 8 x 6, 16 x 16, 1 x 1 and 13 x 2 tiles.
+  for (const auto [width, height] : {std::pair{64, 48}, {128, 128}, {5, 3}, {100, 9}}) {
+    const Frame f = tracer->render(s, cube(1.5), width, height);
+    ASSERT_EQ(f.error, "");
+    GLint beam = 0, w = 0, h = 0;
+    glActiveTexture(GL_TEXTURE1);  // where the frame's shader reads the beam (rtBeam)
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &beam);
+    ASSERT_NE(beam, 0) << width << " x " << height;
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
+    glActiveTexture(GL_TEXTURE0);
+    EXPECT_FALSE(power(w)) << width << " x " << height << ": " << w;
+    EXPECT_FALSE(power(h)) << width << " x " << height << ": " << h;
+    EXPECT_GE(w, (width + 7) / 8);
+    EXPECT_GE(h, (height + 7) / 8);
   }
 }
 
