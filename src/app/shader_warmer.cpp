@@ -3,6 +3,9 @@
 #include <glad/gl.h>
 
 #include <algorithm>
+#include <functional>
+#include <mutex>
+#include <string>
 
 #include "interact/trace_budget.hpp"
 
@@ -46,11 +49,53 @@ bool ShaderWarmer::ensureContext() {
 
 void ShaderWarmer::warm(const Scene& scene, const PreparedSurface& surface) {
   if (!ensureContext()) return;
+  const std::size_t program = std::hash<std::string>{}(surface.fragmentShader);
+  loaded_ = 0;
   if (!loadSurface(*tracer_, surface).empty()) return;
+  loaded_ = program;
+  // A program whose passes were warmed before (a new parameter value, octree level) is drawn
+  // with them at once; a new one without them, which the front end then does too until
+  // warmPasses: its beam and tile mask are programs of their own, whose compile would hold up
+  // the first picture.
+  bool passes = true;
+  if (tracer_->hasBeamPass()) {
+    std::lock_guard lock(mutex_);
+    if (std::find(warm_.begin(), warm_.end(), program) == warm_.end() &&
+        std::find(deferred_.begin(), deferred_.end(), program) == deferred_.end()) {
+      deferred_.push_back(program);
+      if (deferred_.size() > kRemembered) deferred_.erase(deferred_.begin());
+    }
+    passes = std::find(deferred_.begin(), deferred_.end(), program) == deferred_.end();
+  }
+  tracer_->setBeamPass(passes);
   // From the scene's eye at a quarter of its size: a picture like the front end's next full
   // one, so that the variant llvmpipe compiles is the one that picture needs (drawWarmUp
   // says why), for a sixteenth of its pixels.
-  const int width = std::max(1, scene.width / 4), height = std::max(1, scene.height / 4);
+  draw(scene, std::max(1, scene.width / 4), std::max(1, scene.height / 4));
+}
+
+void ShaderWarmer::warmPasses(const Scene& scene) {
+  if (!context_ || !loaded_ || passesWarm(loaded_)) return;
+  // The picture itself, at its full size: whether the frame skips its clear tiles with a
+  // stencil test (another variant of the frame's program) depends on it.
+  tracer_->setBeamPass(true);
+  draw(scene, std::max(1, scene.width), std::max(1, scene.height));
+  std::lock_guard lock(mutex_);
+  deferred_.erase(std::remove(deferred_.begin(), deferred_.end(), loaded_), deferred_.end());
+  warm_.push_back(loaded_);
+  if (warm_.size() > kRemembered) warm_.erase(warm_.begin());
+}
+
+bool ShaderWarmer::passesWarm(const std::string& fragmentShader) const {
+  return passesWarm(std::hash<std::string>{}(fragmentShader));
+}
+
+bool ShaderWarmer::passesWarm(std::size_t program) const {
+  std::lock_guard lock(mutex_);
+  return std::find(deferred_.begin(), deferred_.end(), program) == deferred_.end();
+}
+
+void ShaderWarmer::draw(const Scene& scene, int width, int height) {
   if (kind_ == Target::Window) {
     drawWarmUp(*tracer_, *target_, scene, width, height);
   } else {

@@ -13,7 +13,10 @@
 #include <array>
 #include <atomic>
 #include <memory>
+#include <mutex>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "pipeline/load_surface.hpp"
 #include "render/gl_context.hpp"
@@ -32,10 +35,19 @@ class ShaderWarmer {
   ShaderWarmer(const ShaderWarmer&) = delete;
   ShaderWarmer& operator=(const ShaderWarmer&) = delete;
 
-  // On the surface worker's thread: a new surface's program; the release of every GL object
-  // and the context as the worker ends.
+  // On the surface worker's thread: a new surface's program (the frame's own, without the
+  // beam pass and tile mask where they are new); the release of every GL object and the
+  // context as the worker ends.
   void warm(const Scene& scene, const PreparedSurface& surface);
   void stop();
+  // On the surface worker's thread, later (SurfaceWorker::Later): the passes the last warm
+  // left out, drawn at the scene's full size.
+  void warmPasses(const Scene& scene);
+  // Whether the front end may draw the program of `fragmentShader` with its beam pass and
+  // tile mask (any thread): false only from a warm that left them out to its warmPasses.
+  // Until then their compile would stop the front end's picture, which is the same without
+  // them (RayTracer::setBeamPass), only slower to draw.
+  bool passesWarm(const std::string& fragmentShader) const;
 
   // Whether the interpreters for this kind of method have been warmed (any thread).
   bool interpretersWarm(bool sampling) const { return interpretersWarm_[sampling].load(); }
@@ -44,7 +56,11 @@ class ShaderWarmer {
   void wantInterpreters(const Scene& scene);
 
  private:
+  static constexpr std::size_t kRemembered = 16;  // programs whose passes are warm
+
   bool ensureContext();
+  bool passesWarm(std::size_t program) const;
+  void draw(const Scene& scene, int width, int height);
 
   Target kind_;
   Backend backend_;
@@ -54,6 +70,12 @@ class ShaderWarmer {
   std::unique_ptr<ViewTarget> target_;
   std::thread interpretersThread_;
   std::array<std::atomic<bool>, 2> interpretersWarm_{};
+  // Programs by the hash of their fragment shader's text: the one loaded last (0: none),
+  // those whose passes wait for warmPasses, and those whose passes are warm (the last
+  // kRemembered of each).
+  std::size_t loaded_ = 0;
+  mutable std::mutex mutex_;
+  std::vector<std::size_t> deferred_, warm_;
 };
 
 // The window's variant of a picture in a ViewTarget of width x height pixels: what the

@@ -6,10 +6,11 @@
 namespace zs::app {
 
 SurfaceWorker::SurfaceWorker(std::function<void()> wake, WarmUp warmUp,
-                             std::function<void()> stop)
+                             std::function<void()> stop, Later later)
     : wake_(std::move(wake)),
       warmUp_(std::move(warmUp)),
       stopHook_(std::move(stop)),
+      later_(std::move(later)),
       thread_([this] { run(); }) {}
 
 SurfaceWorker::~SurfaceWorker() {
@@ -71,12 +72,19 @@ void SurfaceWorker::run() {
     }
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const bool later = later_ && std::holds_alternative<PreparedSurface>(surface);
+    const Scene built = later ? scene : Scene{};
     lock.lock();
     running_ = false;
     done_ = Result{id, std::move(scene), std::move(surface), ms};
     lock.unlock();
     if (wake_) wake_();
     lock.lock();
+    if (later && !cv_.wait_for(lock, kLaterDelay, [this] { return stop_ || queued_.has_value(); })) {
+      lock.unlock();
+      later_(built);
+      lock.lock();
+    }
   }
 }
 

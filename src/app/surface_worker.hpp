@@ -5,8 +5,10 @@
 // id. An optional warm-up step runs on the same thread after each build: the front ends
 // compile and draw the new shader there in a GL context of the worker's own, so the driver's
 // shader cache holds the compiled program before the main thread asks for it (its compile
-// then takes milliseconds, and the picture drawn meanwhile keeps moving). Latest wins: a request that has not started yet is replaced by a newer one, so
-// dragging a slider queues at most one build behind the running one.
+// then takes milliseconds, and the picture drawn meanwhile keeps moving). An optional later
+// step runs after a result once no newer request has come for a moment. Latest wins: a
+// request that has not started yet is replaced by a newer one, so dragging a slider queues
+// at most one build behind the running one.
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
@@ -36,10 +38,16 @@ class SurfaceWorker {
   // Runs on the worker thread after a build that succeeded, before its result is handed out.
   using WarmUp = std::function<void(const Scene&, const PreparedSurface&)>;
 
+  // Runs on the worker thread after a build that succeeded, once its result is out and no
+  // newer request has come for kLaterDelay: work that may wait for a pause in the requests
+  // (the warm-up of the passes a picture takes once its program is in).
+  using Later = std::function<void(const Scene&)>;
+  static constexpr std::chrono::milliseconds kLaterDelay{500};
+
   // `stop` runs on the worker thread as it ends (the warm-up's GL objects and context are
   // released on the thread they are current on).
   explicit SurfaceWorker(std::function<void()> wake, WarmUp warmUp = {},
-                         std::function<void()> stop = {});
+                         std::function<void()> stop = {}, Later later = {});
   ~SurfaceWorker();  // waits for a running build to finish; queued ones are dropped
   SurfaceWorker(const SurfaceWorker&) = delete;
   SurfaceWorker& operator=(const SurfaceWorker&) = delete;
@@ -56,6 +64,7 @@ class SurfaceWorker {
   std::function<void()> wake_;
   WarmUp warmUp_;
   std::function<void()> stopHook_;
+  Later later_;
   mutable std::mutex mutex_;
   std::condition_variable cv_;
   std::optional<std::pair<std::uint64_t, Scene>> queued_;

@@ -89,9 +89,12 @@ class RayTracer {
   // docs/renderer.md). On by default; off only to measure what the fix costs.
   void setTangentRoots(bool on) { tangentRoots_ = on; }
   void setProxy(Proxy proxy) { proxy_ = proxy; }
-  // The interval method's beam pass (raytrace_beam.frag.glsl); on by default. The picture
-  // keeps its guarantee either way: off only to measure what it gains or to compare.
+  // The interval method's beam pass (raytrace_beam.frag.glsl), with the tile mask after it;
+  // on by default. The picture keeps its guarantee either way: off to measure what it gains,
+  // to compare, or while its programs are not compiled yet (app/shader_warmer.hpp).
   void setBeamPass(bool on) { beamPass_ = on; }
+  // Whether the program loaded has a beam pass (the interval method's).
+  bool hasBeamPass() const { return programs_.hasBeam(); }
   // After a beam pass, shade only the tiles where it left some ray that may still hit
   // something: the others are marked off in the stencil buffer and never started
   // (render/beam_tiles.hpp). On by default; needs a stencil buffer in the framebuffer drawn

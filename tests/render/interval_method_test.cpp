@@ -244,7 +244,7 @@ TEST(IntervalMethod, TheBeamsTextureHasNoSideAPowerOfTwo) {
   const RenderSettings s = test::testSettings({0.6, 0.9, 3.2});
   const auto power = [](int k) { return k > 0 && (k & (k - 1)) == 0; };
   // Tiles of 8 pixels: 8 x 6, 16 x 16, 1 x 1 and 13 x 2 tiles.
-  for (const auto [width, height] : {std::pair{64, 48}, {128, 128}, {5, 3}, {100, 9}}) {
+  for (const auto& [width, height] : {std::pair{64, 48}, {128, 128}, {5, 3}, {100, 9}}) {
     const Frame f = tracer->render(s, cube(1.5), width, height);
     ASSERT_EQ(f.error, "");
     GLint beam = 0, w = 0, h = 0;

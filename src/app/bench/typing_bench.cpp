@@ -80,7 +80,7 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
   app::ShaderWarmer warmer(app::ShaderWarmer::Target::Offscreen, options.backend);
   app::SurfaceWorker worker(
       {}, [&warmer](const Scene& s, const PreparedSurface& p) { warmer.warm(s, p); },
-      [&warmer] { warmer.stop(); });
+      [&warmer] { warmer.stop(); }, [&warmer](const Scene& s) { warmer.warmPasses(s); });
   ctx.context->makeCurrent();  // the worker's context loads its own entry points
   Scene scene = base;
   interact::FirstPictureCost cost;  // of the first pictures so far: picks the next one's size
@@ -125,7 +125,9 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
       continue;
     }
     ctx.context->makeCurrent();
-    if (error.empty()) error = loadSurface(own, std::get<PreparedSurface>(result->surface));
+    const PreparedSurface& built = std::get<PreparedSurface>(result->surface);
+    if (error.empty()) error = loadSurface(own, built);
+    own.setBeamPass(warmer.passesWarm(built.fragmentShader));  // as the viewer does
     if (error.empty()) error = own.drawOffscreen(scene.render, scene.domain, out.width, out.height);
     glFinish();
     key.finalMs = msSince(start);

@@ -40,6 +40,9 @@ class SurfaceView {
   // The surface's own program replaces a first picture only when `endsQuick`.
   std::string upload(const PreparedSurface& surface, bool endsQuick = true);
   void setParams(std::span<const float> params);
+  // Whether the surface's own program draws with its beam pass and tile mask (the picture is
+  // the same without them): off until the ShaderWarmer has compiled them.
+  void setBeamPass(bool on) { tracer_.setBeamPass(on); }
   bool ready() const { return tracer_.ready() || quick_; }
 
   // The interpreters compiled for this kind of method (fast once the surface worker's

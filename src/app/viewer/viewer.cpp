@@ -75,7 +75,8 @@ std::unique_ptr<Viewer> Viewer::open(const ViewerOptions& options, std::string& 
   v->worker_ = std::make_unique<SurfaceWorker>(
       [] { glfwPostEmptyEvent(); },
       [warmer = v->warmer_](const Scene& s, const PreparedSurface& p) { warmer->warm(s, p); },
-      [warmer = v->warmer_] { warmer->stop(); });
+      [warmer = v->warmer_] { warmer->stop(); },
+      [warmer = v->warmer_](const Scene& s) { warmer->warmPasses(s); });
   v->setScene(options.scene, {});
   v->sceneFile_ = options.sceneFile;
   if (options.exampleIndex >= 0 && std::size_t(options.exampleIndex) < v->examples_.size()) {
@@ -158,6 +159,7 @@ void Viewer::traceIfNeeded(int width, int height) {
   if (scale == 0) return;
   RenderSettings settings = scene_.render;
   if (scale > 1) settings.samples = 1;  // a moving preview needs no supersampling
+  view_->setBeamPass(warmer_->passesWarm(builtProgram_));
   const double ms = view_->trace(settings, scene_.domain, width, height, scale);
   const double rays =
       double(width / scale) * double(height / scale) * settings.samples * settings.samples;

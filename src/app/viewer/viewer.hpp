@@ -156,6 +156,7 @@ class Viewer {
 
   Scene scene_;   // what is edited and shown
   Scene built_;   // the scene of the surface on screen (formula, params, domain, octree)
+  std::string builtProgram_;  // its fragment shader, whose passes the warmer reports on
   Scene loaded_;  // what R resets camera and lights to
   bool hasSurface_ = false;
   std::vector<Example> examples_;
