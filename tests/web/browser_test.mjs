@@ -55,13 +55,21 @@ await new Promise((r) => server.listen(0, '127.0.0.1', r));
 const origin = `http://127.0.0.1:${server.address().port}`;
 
 // ---- the browser -----------------------------------------------------------------------
+// WebGL2 draws on SwiftShader behind ANGLE, as in a browser without a GPU; the page itself
+// is composited on the CPU, which headless Chromium otherwise also routes through
+// SwiftShader at about a quarter more time per case on two cores. With `--webgl llvmpipe`,
+// ANGLE draws through the system's OpenGL ES over EGL instead: Mesa's llvmpipe, the
+// desktop's own rasterizer, so that `--case bench` compares the page with the desktop on
+// the same one.
+const WEBGL = {
+  swiftshader: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+  llvmpipe: ['--use-angle=gl-egl', '--use-gl=angle', '--ignore-gpu-blocklist', '--enable-gpu'],
+};
+const webgl = args.webgl || 'swiftshader';
+if (!WEBGL[webgl]) throw new Error(`--webgl: one of ${Object.keys(WEBGL).join(', ')}`);
 const browser = await chromium.launch({
   executablePath: process.env.ZS_CHROMIUM || '/usr/bin/chromium',
-  // WebGL2 draws on SwiftShader behind ANGLE, as in a browser without a GPU; the page itself
-  // is composited on the CPU, which headless Chromium otherwise also routes through
-  // SwiftShader at about a quarter more time per case on two cores.
-  args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--no-sandbox',
-         '--disable-gpu-compositing'],
+  args: [...WEBGL[webgl], '--no-sandbox', '--disable-gpu-compositing'],
 });
 const problems = [];
 // The browser speaks `locale` (navigator.languages), English unless a case asks otherwise.
