@@ -117,7 +117,7 @@ void ShaderWarmer::wantInterpreters(const Scene& scene) {
     if (!ctx.context) return;
     const bool sampling = scene.render.tracing.method == TracingMethod::Sampling;
     Scene single = scene;
-    single.render.samples = 1;  // first pictures draw without supersampling
+    single.render = firstPictureSettings(scene.render);
     {
       TapeInterpreters interpreters;  // its GL objects go before the context
       ViewTarget target;

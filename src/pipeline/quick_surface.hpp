@@ -31,4 +31,14 @@ struct QuickSurface {
 // cannot draw this scene (then only the full pipeline can).
 std::variant<QuickSurface, std::string> prepareQuickSurface(const Scene& scene);
 
+// How a first picture is drawn, and its interpreters warmed: one ray per pixel and no
+// reflection ray. It is a preview that the formula's own picture replaces within a fraction
+// of a second, and where the surface fills it the reflection ray costs about as much again
+// as the primary ray (docs/interpreter.md).
+inline RenderSettings firstPictureSettings(RenderSettings settings) {
+  settings.samples = 1;
+  settings.reflection.enabled = false;
+  return settings;
+}
+
 }  // namespace zs

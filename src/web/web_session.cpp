@@ -155,7 +155,7 @@ std::string WebSession::quickFragmentShader() const {
   if (!quick_) return {};
   return withVariantDefines(
       interpreterFragmentShader(quick_->sampling, quick_->tape.polynomialOnly, ShaderDialect::Es300),
-      ProgramVariant::of(scene_.render));
+      ProgramVariant::of(firstPictureSettings(scene_.render)));
 }
 
 std::vector<std::string> WebSession::interpreterShaders() const {
@@ -164,7 +164,7 @@ std::vector<std::string> WebSession::interpreterShaders() const {
   for (bool polynomialOnly : {true, false}) {
     out.push_back(withVariantDefines(
         interpreterFragmentShader(sampling, polynomialOnly, ShaderDialect::Es300),
-        ProgramVariant::of(scene_.render)));
+        ProgramVariant::of(firstPictureSettings(scene_.render))));
   }
   return out;
 }

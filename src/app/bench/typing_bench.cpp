@@ -61,7 +61,7 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
   std::vector<unsigned char> pixels;
   auto start = Clock::now();
   Scene single = base;
-  single.render.samples = 1;  // first pictures draw without supersampling
+  single.render = firstPictureSettings(base.render);
   const auto draw = [&](RayTracer& tracer, const Scene& scene) {
     app::drawInterpreterWarmUp(tracer, warmTarget, scene, out.width, out.height);  // as the viewer
   };
@@ -108,7 +108,7 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
     if (RayTracer* interpreter = interpreters.load(surface, error);
         interpreter && firstTarget.ensure(key.firstWidth, key.firstHeight)) {
       glBindFramebuffer(GL_FRAMEBUFFER, firstTarget.framebuffer());
-      interpreter->draw(scene.render, scene.domain, key.firstWidth, key.firstHeight);
+      interpreter->draw(single.render, scene.domain, key.firstWidth, key.firstHeight);
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       firstTarget.readPixels(pixels);  // as the viewer does, to show it in the window's context
     }

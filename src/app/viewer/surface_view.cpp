@@ -56,7 +56,7 @@ void SurfaceView::warmInterpreters(const Scene& scene, int width, int height) {
   const bool sampling = scene.render.tracing.method == TracingMethod::Sampling;
   if (first_->interpreters.warmed(sampling)) return;
   Scene single = scene;
-  single.render.samples = 1;
+  single.render = firstPictureSettings(scene.render);
   FirstPicturesScope scope(*this);
   first_->interpreters.warm(sampling, single, [&](RayTracer& t, const Scene& s) {
     drawInterpreterWarmUp(t, first_->warmTarget, s, width, height);

@@ -17,6 +17,7 @@
 #include "app/viewer/formula_keyboard.hpp"
 #include "i18n/translate.hpp"
 #include "interact/trace_budget.hpp"
+#include "pipeline/quick_surface.hpp"
 
 namespace zs::app {
 namespace {
@@ -157,7 +158,7 @@ void Viewer::traceIfNeeded(int width, int height) {
   }
   else if (refine_ && !moving && !quick) scale = 1;
   if (scale == 0) return;
-  RenderSettings settings = scene_.render;
+  RenderSettings settings = quick ? firstPictureSettings(scene_.render) : scene_.render;
   if (scale > 1) settings.samples = 1;  // a moving preview needs no supersampling
   view_->setBeamPass(warmer_->passesWarm(builtProgram_));
   const double ms = view_->trace(settings, scene_.domain, width, height, scale);
