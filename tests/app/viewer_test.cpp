@@ -144,6 +144,20 @@ TEST(Viewer, AKeyAfterAClickInOneLongFrameIsTakenAfterTheClick) {
   EXPECT_EQ(loadSaved(v.save()).formula, "x^2 + y^2 - z^2 - 0.3") << "no key reached the box";
 }
 
+// F puts the cursor in the formula box and types its own character, which the box must not
+// get; a formula typed at once after it, which one long frame holds with the F, must.
+TEST(Viewer, AFormulaTypedInTheSameLongFrameAsFIsKept) {
+  ViewerSession v("f_then_formula", {"x^2 + y^2 + z^2 - 1", "--log"});
+  START(v);
+  v.freeze();
+  v.key("f");
+  v.key("ctrl+a");
+  v.type("x^2 + y^2 - z");
+  v.thaw();
+  ASSERT_FALSE(v.waitLog("built x^2 + y^2 - z", 30).empty()) << v.log();
+  EXPECT_EQ(v.log().find("built fx"), std::string::npos) << v.log();
+}
+
 TEST(Viewer, MeshAndPrintKeysWriteTheirFiles) {
   // A typed formula has no file: the mesh goes to the output folder, at the panel's level.
   ViewerSession v("mesh", {"x^2 + y^2 + z^2 - 1"});

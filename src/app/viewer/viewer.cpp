@@ -216,8 +216,6 @@ void Viewer::frame() {
   if (width <= 0 || height <= 0) return;  // minimized
 
   const auto frameStart = Clock::now();
-  // The F (G) key that asks for the formula (search) box also queued its character: drop it.
-  if (panel_.focusFormula || gallery_.focusSearch) ImGui::GetIO().InputQueueCharacters.resize(0);
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   replayMouseButtons();

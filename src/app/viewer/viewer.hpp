@@ -183,11 +183,17 @@ class Viewer {
   std::deque<MouseButtonEvent> mouseButtons_;  // replayMouseButtons
   struct KeyEvent {
     int key, mods;
+    bool forPanel;  // came while a text box was about to take the focus: ImGui gets it too
   };
-  // Input that came after a click not yet replayed (inputAfterClicks): the viewer's keys,
-  // and the characters taken back out of ImGui's queue (counted as they arrive, taken at the
-  // frame's start).
+  // Input that came after a click not yet replayed, or after a key that asked for the
+  // formula or search box before the box has the focus (inputAfterClicks): the keys, and the
+  // characters taken back out of ImGui's queue (counted as they arrive, taken at the frame's
+  // start).
   std::deque<KeyEvent> keysAfterClicks_;
+  // The key that last asked for the formula or search box (GLFW key code, -1 none): its own
+  // character is dropped, not typed into that box.
+  int focusKey_ = -1;
+  bool focusPending() const { return panel_.focusFormula || gallery_.focusSearch; }
   std::vector<unsigned> charsAfterClicks_;
   int charsArrivedAfterClicks_ = 0;
   bool buttonsDown_[3] = {false, false, false};  // as ImGui was last told

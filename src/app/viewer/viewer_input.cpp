@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 
 #include "app/viewer/viewer.hpp"
@@ -29,9 +30,13 @@ void Viewer::installCallbacks() {
       // A key pressed after a click that has not reached the panel yet (a slow frame held
       // both) waits for it: the click may take the focus from a text box, which decides
       // whether the key is the viewer's or the box's.
+      // The same for a key after one that asked for a text box which has not taken the
+      // focus yet: it is meant for that box.
       Viewer* v = self(win);
-      if (v->clicksPending()) v->keysAfterClicks_.push_back({key, mods});
-      else v->onKey(key, mods);
+      if (v->clicksPending() || v->focusPending())
+        v->keysAfterClicks_.push_back({key, mods, v->focusPending()});
+      else
+        v->onKey(key, mods);
     }
     self(win)->uiFrames_ = 3;
   });
@@ -57,7 +62,8 @@ void Viewer::installCallbacks() {
     self(win)->noteInput();
     // ImGui's callback, which this one precedes, queues the character for the panel: one
     // typed after a pending click is taken back out of that queue (inputAfterClicks).
-    if (self(win)->clicksPending()) ++self(win)->charsArrivedAfterClicks_;
+    if (self(win)->clicksPending() || self(win)->focusPending())
+      ++self(win)->charsArrivedAfterClicks_;
     self(win)->uiFrames_ = 3;
   });
   glfwSetWindowRefreshCallback(w, [](GLFWwindow* win) { self(win)->uiFrames_ = 3; });
@@ -119,12 +125,39 @@ void Viewer::inputAfterClicks() {
     charsAfterClicks_.push_back(io.InputQueueCharacters[i]);
   io.InputQueueCharacters.resize(io.InputQueueCharacters.Size - arrived);
   charsArrivedAfterClicks_ = 0;
-  // The last click was replayed in the frame before: the panel's focus is up to date.
-  if (!mouseButtons_.empty()) return;
+  // The key that asked for a text box typed its own letter too: not into the box.
+  if (focusKey_ >= GLFW_KEY_A && focusKey_ <= GLFW_KEY_Z && !charsAfterClicks_.empty() &&
+      std::tolower(int(charsAfterClicks_.front())) == 'a' + (focusKey_ - GLFW_KEY_A)) {
+    charsAfterClicks_.erase(charsAfterClicks_.begin());
+    focusKey_ = -1;
+  }
+  // The last click was replayed in the frame before, and the box asked for drew with the
+  // focus: the panel's focus is up to date.
+  if (!mouseButtons_.empty() || focusPending()) return;
+  focusKey_ = -1;
   while (!keysAfterClicks_.empty()) {
     const KeyEvent e = keysAfterClicks_.front();
+    if (e.forPanel) {
+      // The box sees the key as down for one frame (holdQuickKeys lets it go), with its
+      // modifiers; one such key a frame, and the characters after the last of them, so that
+      // Ctrl+A then a formula selects before it types.
+      keysAfterClicks_.pop_front();
+      io.KeysDown[e.key] = true;
+      heldKeys_.push_back(e.key);
+      io.KeyCtrl = (e.mods & GLFW_MOD_CONTROL) != 0;
+      io.KeyShift = (e.mods & GLFW_MOD_SHIFT) != 0;
+      io.KeyAlt = (e.mods & GLFW_MOD_ALT) != 0;
+      io.KeySuper = (e.mods & GLFW_MOD_SUPER) != 0;
+      onKey(e.key, e.mods);  // the viewer's, where the box did not take the focus after all
+      uiFrames_ = std::max(uiFrames_, 2);
+      return;
+    }
     keysAfterClicks_.pop_front();
     onKey(e.key, e.mods);
+    if (focusPending()) {  // it asked for a text box: what came after it is for that box
+      for (KeyEvent& later : keysAfterClicks_) later.forPanel = true;
+      return;
+    }
   }
   for (unsigned c : charsAfterClicks_) io.AddInputCharacter(c);
   charsAfterClicks_.clear();
@@ -132,7 +165,13 @@ void Viewer::inputAfterClicks() {
 
 void Viewer::onKey(int key, int mods) {
   if (ImGui::GetIO().WantCaptureKeyboard) return;  // typing in the panel
-  if (const KeyBinding* binding = findBinding(key, mods)) runAction(binding->action);
+  if (const KeyBinding* binding = findBinding(key, mods)) {
+    // A key that puts the cursor in a text box also types its letter, which must not land
+    // there (inputAfterClicks drops it).
+    if (binding->action == Action::FocusFormula || binding->action == Action::ToggleGallery)
+      focusKey_ = key;
+    runAction(binding->action);
+  }
 }
 
 void Viewer::onMouseButton(int button, int action) {
