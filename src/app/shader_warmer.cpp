@@ -49,7 +49,7 @@ bool ShaderWarmer::ensureContext() {
 
 void ShaderWarmer::warm(const Scene& scene, const PreparedSurface& surface) {
   if (!ensureContext()) return;
-  const std::size_t program = std::hash<std::string>{}(surface.fragmentShader);
+  const std::size_t program = programKey(surface.fragmentShader);
   loaded_ = 0;
   if (!loadSurface(*tracer_, surface).empty()) return;
   loaded_ = program;
@@ -60,12 +60,8 @@ void ShaderWarmer::warm(const Scene& scene, const PreparedSurface& surface) {
   bool passes = true;
   if (tracer_->hasBeamPass()) {
     std::lock_guard lock(mutex_);
-    if (std::find(warm_.begin(), warm_.end(), program) == warm_.end() &&
-        std::find(deferred_.begin(), deferred_.end(), program) == deferred_.end()) {
-      deferred_.push_back(program);
-      if (deferred_.size() > kRemembered) deferred_.erase(deferred_.begin());
-    }
-    passes = std::find(deferred_.begin(), deferred_.end(), program) == deferred_.end();
+    passes = contains(warm_, program);
+    if (!passes && !contains(deferred_, program)) remember(deferred_, program);
   }
   tracer_->setBeamPass(passes);
   // From the scene's eye at a quarter of its size: a picture like the front end's next full
@@ -82,17 +78,25 @@ void ShaderWarmer::warmPasses(const Scene& scene) {
   draw(scene, std::max(1, scene.width), std::max(1, scene.height));
   std::lock_guard lock(mutex_);
   deferred_.erase(std::remove(deferred_.begin(), deferred_.end(), loaded_), deferred_.end());
-  warm_.push_back(loaded_);
-  if (warm_.size() > kRemembered) warm_.erase(warm_.begin());
+  remember(warm_, loaded_);
 }
 
-bool ShaderWarmer::passesWarm(const std::string& fragmentShader) const {
-  return passesWarm(std::hash<std::string>{}(fragmentShader));
+std::size_t ShaderWarmer::programKey(const std::string& fragmentShader) {
+  return std::hash<std::string>{}(fragmentShader);
 }
 
 bool ShaderWarmer::passesWarm(std::size_t program) const {
   std::lock_guard lock(mutex_);
-  return std::find(deferred_.begin(), deferred_.end(), program) == deferred_.end();
+  return !contains(deferred_, program);
+}
+
+bool ShaderWarmer::contains(const std::vector<std::size_t>& programs, std::size_t program) {
+  return std::find(programs.begin(), programs.end(), program) != programs.end();
+}
+
+void ShaderWarmer::remember(std::vector<std::size_t>& programs, std::size_t program) {
+  programs.push_back(program);
+  if (programs.size() > kRemembered) programs.erase(programs.begin());
 }
 
 void ShaderWarmer::draw(const Scene& scene, int width, int height) {

@@ -43,11 +43,13 @@ class ShaderWarmer {
   // On the surface worker's thread, later (SurfaceWorker::Later): the passes the last warm
   // left out, drawn at the scene's full size.
   void warmPasses(const Scene& scene);
-  // Whether the front end may draw the program of `fragmentShader` with its beam pass and
-  // tile mask (any thread): false only from a warm that left them out to its warmPasses.
-  // Until then their compile would stop the front end's picture, which is the same without
-  // them (RayTracer::setBeamPass), only slower to draw.
-  bool passesWarm(const std::string& fragmentShader) const;
+  // A program as passesWarm knows it: the hash of its fragment shader's text.
+  static std::size_t programKey(const std::string& fragmentShader);
+  // Whether the front end may draw the program with its beam pass and tile mask (any
+  // thread): false only from a warm that left them out to its warmPasses. Until then their
+  // compile would stop the front end's picture, which is the same without them
+  // (RayTracer::setBeamPass), only slower to draw.
+  bool passesWarm(std::size_t program) const;
 
   // Whether the interpreters for this kind of method have been warmed (any thread).
   bool interpretersWarm(bool sampling) const { return interpretersWarm_[sampling].load(); }
@@ -59,8 +61,9 @@ class ShaderWarmer {
   static constexpr std::size_t kRemembered = 16;  // programs whose passes are warm
 
   bool ensureContext();
-  bool passesWarm(std::size_t program) const;
   void draw(const Scene& scene, int width, int height);
+  static bool contains(const std::vector<std::size_t>& programs, std::size_t program);
+  static void remember(std::vector<std::size_t>& programs, std::size_t program);
 
   Target kind_;
   Backend backend_;
@@ -70,9 +73,8 @@ class ShaderWarmer {
   std::unique_ptr<ViewTarget> target_;
   std::thread interpretersThread_;
   std::array<std::atomic<bool>, 2> interpretersWarm_{};
-  // Programs by the hash of their fragment shader's text: the one loaded last (0: none),
-  // those whose passes wait for warmPasses, and those whose passes are warm (the last
-  // kRemembered of each).
+  // Programs by programKey: the one loaded last (0: none), those whose passes wait for
+  // warmPasses, and those whose passes are warm (the last kRemembered of each).
   std::size_t loaded_ = 0;
   mutable std::mutex mutex_;
   std::vector<std::size_t> deferred_, warm_;

@@ -65,18 +65,19 @@ TEST(ShaderWarmer, ANewBeamProgramsPassesWaitForWarmPasses) {
   const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
   ASSERT_EQ(surface.method, TracingMethod::Interval);
   warmer.warm(interval, surface);
-  EXPECT_FALSE(warmer.passesWarm(surface.fragmentShader));
+  EXPECT_FALSE(warmer.passesWarm(ShaderWarmer::programKey(surface.fragmentShader)));
   warmer.warmPasses(interval);
-  EXPECT_TRUE(warmer.passesWarm(surface.fragmentShader));
+  EXPECT_TRUE(warmer.passesWarm(ShaderWarmer::programKey(surface.fragmentShader)));
   // The same program again (a new parameter value, octree level): its passes stay warm.
   warmer.warm(interval, surface);
-  EXPECT_TRUE(warmer.passesWarm(surface.fragmentShader));
+  EXPECT_TRUE(warmer.passesWarm(ShaderWarmer::programKey(surface.fragmentShader)));
   // A polynomial's Bernstein program has no beam: nothing to wait for.
   const Scene polynomial = sceneOf("x^2 + y^2 + z^2 - 1");
   auto bernstein = prepareSurface(polynomial);
   ASSERT_TRUE(std::holds_alternative<PreparedSurface>(bernstein));
   warmer.warm(polynomial, std::get<PreparedSurface>(bernstein));
-  EXPECT_TRUE(warmer.passesWarm(std::get<PreparedSurface>(bernstein).fragmentShader));
+  EXPECT_TRUE(warmer.passesWarm(
+      ShaderWarmer::programKey(std::get<PreparedSurface>(bernstein).fragmentShader)));
   warmer.stop();
 }
 

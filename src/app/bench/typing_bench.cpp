@@ -127,7 +127,7 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
     ctx.context->makeCurrent();
     const PreparedSurface& built = std::get<PreparedSurface>(result->surface);
     if (error.empty()) error = loadSurface(own, built);
-    own.setBeamPass(warmer.passesWarm(built.fragmentShader));  // as the viewer does
+    own.setBeamPass(warmer.passesWarm(app::ShaderWarmer::programKey(built.fragmentShader)));
     if (error.empty()) error = own.drawOffscreen(scene.render, scene.domain, out.width, out.height);
     glFinish();
     key.finalMs = msSince(start);

@@ -196,7 +196,7 @@ void Viewer::frame() {
   // compile, say) has been noted, so time the viewer itself spent is not a visitor's idleness.
   returnToStartIfIdle();
   holdQuickKeys();
-  inputAfterClicks();
+  releaseWaitingInput();
   runPending();
   takeBuild();
   // Once the worker has compiled the interpreters, the window's compile of them is quick.

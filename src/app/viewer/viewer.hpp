@@ -105,8 +105,10 @@ class Viewer {
   // finger) would reach ImGui as one click, at the second tap's place. Each press and
   // release is handed to ImGui in a frame of its own, where it happened.
   void replayMouseButtons();  // after ImGui's NewFrame of the platform backend
-  void inputAfterClicks();  // held until the clicks before it have reached the panel
-  bool clicksPending() const;
+  // Input that waits: for clicks before it to reach the panel, or for a text box asked for
+  // before it to take the focus; released at the start of a frame once they have.
+  void releaseWaitingInput();
+  bool inputWaits() const;
   void onMouseButton(int button, int action);
   void onCursor(double x, double y);
   void onScroll(double dy);
@@ -156,7 +158,7 @@ class Viewer {
 
   Scene scene_;   // what is edited and shown
   Scene built_;   // the scene of the surface on screen (formula, params, domain, octree)
-  std::string builtProgram_;  // its fragment shader, whose passes the warmer reports on
+  std::size_t builtProgram_ = 0;  // its program (ShaderWarmer::programKey)
   Scene loaded_;  // what R resets camera and lights to
   bool hasSurface_ = false;
   std::vector<Example> examples_;
@@ -186,16 +188,16 @@ class Viewer {
     bool forPanel;  // came while a text box was about to take the focus: ImGui gets it too
   };
   // Input that came after a click not yet replayed, or after a key that asked for the
-  // formula or search box before the box has the focus (inputAfterClicks): the keys, and the
-  // characters taken back out of ImGui's queue (counted as they arrive, taken at the frame's
-  // start).
-  std::deque<KeyEvent> keysAfterClicks_;
+  // formula or search box before the box has the focus (releaseWaitingInput): the keys, and
+  // the characters taken back out of ImGui's queue (counted as they arrive, taken at the
+  // frame's start).
+  std::deque<KeyEvent> waitingKeys_;
   // The key that last asked for the formula or search box (GLFW key code, -1 none): its own
   // character is dropped, not typed into that box.
   int focusKey_ = -1;
   bool focusPending() const { return panel_.focusFormula || gallery_.focusSearch; }
-  std::vector<unsigned> charsAfterClicks_;
-  int charsArrivedAfterClicks_ = 0;
+  std::vector<unsigned> waitingChars_;
+  int waitingCharsArrived_ = 0;
   bool buttonsDown_[3] = {false, false, false};  // as ImGui was last told
   std::chrono::steady_clock::time_point lastWheel_{};
   double msPerPixel_ = 0;  // from the latest trace, to pick the reduced scale

@@ -122,7 +122,7 @@ void Viewer::takeBuild() {
     if (error.empty() && endsQuick) quickFormula_.clear();
     if (error.empty()) {
       built_ = result->scene;
-      builtProgram_ = surface.fragmentShader;
+      builtProgram_ = ShaderWarmer::programKey(surface.fragmentShader);
       hasSurface_ = true;
       dirty_ = true;
       uncounted_ = true;

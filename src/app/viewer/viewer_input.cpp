@@ -29,14 +29,11 @@ void Viewer::installCallbacks() {
     if (action == GLFW_PRESS || action == GLFW_REPEAT) {
       // A key pressed after a click that has not reached the panel yet (a slow frame held
       // both) waits for it: the click may take the focus from a text box, which decides
-      // whether the key is the viewer's or the box's.
-      // The same for a key after one that asked for a text box which has not taken the
-      // focus yet: it is meant for that box.
+      // whether the key is the viewer's or the box's. So does a key after one that asked for
+      // a text box which has not taken the focus yet: it is meant for that box.
       Viewer* v = self(win);
-      if (v->clicksPending() || v->focusPending())
-        v->keysAfterClicks_.push_back({key, mods, v->focusPending()});
-      else
-        v->onKey(key, mods);
+      if (v->inputWaits()) v->waitingKeys_.push_back({key, mods, v->focusPending()});
+      else v->onKey(key, mods);
     }
     self(win)->uiFrames_ = 3;
   });
@@ -61,9 +58,8 @@ void Viewer::installCallbacks() {
   glfwSetCharCallback(w, [](GLFWwindow* win, unsigned) {
     self(win)->noteInput();
     // ImGui's callback, which this one precedes, queues the character for the panel: one
-    // typed after a pending click is taken back out of that queue (inputAfterClicks).
-    if (self(win)->clicksPending() || self(win)->focusPending())
-      ++self(win)->charsArrivedAfterClicks_;
+    // typed while input waits is taken back out of that queue (releaseWaitingInput).
+    if (self(win)->inputWaits()) ++self(win)->waitingCharsArrived_;
     self(win)->uiFrames_ = 3;
   });
   glfwSetWindowRefreshCallback(w, [](GLFWwindow* win) { self(win)->uiFrames_ = 3; });
@@ -113,35 +109,35 @@ void Viewer::replayMouseButtons() {
   uiFrames_ = std::max(uiFrames_, 2);  // frames go on until the queue is empty
 }
 
-bool Viewer::clicksPending() const {
-  return !mouseButtons_.empty() || !keysAfterClicks_.empty() || !charsAfterClicks_.empty() ||
-         charsArrivedAfterClicks_ > 0;
+bool Viewer::inputWaits() const {
+  return !mouseButtons_.empty() || focusPending() || !waitingKeys_.empty() ||
+         !waitingChars_.empty() || waitingCharsArrived_ > 0;
 }
 
-void Viewer::inputAfterClicks() {
+void Viewer::releaseWaitingInput() {
   ImGuiIO& io = ImGui::GetIO();
-  const int arrived = std::min(charsArrivedAfterClicks_, io.InputQueueCharacters.Size);
+  const int arrived = std::min(waitingCharsArrived_, io.InputQueueCharacters.Size);
   for (int i = io.InputQueueCharacters.Size - arrived; i < io.InputQueueCharacters.Size; ++i)
-    charsAfterClicks_.push_back(io.InputQueueCharacters[i]);
+    waitingChars_.push_back(io.InputQueueCharacters[i]);
   io.InputQueueCharacters.resize(io.InputQueueCharacters.Size - arrived);
-  charsArrivedAfterClicks_ = 0;
+  waitingCharsArrived_ = 0;
   // The key that asked for a text box typed its own letter too: not into the box.
-  if (focusKey_ >= GLFW_KEY_A && focusKey_ <= GLFW_KEY_Z && !charsAfterClicks_.empty() &&
-      std::tolower(int(charsAfterClicks_.front())) == 'a' + (focusKey_ - GLFW_KEY_A)) {
-    charsAfterClicks_.erase(charsAfterClicks_.begin());
+  if (focusKey_ >= GLFW_KEY_A && focusKey_ <= GLFW_KEY_Z && !waitingChars_.empty() &&
+      std::tolower(int(waitingChars_.front())) == 'a' + (focusKey_ - GLFW_KEY_A)) {
+    waitingChars_.erase(waitingChars_.begin());
     focusKey_ = -1;
   }
   // The last click was replayed in the frame before, and the box asked for drew with the
   // focus: the panel's focus is up to date.
   if (!mouseButtons_.empty() || focusPending()) return;
   focusKey_ = -1;
-  while (!keysAfterClicks_.empty()) {
-    const KeyEvent e = keysAfterClicks_.front();
+  while (!waitingKeys_.empty()) {
+    const KeyEvent e = waitingKeys_.front();
     if (e.forPanel) {
       // The box sees the key as down for one frame (holdQuickKeys lets it go), with its
       // modifiers; one such key a frame, and the characters after the last of them, so that
       // Ctrl+A then a formula selects before it types.
-      keysAfterClicks_.pop_front();
+      waitingKeys_.pop_front();
       io.KeysDown[e.key] = true;
       heldKeys_.push_back(e.key);
       io.KeyCtrl = (e.mods & GLFW_MOD_CONTROL) != 0;
@@ -152,22 +148,22 @@ void Viewer::inputAfterClicks() {
       uiFrames_ = std::max(uiFrames_, 2);
       return;
     }
-    keysAfterClicks_.pop_front();
+    waitingKeys_.pop_front();
     onKey(e.key, e.mods);
     if (focusPending()) {  // it asked for a text box: what came after it is for that box
-      for (KeyEvent& later : keysAfterClicks_) later.forPanel = true;
+      for (KeyEvent& later : waitingKeys_) later.forPanel = true;
       return;
     }
   }
-  for (unsigned c : charsAfterClicks_) io.AddInputCharacter(c);
-  charsAfterClicks_.clear();
+  for (unsigned c : waitingChars_) io.AddInputCharacter(c);
+  waitingChars_.clear();
 }
 
 void Viewer::onKey(int key, int mods) {
   if (ImGui::GetIO().WantCaptureKeyboard) return;  // typing in the panel
   if (const KeyBinding* binding = findBinding(key, mods)) {
     // A key that puts the cursor in a text box also types its letter, which must not land
-    // there (inputAfterClicks drops it).
+    // there (releaseWaitingInput drops it).
     if (binding->action == Action::FocusFormula || binding->action == Action::ToggleGallery)
       focusKey_ = key;
     runAction(binding->action);
@@ -258,11 +254,11 @@ void Viewer::noteInput() {
 
 void Viewer::returnToStartIfIdle() {
   if (!options_.kiosk || !inputSinceStart_) return;
-  // A visitor whose input has not all acted yet, or who waits for a formula they typed, is not
-  // idle: the time counts from the later of their last input and the new surface's arrival. (Rebuilds of the same formula, as a
-  // playing parameter asks for them all the time, do not hold it back.)
-  if (clicksPending() || buildAt_ || (worker_->busy() && scene_.formula != built_.formula))
-    return;
+  // A visitor whose input has not all acted yet, or who waits for a formula they typed, is
+  // not idle: the time counts from the later of their last input and the new surface's
+  // arrival. (Rebuilds of the same formula, as a playing parameter asks for them all the
+  // time, do not hold it back.)
+  if (inputWaits() || buildAt_ || (worker_->busy() && scene_.formula != built_.formula)) return;
   const std::chrono::duration<double> idle =
       std::chrono::steady_clock::now() - std::max(lastInput_, lastBuilt_);
   if (idle.count() < options_.kiosk->idleSeconds) return;
@@ -272,8 +268,8 @@ void Viewer::returnToStartIfIdle() {
   std::fill(panel_.playing.begin(), panel_.playing.end(), 0);
   buildAt_.reset();
   mouseButtons_.clear();
-  keysAfterClicks_.clear();
-  charsAfterClicks_.clear();
+  waitingKeys_.clear();
+  waitingChars_.clear();
   std::fill(std::begin(buttonsDown_), std::end(buttonsDown_), false);
   hover_.clear();
   // The exhibit's language for the next visitor.
