@@ -133,9 +133,9 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
   // #version must come first.
   std::string out = versionHeader(prelude, dialect);
   if (dialect == ShaderDialect::Gl330) {
-    // NVIDIA's compiler unrolls every loop it can count, which costs a third of a program's
-    // compile and buys nothing measurable in its frames (docs/renderer.md, "GPU drivers");
-    // other drivers ignore the pragma, and WebGL2 never sees it.
+    // NVIDIA's compiler unrolls every loop it can count, which costs up to half of a
+    // program's compile and buys nothing measurable in its frames (docs/renderer.md, "GPU
+    // drivers"); other drivers ignore the pragma, and WebGL2 never sees it.
     out += "#pragma optionNV(unroll none)\n#line 2 0\n";
   }
   out += prelude.substr(prelude.find('\n') + 1);
@@ -196,12 +196,6 @@ std::string assembleFragmentShader(const GlslFormula& formula, const RayPolynomi
 std::string assembleFragmentShader(const GlslFormula& formula, const IntervalGlsl& interval,
                                    std::string_view markers, ShaderDialect dialect) {
   return assemble(formula, nullptr, &interval, markers, dialect);
-}
-
-void addDriverHint(std::string& shader, std::string_view pragma) {
-  if (shader.rfind("#version 300 es", 0) == 0) return;
-  // Right after #version, before the assembly's own "#line 2 0", which keeps the numbering.
-  shader.insert(shader.find('\n') + 1, "#pragma " + std::string(pragma) + "\n");
 }
 
 std::string markerBlock(const std::vector<std::array<double, 3>>& points, double radius,

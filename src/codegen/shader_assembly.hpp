@@ -82,11 +82,6 @@ std::string assembleFragmentShader(const GlslFormula& formula, const IntervalGls
                                    std::string_view markers = {},
                                    ShaderDialect dialect = ShaderDialect::Gl330);
 
-// Adds `#pragma PRAGMA` for one GL driver's compiler (e.g. "optionNV(inline none)") to an
-// assembled Gl330 fragment shader, right after its #version; GLSL ES text is left as it is.
-// Every desktop fragment shader already carries "optionNV(unroll none)".
-void addDriverHint(std::string& shader, std::string_view pragma);
-
 // fullscreen.vert.glsl with frame_params.glsl (as outputs) after its #version line.
 std::string vertexShaderSource(ShaderDialect dialect = ShaderDialect::Gl330);
 

@@ -117,19 +117,9 @@ std::string interpreterFragmentShader(bool sampling, bool polynomialOnly, Shader
   formula.source += tapeConstants() + kPowi + pointDispatch(polynomialOnly);
   if (!polynomialOnly) formula.source += "#define ZS_TAPE_EVERY_OPERATION\n";
   formula.source += shaderTemplate(kTapePointTemplate);
-  std::string shader;
-  if (sampling) {
-    shader = assembleFragmentShader(formula, {}, dialect);
-  } else {
-    IntervalGlsl interval{affineDispatch(polynomialOnly) + std::string(shaderTemplate(kTapeAffineTemplate))};
-    shader = assembleFragmentShader(formula, interval, {}, dialect);
-  }
-  // NVIDIA's compiler inlines each call of the dispatch (a switch over every operation), so
-  // the interpreter with every operation took most of a start-up's half minute to compile
-  // there; called, not inlined, it compiles in a tenth of that. Its pictures are small and
-  // its draws cheap, so the slower calls do not show (docs/interpreter.md).
-  addDriverHint(shader, "optionNV(inline none)");
-  return shader;
+  if (sampling) return assembleFragmentShader(formula, {}, dialect);
+  IntervalGlsl interval{affineDispatch(polynomialOnly) + std::string(shaderTemplate(kTapeAffineTemplate))};
+  return assembleFragmentShader(formula, interval, {}, dialect);
 }
 
 }  // namespace zs
