@@ -56,6 +56,8 @@ bool GlfwWindowContext::makeCurrent() {
   return true;
 }
 
+void GlfwWindowContext::releaseCurrent() { glfwMakeContextCurrent(nullptr); }
+
 void GlfwWindowContext::swapBuffers() { glfwSwapBuffers(window_); }
 bool GlfwWindowContext::shouldClose() const { return glfwWindowShouldClose(window_) != 0; }
 void GlfwWindowContext::framebufferSize(int& width, int& height) const {

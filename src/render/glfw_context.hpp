@@ -16,6 +16,9 @@ class GlfwWindowContext final : public GlContext {
   ~GlfwWindowContext() override;
   bool makeCurrent() override;
   std::string backendName() const override { return "GLFW window"; }
+  // Leaves the calling thread without a current context, so that another thread can make
+  // this one current.
+  static void releaseCurrent();
 
   GLFWwindow* window() const { return window_; }
   void swapBuffers();

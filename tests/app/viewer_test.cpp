@@ -406,9 +406,9 @@ TEST(Viewer, SpeaksTheLanguageTheEnvironmentAsksFor) {
   ViewerSession v("german", {"x^2 + y^2 + z^2 - 1", "--kiosk", "--kiosk-max-degree", "4"},
                   {{"LANGUAGE", ""}, {"LC_ALL", ""}, {"LC_MESSAGES", ""}, {"LANG", "de_DE.UTF-8"}});
   START(v);
-  // A kiosk warms the first pictures' interpreters from the start; on a loaded machine the
-  // window's own compile of them, at the end, held the keys typed meanwhile past the wait
-  // below (the message is all this test is about).
+  // A kiosk warms the first pictures' interpreters from the start, which on a loaded machine
+  // slows the frames that would take the keys typed meanwhile; the message is all this test
+  // is about, so it types once they are warm.
   ASSERT_FALSE(v.waitLog("first pictures ready", 90).empty()) << v.log();
   v.click(500, 300);
   v.key("f");

@@ -15,6 +15,7 @@ namespace zs::app {
 SurfaceView::SurfaceView() : first_(std::make_unique<FirstPictures>()) {}
 
 SurfaceView::~SurfaceView() {
+  if (warmUp_.joinable()) warmUp_.join();
   FirstPicturesScope scope(*this);  // their GL objects go with their context
   quick_ = nullptr;
   first_.reset();
@@ -28,8 +29,10 @@ SurfaceView::FirstPicturesScope::~FirstPicturesScope() {
   if (view_.firstContext_) view_.home_->makeCurrent();
 }
 
-void SurfaceView::drawFirstPicturesIn(std::unique_ptr<GlContext> first, GlContext* home) {
+void SurfaceView::drawFirstPicturesIn(std::unique_ptr<GlfwWindowContext> first, GlContext* home) {
   if (!first || !home) return;
+  if (warmUp_.joinable()) warmUp_.join();
+  warm_[0] = warm_[1] = false;
   {
     FirstPicturesScope scope(*this);  // what was made in the window's context goes there
     quick_ = nullptr;
@@ -52,18 +55,38 @@ void SurfaceView::setParams(std::span<const float> params) {
   if (quick_) quick_->setParams(params);  // kept on the CPU until the next draw
 }
 
-void SurfaceView::warmInterpreters(const Scene& scene, int width, int height) {
+void SurfaceView::warmInterpreters(const Scene& scene, int width, int height,
+                                   const std::function<void()>& done) {
   const bool sampling = scene.render.tracing.method == TracingMethod::Sampling;
-  if (first_->interpreters.warmed(sampling)) return;
+  if (warm_[sampling] || warming_) return;
   Scene single = scene;
   single.render = firstPictureSettings(scene.render);
-  FirstPicturesScope scope(*this);
-  first_->interpreters.warm(sampling, single, [&](RayTracer& t, const Scene& s) {
-    drawInterpreterWarmUp(t, first_->warmTarget, s, width, height);
+  if (!firstContext_) {
+    first_->interpreters.warm(sampling, single, [&](RayTracer& t, const Scene& s) {
+      drawInterpreterWarmUp(t, first_->warmTarget, s, width, height);
+    });
+    warm_[sampling] = first_->interpreters.warmed(sampling);
+    if (done) done();
+    return;
+  }
+  if (warmUp_.joinable()) warmUp_.join();  // the warm-up of the other kind, finished
+  quick_ = nullptr;  // a first picture of the other kind would need the context meanwhile
+  warming_ = true;
+  warmUp_ = std::thread([this, single, sampling, width, height, done] {
+    firstContext_->makeCurrent();
+    first_->interpreters.warm(sampling, single, [&](RayTracer& t, const Scene& s) {
+      drawInterpreterWarmUp(t, first_->warmTarget, s, width, height);
+    });
+    glFinish();
+    GlfwWindowContext::releaseCurrent();  // for the window's thread to make current
+    warm_[sampling] = first_->interpreters.warmed(sampling);
+    warming_ = false;
+    if (done) done();
   });
 }
 
 bool SurfaceView::showQuick(const QuickSurface& surface) {
+  if (warming_) return false;
   std::string error;
   FirstPicturesScope scope(*this);
   RayTracer* tracer = first_->interpreters.load(surface, error);

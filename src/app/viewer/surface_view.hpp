@@ -8,13 +8,18 @@
 // A new formula's first picture comes from the tape interpreter (docs/interpreter.md) until
 // its own surface is uploaded, drawn in a GL context of its own where the viewer gives one.
 // Needs the window's GL context current for its whole life.
+#include <array>
+#include <atomic>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "pipeline/load_surface.hpp"
 #include "pipeline/pipeline.hpp"
+#include "render/glfw_context.hpp"
 #include "render/ray_tracer.hpp"
 #include "render/view_target.hpp"
 
@@ -32,7 +37,8 @@ class SurfaceView {
   // beyond a budget, and a formula's own program compiled beside the interpreter with every
   // operation would drop the interpreter's: the next first picture would compile it again,
   // a pause of over a second (docs/interpreter.md). Call before the interpreters warm up.
-  void drawFirstPicturesIn(std::unique_ptr<GlContext> first, GlContext* home);
+  // A hidden window's context: the interpreters warm up in it on a thread of their own.
+  void drawFirstPicturesIn(std::unique_ptr<GlfwWindowContext> first, GlContext* home);
 
   // Compiles the shaders (skipped when their text equals the current program's: a new
   // parameter value or octree level changes only the hierarchy), then sets the hierarchy
@@ -45,11 +51,15 @@ class SurfaceView {
   void setBeamPass(bool on) { tracer_.setBeamPass(on); }
   bool ready() const { return tracer_.ready() || quick_; }
 
-  // The interpreters compiled for this kind of method (fast once the surface worker's
-  // ShaderWarmer has compiled them: the driver's cache holds them).
+  // Compiles and draws the interpreters for this kind of method (quicker once the surface
+  // worker's ShaderWarmer has compiled them: the driver's cache holds them). With a context
+  // of their own this happens on a thread of its own, which calls `done` when it finishes
+  // (from that thread), and the window's frames go on meanwhile: on llvmpipe it takes about
+  // a second even from the cache. Without, it happens here, before this returns.
   // width x height: the window's, whose first pictures they draw.
-  void warmInterpreters(const Scene& scene, int width, int height);
-  bool interpretersWarm(bool sampling) const { return first_->interpreters.warmed(sampling); }
+  void warmInterpreters(const Scene& scene, int width, int height,
+                        const std::function<void()>& done = {});
+  bool interpretersWarm(bool sampling) const { return warm_[sampling]; }
   // Draws `surface` with the tape interpreter from the next trace on, until an upload that
   // ends it; false (nothing changes) when no interpreter is ready for it.
   bool showQuick(const QuickSurface& surface);
@@ -96,13 +106,18 @@ class SurfaceView {
                   int h);
 
   RayTracer tracer_;
-  std::unique_ptr<GlContext> firstContext_;
+  std::unique_ptr<GlfwWindowContext> firstContext_;
   GlContext* home_ = nullptr;
   std::unique_ptr<FirstPictures> first_;
   std::vector<unsigned char> quickPixels_;
   RayTracer* quick_ = nullptr;  // the interpreter drawing a first picture, or none
   ViewTarget full_, reduced_;
   int lastScale_ = 0;  // which target holds the latest image; 0 = none yet
+  // The warm-up thread owns the first pictures' context (and first_) while warming_ is set:
+  // nothing here makes that context current meanwhile.
+  std::thread warmUp_;
+  std::atomic<bool> warming_{false};
+  std::array<std::atomic<bool>, 2> warm_{};  // [sampling]: the interpreters draw
 };
 
 }  // namespace zs::app

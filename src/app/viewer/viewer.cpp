@@ -199,12 +199,16 @@ void Viewer::frame() {
   releaseWaitingInput();
   runPending();
   takeBuild();
-  // Once the worker has compiled the interpreters, the window's compile of them is quick.
+  // Once the worker has compiled the interpreters, the first pictures' compile of them is
+  // quicker; it runs beside the window's frames and wakes them when it is done.
   const bool sampling = scene_.render.tracing.method == TracingMethod::Sampling;
   if (!view_->interpretersWarm(sampling) && warmer_->interpretersWarm(sampling)) {
     int width = 0, height = 0;
     window_->framebufferSize(width, height);
-    view_->warmInterpreters(scene_, width, height);
+    view_->warmInterpreters(scene_, width, height, [] { glfwPostEmptyEvent(); });
+  }
+  if (view_->interpretersWarm(sampling) && !firstPicturesSaid_[sampling]) {
+    firstPicturesSaid_[sampling] = true;
     if (options_.log) {
       std::printf("first pictures ready\n");
       std::fflush(stdout);

@@ -5,6 +5,7 @@
 // each path printed on stdout as "screenshot: PATH" / "saved: PATH". Surfaces are built on
 // a worker thread (surface_worker.hpp); only the GL upload runs on the main thread. Another
 // thread (the prompt) may post commands; they run on the main thread between frames.
+#include <array>
 #include <chrono>
 #include <deque>
 #include <filesystem>
@@ -176,6 +177,7 @@ class Viewer {
   std::optional<std::chrono::steady_clock::time_point> buildAt_;  // debounced formula build
   std::string quickFormula_;  // the formula of the first picture on screen, "" if none
   bool interpretersAsked_ = false;  // the worker was asked to warm the interpreters
+  std::array<bool, 2> firstPicturesSaid_{};  // [sampling]: "first pictures ready" was logged
   std::vector<int> pressedSincePoll_, heldKeys_;  // holdQuickKeys
   struct MouseButtonEvent {
     int button;
