@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string_view>
 #include <vector>
 
 #include "codegen/body_writer.hpp"
@@ -36,10 +38,19 @@ std::string roundedUpLiteral(double v) {
   return t;
 }
 
+std::size_t count(const std::string& text, std::string_view what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
 // The expansion's arithmetic as GLSL text: the operators of double (fp64), or calls to the
 // double-float functions of kDoubleFloatGlsl (GLSL ES: a value is a vec2 hi + lo).
 struct WideOps {
   bool df = false;
+  // Products of at least this many terms as calls of zs_dfConvolve (a loop) instead of
+  // written out term by term; 0: none.
+  int loopTerms = 0;
   std::string add(const std::string& a, const std::string& b) const {
     return df ? "zs_dfAdd(" + a + ", " + b + ")" : a + " + " + b;
   }
@@ -209,6 +220,12 @@ class TaylorWriter {
   // Convolution truncated at the degree of F: coefficients past it cannot reach F.
   Coeffs product(const Coeffs& a, const Coeffs& b) {
     const int n = std::min<int>(int(a.size() + b.size()) - 1, degree_ + 1);
+    if (ops_.loopTerms > 0) {
+      int terms = 0;
+      for (int k = 0; k < n; ++k)
+        terms += std::min(k, int(a.size()) - 1) - std::max(0, k - int(b.size()) + 1) + 1;
+      if (terms >= ops_.loopTerms) return loopProduct(a, b, n);
+    }
     Coeffs r(static_cast<std::size_t>(n));
     const bool square = a == b;
     for (int k = 0; k < n; ++k) {
@@ -224,6 +241,26 @@ class TaylorWriter {
       r[std::size_t(k)] = sum;
     }
     return declare(r);
+  }
+
+  // The same convolution by zs_dfConvolve, which sums each coefficient's products in
+  // ascending order from zero (an exact first addition): no more roundings on any path than
+  // the sum written out (productRoundings), so the same bound holds.
+  Coeffs loopProduct(const Coeffs& a, const Coeffs& b, int n) {
+    const std::string name = "c" + std::to_string(next_++);
+    const auto constructor = [&](const Coeffs& c) {
+      std::string t = "vec2[zs_N](";
+      for (int k = 0; k <= degree_; ++k)
+        t += (k ? ", " : "") + (k < int(c.size()) ? c[std::size_t(k)] : std::string("vec2(0.0)"));
+      return t + ")";
+    };
+    out += "  vec2 " + name + "[zs_N];\n";
+    out += "  zs_dfConvolve(" + constructor(a) + ", " + std::to_string(a.size()) + ", " +
+           constructor(b) + ", " + std::to_string(b.size()) + ", " + std::to_string(n) + ", " + name +
+           ");\n";
+    Coeffs r;
+    for (int k = 0; k < n; ++k) r.push_back(name + "[" + std::to_string(k) + "]");
+    return r;
   }
 
   // Roundings a convolution adds to its factors' own: one per product, and the longest sum.
@@ -479,13 +516,31 @@ std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f,
 
   WideOps ops;
   ops.df = !fp64;
-  TaylorWriter taylor(g, names, d, ops);
-  for (NodeId id : order) taylor.define(id);
+  std::optional<TaylorWriter> written;
+  written.emplace(g, names, d, ops);
+  for (NodeId id : order) written->define(id);
+  if (ops.df && count(written->out, "zs_dfMul(") > kDoubleFloatUnrolledProducts) {
+    ops.loopTerms = kDoubleFloatLoopTerms;
+    written.emplace(g, names, d, ops);
+    for (NodeId id : order) written->define(id);
+  }
+  TaylorWriter& taylor = *written;
   // The rounding count of the coefficients, plus that of the conversion to Bernstein form
   // (d + 1 products summed, the matrix entries rounded once).
   s += "\n// Roundings on the longest path to a Bernstein coefficient in zs_Wide (zs_FPoly's error\n";
   s += "// bound, with the conversion's d + 1 products summed).\n";
   s += "const zs_Bound zs_ROUNDINGS = " + std::to_string(taylor.roundingsOf(f) + d + 3) + ".0;\n";
+  if (ops.loopTerms > 0) {
+    s += "\n// r_k = sum_i a_i b_(k-i) for k < n, in double-float, i ascending.\n"
+         "void zs_dfConvolve(vec2 a[zs_N], int na, vec2 b[zs_N], int nb, int n, out vec2 r[zs_N]) {\n"
+         "  for (int k = 0; k < zs_N; ++k) {\n"
+         "    vec2 sum = vec2(0.0);\n"
+         "    for (int i = max(0, k - nb + 1); i <= min(k, na - 1) && k < n; ++i)\n"
+         "      sum = zs_dfAdd(sum, zs_dfMul(a[i], b[k - i]));\n"
+         "    r[k] = sum;\n"
+         "  }\n"
+         "}\n";
+  }
   s += "\n// Coefficients of f(s) in the power basis, in zs_Wide, and `bound` >= sum_k |c_k| computed\n";
   s += "// with every operation on absolute values: the error of any Bernstein coefficient made\n";
   s += "// from them in zs_Wide is at most zs_ROUNDINGS zs_WIDE_EPS bound. False where F is\n";

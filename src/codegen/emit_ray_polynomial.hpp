@@ -52,10 +52,17 @@ struct RayPolynomialGlsl {
 
 // GLSL ES 3.00 (WebGL2) has no double: there the expansion runs in double-float arithmetic
 // (a value is a float pair, about 44 bits) with the same a priori bound taken with its
-// roundoff, and the isolation in float, up to this degree. Above it the shader's JIT in a
-// software WebGL (SwiftShader) takes minutes, and the web build traces with interval
-// arithmetic (docs/web.md).
-inline constexpr int kWebBernsteinMaxDegree = 10;
+// roundoff, and the isolation in float, up to this degree. Above it the web build traces
+// with interval arithmetic (docs/web.md).
+inline constexpr int kWebBernsteinMaxDegree = 12;
+// A software WebGL's JIT (SwiftShader's) takes time that grows faster than the expansion's
+// length: written out term by term, a double-float expansion of more than this many
+// products (the Sarti dodecic's has about 1,400) compiled for minutes. Such an expansion
+// writes its convolutions of at least kDoubleFloatLoopTerms terms as calls of one loop
+// (zs_dfConvolve), which sums the same products in the same order; the rest stay written
+// out, since a loop over arrays runs several times slower.
+inline constexpr int kDoubleFloatUnrolledProducts = 600;
+inline constexpr int kDoubleFloatLoopTerms = 40;
 
 // Degree of f(s) the block would have: the structural degree of F, or nothing when F is not
 // a polynomial in x, y, z (parameters are coefficients).

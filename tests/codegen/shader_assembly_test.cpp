@@ -11,6 +11,7 @@
 #include "codegen/emit_ray_polynomial.hpp"
 #include "codegen/glsl_validation.hpp"
 #include "parser/parser.hpp"
+#include "scene/scene_io.hpp"
 #include "codegen_test_util.hpp"
 
 namespace zs::test {
@@ -93,6 +94,31 @@ TEST(ShaderAssembly, GlslEsShadersPassGlslangForEveryMethod) {
   }
   const ValidationResult vertex = validateGlsl(vertexShaderSource(ShaderDialect::Es300), Stage::Vertex);
   EXPECT_TRUE(vertex.ok) << formatInternalShaderError("GLSL ES vertex shader", vertex);
+}
+
+// A double-float expansion too long to write out term by term (a software WebGL's JIT took
+// minutes over the Sarti dodecic's) writes its large convolutions as calls of one loop; a
+// shorter one, and every desktop expansion, stays written out. Both pass glslang.
+TEST(ShaderAssembly, LongDoubleFloatExpansionsConvolveInALoop) {
+  for (const auto& [example, loops] : {std::pair{"sarti-dodecic", true}, {"endrass-octic", false}}) {
+    SCOPED_TRACE(example);
+    SceneResult loaded = loadScene(sourceDir() / "examples" / (std::string(example) + ".surf"));
+    ASSERT_TRUE(std::holds_alternative<Scene>(loaded));
+    const std::string text = std::get<Scene>(loaded).formula;
+    ParseResult parsed = parseFormula(text);
+    ASSERT_TRUE(std::holds_alternative<Formula>(parsed));
+    const Formula& f = std::get<Formula>(parsed);
+    const auto web = emitRayPolynomialGlsl(f.graph, f.root, false);
+    const auto desktop = emitRayPolynomialGlsl(f.graph, f.root, true);
+    ASSERT_TRUE(web && desktop);
+    EXPECT_EQ(web->source.find("zs_dfConvolve(") != std::string::npos, loops);
+    EXPECT_EQ(desktop->source.find("zs_dfConvolve("), std::string::npos);
+    const std::optional<GlslFormula> glsl = generate(text);
+    ASSERT_TRUE(glsl);
+    const ValidationResult result =
+        validateGlsl(assembleFragmentShader(*glsl, *web, {}, ShaderDialect::Es300), Stage::Fragment);
+    EXPECT_TRUE(result.ok) << formatInternalShaderError("GLSL ES fragment shader", result);
+  }
 }
 
 // The program variants the renderer and the page put in front of a shader
