@@ -229,6 +229,9 @@ class Viewer {
   std::deque<Pending> pending_;
   bool closed_ = false;
   std::vector<Waiting> waiting_;  // main thread only
+  // Since when waiting_ has waited for builds, and whether the log has said so.
+  std::optional<std::chrono::steady_clock::time_point> waitingSince_;
+  bool waitingSaid_ = false;
   bool windowShot_ = false;        // Shift+C: capture before the next swap
   std::string lastBuildError_;    // of the latest build request, "" when it is on screen
   std::filesystem::path sceneFile_;      // where the shown scene was loaded from, if anywhere
