@@ -496,7 +496,8 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision, bool fp64) {
   return s;
 }
 
-std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f, bool fp64) {
+std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f, bool fp64,
+                                                       DoubleFloatLoops loops) {
   const std::optional<int> degree = rayPolynomialDegree(g, f);
   if (!degree) return std::nullopt;
   // A constant F is traced as a polynomial of degree 1 whose slope is 0: the kernels need
@@ -519,8 +520,8 @@ std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f,
   std::optional<TaylorWriter> written;
   written.emplace(g, names, d, ops);
   for (NodeId id : order) written->define(id);
-  if (ops.df && count(written->out, "zs_dfMul(") > kDoubleFloatUnrolledProducts) {
-    ops.loopTerms = kDoubleFloatLoopTerms;
+  if (ops.df && count(written->out, "zs_dfMul(") > std::size_t(std::max(loops.products, 0))) {
+    ops.loopTerms = std::max(loops.terms, 1);
     written.emplace(g, names, d, ops);
     for (NodeId id : order) written->define(id);
   }

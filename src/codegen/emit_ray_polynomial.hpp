@@ -58,11 +58,13 @@ inline constexpr int kWebBernsteinMaxDegree = 12;
 // A software WebGL's JIT (SwiftShader's) takes time that grows faster than the expansion's
 // length: written out term by term, a double-float expansion of more than this many
 // products (the Sarti dodecic's has about 1,400) compiled for minutes. Such an expansion
-// writes its convolutions of at least kDoubleFloatLoopTerms terms as calls of one loop
-// (zs_dfConvolve), which sums the same products in the same order; the rest stay written
-// out, since a loop over arrays runs several times slower.
-inline constexpr int kDoubleFloatUnrolledProducts = 600;
-inline constexpr int kDoubleFloatLoopTerms = 40;
+// writes its convolutions of at least `terms` terms as calls of one loop (zs_dfConvolve),
+// which sums the same products in ascending order; the rest stay written out, since a loop
+// over arrays runs several times slower.
+struct DoubleFloatLoops {
+  int products = 600;  // loops only in an expansion of more products than this written out
+  int terms = 40;
+};
 
 // Degree of f(s) the block would have: the structural degree of F, or nothing when F is not
 // a polynomial in x, y, z (parameters are coefficients).
@@ -71,8 +73,9 @@ std::optional<int> rayPolynomialDegree(const Graph& g, NodeId f);
 // Nothing when F is not a polynomial. The formula block (emit_glsl.hpp) must precede it: it
 // declares zs_params.
 // fp64 false (GLSL ES): the expansion in double-float and the isolation in float, whatever
-// the degree.
-std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f, bool fp64 = true);
+// the degree, its long convolutions as `loops` says.
+std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f, bool fp64 = true,
+                                                       DoubleFloatLoops loops = {});
 
 // The Bernstein kernels alone for degree d (part of the block above); exposed for tests.
 std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision = false, bool fp64 = true);
