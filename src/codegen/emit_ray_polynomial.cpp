@@ -38,7 +38,8 @@ std::string roundedUpLiteral(double v) {
   return t;
 }
 
-std::size_t count(const std::string& text, std::string_view what) {
+// How often `what` occurs in `text`.
+std::size_t occurrences(const std::string& text, std::string_view what) {
   std::size_t n = 0;
   for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
   return n;
@@ -520,7 +521,7 @@ std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f,
   std::optional<TaylorWriter> written;
   written.emplace(g, names, d, ops);
   for (NodeId id : order) written->define(id);
-  if (ops.df && count(written->out, "zs_dfMul(") > std::size_t(std::max(loops.products, 0))) {
+  if (ops.df && occurrences(written->out, "zs_dfMul(") > std::size_t(std::max(loops.products, 0))) {
     ops.loopTerms = std::max(loops.terms, 1);
     written.emplace(g, names, d, ops);
     for (NodeId id : order) written->define(id);

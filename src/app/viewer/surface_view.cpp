@@ -61,25 +61,27 @@ void SurfaceView::warmInterpreters(const Scene& scene, int width, int height,
   if (warm_[sampling] || warming_) return;
   Scene single = scene;
   single.render = firstPictureSettings(scene.render);
-  if (!firstContext_) {
+  // On the thread whose context is current; says whether they draw.
+  const auto warm = [this, single, sampling, width, height] {
     first_->interpreters.warm(sampling, single, [&](RayTracer& t, const Scene& s) {
       drawInterpreterWarmUp(t, first_->warmTarget, s, width, height);
     });
-    warm_[sampling] = first_->interpreters.warmed(sampling);
+    return first_->interpreters.warmed(sampling);
+  };
+  if (!firstContext_) {
+    warm_[sampling] = warm();
     if (done) done();
     return;
   }
   if (warmUp_.joinable()) warmUp_.join();  // the warm-up of the other kind, finished
   quick_ = nullptr;  // a first picture of the other kind would need the context meanwhile
   warming_ = true;
-  warmUp_ = std::thread([this, single, sampling, width, height, done] {
+  warmUp_ = std::thread([this, warm, sampling, done] {
     firstContext_->makeCurrent();
-    first_->interpreters.warm(sampling, single, [&](RayTracer& t, const Scene& s) {
-      drawInterpreterWarmUp(t, first_->warmTarget, s, width, height);
-    });
+    const bool warmed = warm();
     glFinish();
     GlfwWindowContext::releaseCurrent();  // for the window's thread to make current
-    warm_[sampling] = first_->interpreters.warmed(sampling);
+    warm_[sampling] = warmed;
     warming_ = false;
     if (done) done();
   });

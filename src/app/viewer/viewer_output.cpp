@@ -79,15 +79,11 @@ void Viewer::runPending() {
 }
 
 void Viewer::answerWaiting() {
-  if (waiting_.empty()) {
-    waitingSince_.reset();
-    return;
-  }
-  if (worker_->busy() || buildAt_) {
+  if (!waiting_.empty() && (worker_->busy() || buildAt_)) {
     // Said once per wait, in the log: an output held for seconds by builds that keep coming.
     const auto now = std::chrono::steady_clock::now();
     if (!waitingSince_) waitingSince_ = now;
-    if (options_.log && now - *waitingSince_ > std::chrono::seconds(2) && !waitingSaid_) {
+    if (options_.log && !waitingSaid_ && now - *waitingSince_ > std::chrono::seconds(2)) {
       waitingSaid_ = true;
       std::printf("%zu outputs wait for the build in progress\n", waiting_.size());
       std::fflush(stdout);
@@ -96,6 +92,7 @@ void Viewer::answerWaiting() {
   }
   waitingSince_.reset();
   waitingSaid_ = false;
+  if (waiting_.empty()) return;
   std::vector<Waiting> ready;
   ready.swap(waiting_);
   for (Waiting& w : ready) {
