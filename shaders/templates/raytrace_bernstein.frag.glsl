@@ -60,65 +60,84 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   float u = 0.0, size = 1.0;  // the tree interval [u, u + size] of the window being classified
   int step = 0, windows = 0;
   do {
-    len = wb - wa;
-    zs_Wide wide[zs_N];  // double, or double-float in GLSL ES (emit_ray_polynomial.hpp)
-    zs_Bound bound;
-    bool defined = zs_FPolyOn(o, d, wa, wb, wide, bound);
-    zs_toBernstein(wide, b0, c);
-    zs_Real noise = rtNoise(bound, zs_maxAbs(b0));
-    float tolerance = rt.tangentTolerance / len;  // in units of s
-    bool mayZoom = windows + 1 < RT_MAX_WINDOWS && len > 4.0 * rt.tangentTolerance;
-    bool zoom = false;
-    // F undefined on the whole ray, or an empty segment (a ray that misses the domain or is
-    // cut away by a clip plane): nothing to find. Such a lane still runs the isolation body
-    // once, on coefficients of no meaning, so `none` holds for it there: a root "found" in
-    // them would be refined on a window of negative length, whose stop test never passes.
-    done = !defined || !(len > 0.0);
-    u = 0.0;
-    size = 1.0;
-    // Isolation: the first interval of the tree, left to right, that holds a root. The body
-    // is kept to what every step needs (llvmpipe runs all of it for every group of pixels);
-    // what the interval found needs is computed after the loop.
-    do {
-      float w = u + size;
-      zs_restrict(b0, u, w, b);
-      zs_Real4 k = zs_classify(b);  // (min, max, V, V of the derivative)
-      // Signs the rounding cannot have changed.
-      bool startPos = b[0] > noise, startNeg = b[0] < -noise;
-      bool endPos = b[zs_DEGREE] > noise, endNeg = b[zs_DEGREE] < -noise;
-      bool none = done || !(k.x <= noise && k.y >= -noise);  // also NaN (overflow)
-      bool monotone = k.w == 0.0;
-      // Monotone with both ends of one sign: no root, and no touching either (the least |f|
-      // is at an end, which the neighbouring interval holds).
-      none = none || (monotone && ((startPos && endPos) || (startNeg && endNeg)));
-      // Ends of opposite signs hold a root; one sign change of the control polygon, or a
-      // monotone f, makes it the only one.
-      isolated = !none && ((startPos && endNeg) || (startNeg && endPos)) &&
-                 (k.z == 1.0 || monotone);
-      bool undecided = !none && !isolated;
-      // Every coefficient within the noise: this expansion cannot tell f from 0 here, and
-      // halving cannot change that; an expansion about this interval alone can (5.).
-      bool blurred = k.x >= -noise && k.y <= noise && size < 1.0;
-      bool small = size <= tolerance;
-      zoom = undecided && (small || blurred) && mayZoom;
-      found = isolated || (undecided && small && !zoom);  // a hit (header, 4.)
-      // Next: the left half of an undecided interval; after one with no root, the interval to
-      // the right, which starts at w and is as large as the highest tree node starting there:
-      // 2^(trailing zeros of its index at this level) times this one.
-      int index = int(w / size + 0.5);
-      float climbed = size * float(index & -index);
-      u = none ? w : u;
-      size = (found || zoom) ? size : (none ? climbed : 0.5 * size);
-    } while (!(done || found || zoom || u >= 1.0) && ++step < RT_MAX_STEPS);
-    // Next window: the undecided interval; after a window with no root, the rest of the
-    // segment, expanded anew (shorter than the window before, so its noise is smaller). Out
-    // of steps, the segment ends without a hit.
-    bool more = !done && (zoom || (!found && u >= 1.0 && wb < tb));
-    done = !more;
-    if (more) {
-      float next = wa + (u + size) * len;
-      wa = zoom ? wa + u * len : wb;
-      wb = zoom ? next : tb;
+    // Redundant in GLSL, needed on llvmpipe: without it a lane that had found its root in one
+    // window had `found` cleared while other lanes of its group walked later windows (docs/
+    // renderer.md, "Mesa 22.3 llvmpipe problems").
+    if (!done) {
+      len = wb - wa;
+      zs_Wide wide[zs_N];  // double, or double-float in GLSL ES (emit_ray_polynomial.hpp)
+      zs_Bound bound;
+      bool defined = zs_FPolyOn(o, d, wa, wb, wide, bound);
+      zs_toBernstein(wide, b0, c);
+      zs_Real maxAbs = zs_maxAbs(b0), noise0 = rtNoise(bound, maxAbs);
+      // f on [u, 1] of the window: each interval found free of roots is split off it, so a step
+      // is one de Casteljau pass; each such pass adds its rounding to the band.
+      zs_Real rest[zs_N] = b0, right[zs_N];
+      zs_Real passNoise = zs_EPS * zs_Real(4 * zs_DEGREE) * maxAbs, noise = noise0;
+      float tolerance = rt.tangentTolerance / len;  // in units of s
+      bool mayZoom = windows + 1 < RT_MAX_WINDOWS && len > 4.0 * rt.tangentTolerance;
+      bool zoom = false;
+      // F undefined on the whole ray, or an empty segment (a ray that misses the domain or is
+      // cut away by a clip plane): nothing to find. Such a lane still runs the isolation body
+      // once, on coefficients of no meaning, so `none` holds for it there: a root "found" in
+      // them would be refined on a window of negative length, whose stop test never passes.
+      done = !defined || !(len > 0.0);
+      u = 0.0;
+      // The whole window's control points are loose: it is decided at once too rarely to be
+      // worth a step, so the walk starts with its halves.
+      size = 0.5;
+      int node = 0;  // [u, u + size] is the node-th interval of its size: u = node * size
+      zs_Real lambda = zs_Real(size);  // where [u, u + size] ends in the rest [u, 1]
+      // Isolation: the first interval of the tree, left to right, that holds a root. The body
+      // is kept to what every step needs (llvmpipe runs all of it for every group of pixels);
+      // what the interval found needs is computed after the loop.
+      do {
+        float w = u + size;
+        zs_split(rest, lambda, b, right);
+        // The next interval after one with no root starts at w and is as large as the highest
+        // tree node starting there: 2^(trailing zeros of its index) times this one. Its lambda
+        // is computed here, beside the split, so no division waits for the classification.
+        int index = node + 1, up = index & -index;
+        float climbed = size * float(up);
+        zs_Real climbedLambda = w < 1.0 ? zs_Real(climbed) / zs_Real(1.0 - w) : zs_Real(1.0);
+        zs_Real4 k = zs_classify(b);  // (min, max, V, V of the derivative)
+        // Signs the rounding cannot have changed.
+        bool startPos = b[0] > noise, startNeg = b[0] < -noise;
+        bool endPos = b[zs_DEGREE] > noise, endNeg = b[zs_DEGREE] < -noise;
+        bool none = done || !(k.x <= noise && k.y >= -noise);  // also NaN (overflow)
+        bool monotone = k.w == 0.0;
+        // Monotone with both ends of one sign: no root, and no touching either (the least |f|
+        // is at an end, which the neighbouring interval holds).
+        none = none || (monotone && ((startPos && endPos) || (startNeg && endNeg)));
+        // Ends of opposite signs hold a root; one sign change of the control polygon, or a
+        // monotone f, makes it the only one.
+        isolated = !none && ((startPos && endNeg) || (startNeg && endPos)) &&
+                   (k.z == 1.0 || monotone);
+        bool undecided = !none && !isolated;
+        // Every coefficient within the noise: this expansion cannot tell f from 0 here, and
+        // halving cannot change that; an expansion about this interval alone can (5.).
+        bool blurred = k.x >= -noise && k.y <= noise && size < 1.0;
+        bool small = size <= tolerance;
+        zoom = undecided && (small || blurred) && mayZoom;
+        found = isolated || (undecided && small && !zoom);  // a hit (header, 4.)
+        // Next: the left half of an undecided interval; after one with no root, the climbed one.
+        lambda = none ? climbedLambda : 0.5 * lambda;
+        node = none ? index >> ((floatBitsToInt(float(up)) >> 23) - 127) : 2 * node;
+        zs_take(rest, right, none);
+        noise += none ? passNoise : zs_Real(0.0);
+        u = none ? w : u;
+        size = (found || zoom) ? size : (none ? climbed : 0.5 * size);
+      } while (!(done || found || zoom || u >= 1.0) && ++step < RT_MAX_STEPS);
+      // Next window: the undecided interval; after a window with no root, the rest of the
+      // segment, expanded anew (shorter than the window before, so its noise is smaller). Out
+      // of steps, the segment ends without a hit.
+      bool more = !done && (zoom || (!found && u >= 1.0 && wb < tb));
+      done = !more;
+      if (more) {
+        float next = wa + (u + size) * len;
+        wa = zoom ? wa + u * len : wb;
+        wb = zoom ? next : tb;
+      }
     }
   } while (!done && ++windows < RT_MAX_WINDOWS);
   isolated = isolated && found;

@@ -424,15 +424,21 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision, bool fp64) {
   }
   s += "}\n";
 
-  // Right part of the split at u ([u, 1]), then the left part of that at (w - u) / (1 - u).
-  s += "\nvoid zs_restrict(" + arrayParam("b") + ", float u, float w, out " + arrayParam("r") + ") {\n";
-  s += "  zs_Real t = zs_Real(u);\n";
-  const auto right = deCasteljau(s, "e", arrayNames("b", d), "t");
-  Coeffs tail;
-  for (int k = 0; k <= d; ++k) tail.push_back(right[std::size_t(d - k)][std::size_t(k)]);
-  s += "  zs_Real lambda = u < 1.0 ? zs_Real(w - u) / zs_Real(1.0 - u) : zs_Real(0.0);\n";
-  const auto left = deCasteljau(s, "h", tail, "lambda");
-  for (int k = 0; k <= d; ++k) s += "  " + idx("r", k) + " = " + left[std::size_t(k)][0] + ";\n";
+  // One de Casteljau pass at lambda: f on [0, lambda] and on [lambda, 1]. The isolation's walk
+  // keeps f on the rest of its window, so each of its steps is one pass (docs/renderer.md).
+  s += "\nvoid zs_split(" + arrayParam("b") + ", zs_Real lambda, out " + arrayParam("left") +
+       ", out " + arrayParam("right") + ") {\n";
+  const auto rows = deCasteljau(s, "e", arrayNames("b", d), "lambda");
+  for (int k = 0; k <= d; ++k) {
+    s += "  " + idx("left", k) + " = " + rows[std::size_t(k)][0] + ";\n";
+    s += "  " + idx("right", k) + " = " + rows[std::size_t(d - k)][std::size_t(k)] + ";\n";
+  }
+  s += "}\n";
+  // b = next where `take`, element by element (constant indices).
+  s += "\nvoid zs_take(inout " + arrayParam("b") + ", " + arrayParam("next") + ", bool take) {\n";
+  for (int k = 0; k <= d; ++k) {
+    s += "  " + idx("b", k) + " = take ? " + idx("next", k) + " : " + idx("b", k) + ";\n";
+  }
   s += "}\n";
 
   // Horner on the power basis (the Taylor coefficients themselves, not a conversion of them):
@@ -483,17 +489,39 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision, bool fp64) {
 
   // Sign changes count b_i > 0 against b_i <= 0, so a zero coefficient never hides a root:
   // the hull test (min, max) decides emptiness, the counts only decide when to stop.
+  // Selects, not min() and max(): llvmpipe builds those in double with NaN tests and a split
+  // of the vector, which made the classification cost as much as the restriction. Pairwise,
+  // so the chain of dependent selects is log2(d + 1) long, not d; counts in int. Only a NaN
+  // b_0 (overflow) reaches lo and hi (each select keeps its left operand unless the right
+  // one is beyond it), and then the interval is taken for free of roots.
   s += "\nzs_Real4 zs_classify(" + arrayParam("b") + ") {\n";
-  s += "  zs_Real lo = " + idx("b", 0) + ", hi = " + idx("b", 0) + ", v = 0.0, dv = 0.0;\n";
+  std::vector<std::string> lo = arrayNames("b", d), hi = lo;
+  for (int level = 0; lo.size() > 1; ++level) {
+    std::vector<std::string> nextLo, nextHi;
+    for (std::size_t i = 0; i < lo.size(); i += 2) {
+      if (i + 1 == lo.size()) {
+        nextLo.push_back(lo[i]);
+        nextHi.push_back(hi[i]);
+        continue;
+      }
+      const std::string n = std::to_string(level) + "_" + std::to_string(i / 2);
+      s += "  zs_Real lo" + n + " = " + lo[i + 1] + " < " + lo[i] + " ? " + lo[i + 1] + " : " + lo[i] +
+           ", hi" + n + " = " + hi[i + 1] + " > " + hi[i] + " ? " + hi[i + 1] + " : " + hi[i] + ";\n";
+      nextLo.push_back("lo" + n);
+      nextHi.push_back("hi" + n);
+    }
+    lo = nextLo;
+    hi = nextHi;
+  }
+  s += "  zs_Real lo = " + lo[0] + ", hi = " + hi[0] + ";\n  int v = 0, dv = 0;\n";
+  s += "  bool p0 = " + idx("b", 0) + " > 0.0;\n";
   for (int i = 1; i <= d; ++i) {
-    s += "  lo = min(lo, " + idx("b", i) + "); hi = max(hi, " + idx("b", i) + ");\n";
-    s += "  v += zs_Real((" + idx("b", i - 1) + " > 0.0) != (" + idx("b", i) + " > 0.0));\n";
+    const std::string bi = idx("b", i), n = std::to_string(i), m = std::to_string(i - 1);
+    s += "  bool p" + n + " = " + bi + " > 0.0; v += int(p" + m + " != p" + n + ");\n";
+    s += "  bool g" + n + " = " + bi + " > " + idx("b", i - 1) + ";\n";
+    if (i >= 2) s += "  dv += int(g" + m + " != g" + n + ");\n";
   }
-  for (int i = 1; i < d; ++i) {
-    s += "  dv += zs_Real((" + idx("b", i) + " > " + idx("b", i - 1) + ") != (" + idx("b", i + 1) +
-         " > " + idx("b", i) + "));\n";
-  }
-  s += "  return zs_Real4(lo, hi, v, dv);\n}\n";
+  s += "  return zs_Real4(lo, hi, zs_Real(v), zs_Real(dv));\n}\n";
   return s;
 }
 
