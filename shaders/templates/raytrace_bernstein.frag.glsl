@@ -10,16 +10,17 @@
 //     with a monotone f (no sign change among the derivative's coefficients), isolate one
 //     root; every coefficient beyond the noise band on one side proves there is none.
 //     Otherwise the interval is halved, walking the implicit binary tree of intervals
-//     [k, k+1] 2^-level left to right with no stack: every visited interval is restricted
-//     from the segment's coefficients by de Casteljau, so nothing is kept per level. The
-//     first interval that holds a root holds the nearest one.
+//     [k, k+1] 2^-level left to right with no stack, from the segment's two halves. The walk
+//     keeps f on the rest [u, 1] of the window: one de Casteljau pass (zs_split) gives the
+//     visited interval and the rest after it, so nothing is kept per level. The first
+//     interval that holds a root holds the nearest one.
 //  3. The isolated root is refined from where the control polygon crosses 0 by Halley steps
 //     safeguarded by bisection inside its bracket until a step is below tracing.epsilon / 16;
 //     f, f' and f'' come from the Taylor coefficients by Horner (3D multiply-adds, against
-//     D^2 for a restriction).
+//     D^2 for a de Casteljau pass).
 //  4. Rounding: every sign decision is made against a noise band that bounds what rounding
 //     can have done to a coefficient (the expansion's a priori error bound, the one rounding
-//     of its result to zs_Real, the de Casteljau steps). An interval narrower than the
+//     of its result to zs_Real, the de Casteljau passes). An interval narrower than the
 //     tangent tolerance (1e-5 of the domain diagonal) that still cannot be decided by an
 //     expansion no longer than a few tolerances holds a root of even multiplicity, a
 //     cluster of roots, or a ray passing closer than rounding can tell from touching: it is
@@ -32,15 +33,16 @@
 //     expanded anew. So a hit stands on a proven root, or on f within rounding of 0 over a
 //     stretch narrower than the tolerance where f is expanded about that stretch itself.
 // llvmpipe runs every branch of a loop body for each group of pixels: the isolation loop's
-// body makes exactly one zs_restrict call, refinement has a loop of its own (sharing one
-// loop made every refinement step pay for a restriction), and loops are do-while (a for loop
+// body makes exactly one zs_split call, refinement has a loop of its own (sharing one
+// loop made every refinement step pay for a pass), and loops are do-while (a for loop
 // runs its body once more, masked, after its last iteration).
 
 
-// What rounding can have done to any coefficient of any restriction of b0 (4.): the Taylor
-// arithmetic and the conversion in zs_Wide (a priori, from the absolute-value bound), the
-// one rounding to zs_Real, and the de Casteljau steps (convex combinations: a few roundings
-// of the largest coefficient each). A volume's windows use it too (raytrace_volume.frag.glsl).
+// What rounding can have done to any coefficient of an interval split off b0 by two de
+// Casteljau passes (4.): the Taylor arithmetic and the conversion in zs_Wide (a priori, from
+// the absolute-value bound), the one rounding to zs_Real, and the passes (convex
+// combinations: a few roundings of the largest coefficient each; the walk adds one pass's
+// worth for each interval it splits off the rest). A volume's windows use it too (raytrace_volume.frag.glsl).
 // maxAbs: zs_maxAbs(b0).
 zs_Real rtNoise(zs_Bound bound, zs_Real maxAbs) {
   return max(zs_Real(zs_ROUNDINGS * zs_WIDE_EPS * bound) +
@@ -148,7 +150,7 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   float x = isolated ? u + size * zs_firstCrossing(b) : u + 0.5 * size;
 
   // Refinement of an isolated root: Halley steps safeguarded by bisection inside the bracket,
-  // on the power basis (Horner, far cheaper than a restriction), until a step is below stop.
+  // on the power basis (Horner, far cheaper than a de Casteljau pass), until a step is below stop.
   // Its own loop: a Horner step is a fraction of an isolation step, and a shared loop body
   // would pay for both on every iteration.
   bool refining = isolated;

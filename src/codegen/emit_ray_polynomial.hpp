@@ -14,7 +14,9 @@
 //        expansion with every operation on absolute values
 //   void zs_toBernstein(zs_Wide c[zs_N], out zs_Real b[zs_N], out zs_Real narrow[zs_N]);
 //        // Bernstein on [0, 1] (s' = (s+1)/2) in zs_Wide, rounded once; narrow: c rounded once
-//   void zs_restrict(zs_Real b[zs_N], float u, float w, out zs_Real r[zs_N]);  // to [u, w]
+//   void zs_split(zs_Real b[zs_N], zs_Real lambda, out zs_Real left[zs_N],
+//        out zs_Real right[zs_N]);  // f on [0, lambda] and [lambda, 1]: one de Casteljau pass
+//   void zs_take(inout zs_Real b[zs_N], zs_Real next[zs_N], bool take);  // b = next if take
 //   vec3 zs_powerAt(zs_Real c[zs_N], zs_Real x);  // (f, f', f''/2) at s = x in [-1, 1], Horner
 //   float zs_firstCrossing(zs_Real b[zs_N]);  // first zero of the control polygon, in [0, 1]
 //   zs_Real zs_maxAbs(zs_Real b[zs_N]);       // largest |coefficient|
