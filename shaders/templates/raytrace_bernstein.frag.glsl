@@ -102,23 +102,24 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
         int index = node + 1, up = index & -index;
         float climbed = size * float(up);
         zs_Real climbedLambda = w < 1.0 ? zs_Real(climbed) / zs_Real(1.0 - w) : zs_Real(1.0);
-        zs_Real4 k = zs_classify(b);  // (min, max, V, V of the derivative)
+        // (all beyond the noise on one side: its sign; all within it; V; V of the derivative)
+        ivec4 k = zs_bands(b, noise);
         // Signs the rounding cannot have changed.
         bool startPos = b[0] > noise, startNeg = b[0] < -noise;
         bool endPos = b[zs_DEGREE] > noise, endNeg = b[zs_DEGREE] < -noise;
-        bool none = done || !(k.x <= noise && k.y >= -noise);  // also NaN (overflow)
-        bool monotone = k.w == 0.0;
+        bool none = done || k.x != 0;
+        bool monotone = k.w == 0;
         // Monotone with both ends of one sign: no root, and no touching either (the least |f|
         // is at an end, which the neighbouring interval holds).
         none = none || (monotone && ((startPos && endPos) || (startNeg && endNeg)));
         // Ends of opposite signs hold a root; one sign change of the control polygon, or a
         // monotone f, makes it the only one.
         isolated = !none && ((startPos && endNeg) || (startNeg && endPos)) &&
-                   (k.z == 1.0 || monotone);
+                   (k.z == 1 || monotone);
         bool undecided = !none && !isolated;
         // Every coefficient within the noise: this expansion cannot tell f from 0 here, and
         // halving cannot change that; an expansion about this interval alone can (5.).
-        bool blurred = k.x >= -noise && k.y <= noise && size < 1.0;
+        bool blurred = k.y == 1 && size < 1.0;
         bool small = size <= tolerance;
         zoom = undecided && (small || blurred) && mayZoom;
         found = isolated || (undecided && small && !zoom);  // a hit (header, 4.)

@@ -70,11 +70,12 @@ ivec2 rtVolumeWindow(vec3 o, vec3 d, float ta, float h, int n, float band) {
   if (!zs_FPolyOn(o, d, ta, ta + float(n) * h, wide, bound)) return ivec2(0, n);
   zs_toBernstein(wide, b, c);
   zs_Real lim = zs_Real(band) + rtNoise(bound, zs_maxAbs(b));
-  zs_Real4 k = zs_classify(b);
+  zs_Real lo, hi;
+  zs_extremes(b, lo, hi);
   // Overflow (an infinite or NaN coefficient or band) bounds nothing: every step is sampled.
   const zs_Real huge = zs_Real(3.0e38);
-  if (!(abs(k.x) < huge && abs(k.y) < huge && lim < huge)) return ivec2(0, n);
-  if (!(k.x < lim && k.y > -lim)) return ivec2(n);
+  if (!(abs(lo) < huge && abs(hi) < huge && lim < huge)) return ivec2(0, n);
+  if (!(lo < lim && hi > -lim)) return ivec2(n);
   vec2 clear = zs_clearEnds(b, lim);
   // Step j's midpoint lies at (j + 1/2) / n of the stretch.
   float first = ceil(clear.x * float(n) - 0.5 - 0.0625);

@@ -487,14 +487,33 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision, bool fp64) {
   s += "  return vec2(h0 > 0.0 ? (m0 > h0 ? float(h0 / m0) * 0.99999 : 1.0) : 0.0,\n"
        "              h1 > 0.0 ? (m1 > h1 ? float(h1 / m1) * 0.99999 : 1.0) : 0.0);\n}\n";
 
-  // Sign changes count b_i > 0 against b_i <= 0, so a zero coefficient never hides a root:
-  // the hull test (min, max) decides emptiness, the counts only decide when to stop.
-  // Selects, not min() and max(): llvmpipe builds those in double with NaN tests and a split
-  // of the vector, which made the classification cost as much as the restriction. Pairwise,
-  // so the chain of dependent selects is log2(d + 1) long, not d; counts in int. Only a NaN
-  // b_0 (overflow) reaches lo and hi (each select keeps its left operand unless the right
-  // one is beyond it), and then the interval is taken for free of roots.
-  s += "\nzs_Real4 zs_classify(" + arrayParam("b") + ") {\n";
+  // The isolation's tests, counted in int rather than taken from the extremes (llvmpipe
+  // builds min and max of doubles with NaN tests and a split of the vector, and && chains
+  // slowed its loop too): (1 when every coefficient lies above noise, -1 when every one lies
+  // below -noise, else 0; 1 when every one lies within [-noise, noise]; the sign changes V
+  // of b; those of its differences). A NaN coefficient (overflow) counts as above and below:
+  // such an interval proves nothing and is passed over. Sign changes count b_i > 0 against
+  // b_i <= 0, so a zero coefficient never hides a root: the band tests decide emptiness, the
+  // counts only decide when to stop.
+  s += "\nivec4 zs_bands(" + arrayParam("b") + ", zs_Real noise) {\n  int above = 0, below = 0;\n";
+  for (int i = 0; i <= d; ++i) {
+    const std::string bi = idx("b", i);
+    s += "  above += int(!(" + bi + " <= noise)); below += int(!(" + bi + " >= -noise));\n";
+  }
+  s += "  int v = 0, dv = 0;\n  bool p0 = " + idx("b", 0) + " > 0.0;\n";
+  for (int i = 1; i <= d; ++i) {
+    const std::string bi = idx("b", i), n = std::to_string(i), m = std::to_string(i - 1);
+    s += "  bool p" + n + " = " + bi + " > 0.0; v += int(p" + m + " != p" + n + ");\n";
+    s += "  bool g" + n + " = " + bi + " > " + idx("b", i - 1) + ";\n";
+    if (i >= 2) s += "  dv += int(g" + m + " != g" + n + ");\n";
+  }
+  s += "  return ivec4(above == zs_N ? 1 : (below == zs_N ? -1 : 0), int(above + below == 0), v, "
+       "dv);\n}\n";
+
+  // The least and largest coefficient, by selects taken pairwise (a chain log2(d + 1) long).
+  // Only a NaN b_0 reaches them (each select keeps its left operand unless the right one is
+  // beyond it).
+  s += "\nvoid zs_extremes(" + arrayParam("b") + ", out zs_Real lo, out zs_Real hi) {\n";
   std::vector<std::string> lo = arrayNames("b", d), hi = lo;
   for (int level = 0; lo.size() > 1; ++level) {
     std::vector<std::string> nextLo, nextHi;
@@ -513,15 +532,7 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision, bool fp64) {
     lo = nextLo;
     hi = nextHi;
   }
-  s += "  zs_Real lo = " + lo[0] + ", hi = " + hi[0] + ";\n  int v = 0, dv = 0;\n";
-  s += "  bool p0 = " + idx("b", 0) + " > 0.0;\n";
-  for (int i = 1; i <= d; ++i) {
-    const std::string bi = idx("b", i), n = std::to_string(i), m = std::to_string(i - 1);
-    s += "  bool p" + n + " = " + bi + " > 0.0; v += int(p" + m + " != p" + n + ");\n";
-    s += "  bool g" + n + " = " + bi + " > " + idx("b", i - 1) + ";\n";
-    if (i >= 2) s += "  dv += int(g" + m + " != g" + n + ");\n";
-  }
-  s += "  return zs_Real4(lo, hi, zs_Real(v), zs_Real(dv));\n}\n";
+  s += "  lo = " + lo[0] + ";\n  hi = " + hi[0] + ";\n}\n";
   return s;
 }
 

@@ -20,7 +20,9 @@
 //   vec3 zs_powerAt(zs_Real c[zs_N], zs_Real x);  // (f, f', f''/2) at s = x in [-1, 1], Horner
 //   float zs_firstCrossing(zs_Real b[zs_N]);  // first zero of the control polygon, in [0, 1]
 //   zs_Real zs_maxAbs(zs_Real b[zs_N]);       // largest |coefficient|
-//   zs_Real4 zs_classify(zs_Real b[zs_N]);  // (min, max, sign changes of b, of its derivative)
+//   ivec4 zs_bands(zs_Real b[zs_N], zs_Real noise);  // (every b_i beyond noise: its sign, else
+//        0; every b_i within it; sign changes of b; of its differences)
+//   void zs_extremes(zs_Real b[zs_N], out zs_Real lo, out zs_Real hi);  // min and max of b
 //   vec2 zs_clearEnds(zs_Real b[zs_N], zs_Real lim);  // fractions at each end where |f| > band
 //
 // zs_FPoly is truncated Taylor arithmetic: every node carries the coefficients of its own
