@@ -42,8 +42,8 @@
 // Casteljau passes (4.): the Taylor arithmetic and the conversion in zs_Wide (a priori, from
 // the absolute-value bound), the one rounding to zs_Real, and the passes (convex
 // combinations: a few roundings of the largest coefficient each; the walk adds one pass's
-// worth for each interval it splits off the rest). A volume's windows use it too (raytrace_volume.frag.glsl).
-// maxAbs: zs_maxAbs(b0).
+// worth for each interval it splits off the rest). A volume's windows use it too
+// (raytrace_volume.frag.glsl). maxAbs: zs_maxAbs(b0).
 zs_Real rtNoise(zs_Bound bound, zs_Real maxAbs) {
   return max(zs_Real(zs_ROUNDINGS * zs_WIDE_EPS * bound) +
                  zs_EPS * zs_Real(8 * zs_DEGREE + 2) * maxAbs,

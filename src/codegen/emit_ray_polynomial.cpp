@@ -371,7 +371,6 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision, bool fp64) {
   std::string s;
   const std::string real = doublePrecision ? "double" : "float";
   s += "#define zs_Real " + real + "\n";
-  s += std::string("#define zs_Real4 ") + (doublePrecision ? "dvec4" : "vec4") + "\n";
   // The expansion's type: double where the GPU has it, double-float (vec2) in GLSL ES
   // (WebGL2); the bound's: double, or float (it only scales the noise band).
   s += std::string("#define zs_Wide ") + (fp64 ? "double" : "vec2") + "\n";
@@ -524,8 +523,9 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision, bool fp64) {
         continue;
       }
       const std::string n = std::to_string(level) + "_" + std::to_string(i / 2);
-      s += "  zs_Real lo" + n + " = " + lo[i + 1] + " < " + lo[i] + " ? " + lo[i + 1] + " : " + lo[i] +
-           ", hi" + n + " = " + hi[i + 1] + " > " + hi[i] + " ? " + hi[i + 1] + " : " + hi[i] + ";\n";
+      s += "  zs_Real lo" + n + " = " + lo[i + 1] + " < " + lo[i] + " ? " + lo[i + 1] + " : " +
+           lo[i] + ", hi" + n + " = " + hi[i + 1] + " > " + hi[i] + " ? " + hi[i + 1] + " : " +
+           hi[i] + ";\n";
       nextLo.push_back("lo" + n);
       nextHi.push_back("hi" + n);
     }

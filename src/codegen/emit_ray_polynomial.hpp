@@ -6,7 +6,7 @@
 // raytrace_bernstein.frag.glsl isolates roots with:
 //
 //   const int zs_DEGREE = D;  const int zs_N = D + 1;
-//   #define zs_Real float (double from kDoubleDegree on), zs_Real4 vec4 (dvec4)
+//   #define zs_Real float (double from kDoubleDegree on)
 //   #define zs_Wide double (vec2, a double-float, in GLSL ES), zs_Bound double (float)
 //   const zs_Bound zs_ROUNDINGS;  // roundings on the longest path to a Bernstein coefficient
 //   bool zs_FPolyOn(vec3 o, vec3 d, float wa, float wb, out zs_Wide c[zs_N], out zs_Bound
