@@ -38,12 +38,12 @@
 // runs its body once more, masked, after its last iteration).
 
 
-// What rounding can have done to any coefficient of an interval split off b0 by two de
-// Casteljau passes (4.): the Taylor arithmetic and the conversion in zs_Wide (a priori, from
-// the absolute-value bound), the one rounding to zs_Real, and the passes (convex
-// combinations: a few roundings of the largest coefficient each; the walk adds one pass's
-// worth for each interval it splits off the rest). A volume's windows use it too
-// (raytrace_volume.frag.glsl). maxAbs: zs_maxAbs(b0).
+// What rounding can have done to any coefficient of an interval split off the window's
+// coefficients by two de Casteljau passes (4.): the Taylor arithmetic and the conversion in
+// zs_Wide (a priori, from the absolute-value bound), the one rounding to zs_Real, and the
+// passes (convex combinations: a few roundings of the largest coefficient each; the walk
+// adds one pass's worth for each interval it splits off the rest). A volume's windows use
+// it too (raytrace_volume.frag.glsl). maxAbs: zs_maxAbs of the window's coefficients.
 zs_Real rtNoise(zs_Bound bound, zs_Real maxAbs) {
   return max(zs_Real(zs_ROUNDINGS * zs_WIDE_EPS * bound) +
                  zs_EPS * zs_Real(8 * zs_DEGREE + 2) * maxAbs,
@@ -55,7 +55,7 @@ const int RT_MAX_WINDOWS = 48;  // safety bound on expansions per segment (5.)
 
 bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float tAfter) {
   // float, or double for high degrees (emit_ray_polynomial.hpp kDoubleDegree)
-  zs_Real c[zs_N], b0[zs_N], b[zs_N];
+  zs_Real c[zs_N], b[zs_N];
   // The window [wa, wb] of the segment that the current expansion covers (5.).
   float wa = ta, wb = tb, len = tb - ta;
   bool done = !(len > 0.0), found = false, isolated = false;
@@ -70,12 +70,12 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
       zs_Wide wide[zs_N];  // double, or double-float in GLSL ES (emit_ray_polynomial.hpp)
       zs_Bound bound;
       bool defined = zs_FPolyOn(o, d, wa, wb, wide, bound);
-      zs_toBernstein(wide, b0, c);
-      zs_Real maxAbs = zs_maxAbs(b0), noise0 = rtNoise(bound, maxAbs);
-      // f on [u, 1] of the window: each interval found free of roots is split off it, so a step
-      // is one de Casteljau pass; each such pass adds its rounding to the band.
-      zs_Real rest[zs_N] = b0, right[zs_N];
-      zs_Real passNoise = zs_EPS * zs_Real(4 * zs_DEGREE) * maxAbs, noise = noise0;
+      // f on [u, 1] of the window, from u = 0: each interval found free of roots is split off
+      // it, so a step is one de Casteljau pass; each such pass adds its rounding to the band.
+      zs_Real rest[zs_N], right[zs_N];
+      zs_toBernstein(wide, rest, c);
+      zs_Real maxAbs = zs_maxAbs(rest), noise = rtNoise(bound, maxAbs);
+      zs_Real passNoise = zs_EPS * zs_Real(4 * zs_DEGREE) * maxAbs;
       float tolerance = rt.tangentTolerance / len;  // in units of s
       bool mayZoom = windows + 1 < RT_MAX_WINDOWS && len > 4.0 * rt.tangentTolerance;
       bool zoom = false;
@@ -118,8 +118,9 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
                    (k.z == 1 || monotone);
         bool undecided = !none && !isolated;
         // Every coefficient within the noise: this expansion cannot tell f from 0 here, and
-        // halving cannot change that; an expansion about this interval alone can (5.).
-        bool blurred = k.y == 1 && size < 1.0;
+        // halving cannot change that; an expansion about this interval (never the whole
+        // window: the walk starts with its halves) alone can (5.).
+        bool blurred = k.y == 1;
         bool small = size <= tolerance;
         zoom = undecided && (small || blurred) && mayZoom;
         found = isolated || (undecided && small && !zoom);  // a hit (header, 4.)
@@ -150,10 +151,10 @@ bool rtFirstRoot(vec3 o, vec3 d, float ta, float tb, out float tHit, out float t
   // undecidable interval's hit is its middle.
   float x = isolated ? u + size * zs_firstCrossing(b) : u + 0.5 * size;
 
-  // Refinement of an isolated root: Halley steps safeguarded by bisection inside the bracket,
-  // on the power basis (Horner, far cheaper than a de Casteljau pass), until a step is below stop.
-  // Its own loop: a Horner step is a fraction of an isolation step, and a shared loop body
-  // would pay for both on every iteration.
+  // Refinement of an isolated root: Halley steps safeguarded by bisection inside the
+  // bracket, on the power basis (Horner, far cheaper than a de Casteljau pass), until a step
+  // is below stop. Its own loop: a Horner step is a fraction of an isolation step, and a
+  // shared loop body would pay for both on every iteration.
   bool refining = isolated;
   do {
     if (refining) {  // the body runs once even for lanes with nothing to refine

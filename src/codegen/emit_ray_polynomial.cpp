@@ -509,30 +509,15 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision, bool fp64) {
   s += "  return ivec4(above == zs_N ? 1 : (below == zs_N ? -1 : 0), int(above + below == 0), v, "
        "dv);\n}\n";
 
-  // The least and largest coefficient, by selects taken pairwise (a chain log2(d + 1) long).
-  // Only a NaN b_0 reaches them (each select keeps its left operand unless the right one is
-  // beyond it).
+  // The least and largest coefficient (a volume's bound on f), by selects: only a NaN b_0
+  // reaches them.
   s += "\nvoid zs_extremes(" + arrayParam("b") + ", out zs_Real lo, out zs_Real hi) {\n";
-  std::vector<std::string> lo = arrayNames("b", d), hi = lo;
-  for (int level = 0; lo.size() > 1; ++level) {
-    std::vector<std::string> nextLo, nextHi;
-    for (std::size_t i = 0; i < lo.size(); i += 2) {
-      if (i + 1 == lo.size()) {
-        nextLo.push_back(lo[i]);
-        nextHi.push_back(hi[i]);
-        continue;
-      }
-      const std::string n = std::to_string(level) + "_" + std::to_string(i / 2);
-      s += "  zs_Real lo" + n + " = " + lo[i + 1] + " < " + lo[i] + " ? " + lo[i + 1] + " : " +
-           lo[i] + ", hi" + n + " = " + hi[i + 1] + " > " + hi[i] + " ? " + hi[i + 1] + " : " +
-           hi[i] + ";\n";
-      nextLo.push_back("lo" + n);
-      nextHi.push_back("hi" + n);
-    }
-    lo = nextLo;
-    hi = nextHi;
+  s += "  lo = " + idx("b", 0) + ";\n  hi = " + idx("b", 0) + ";\n";
+  for (int i = 1; i <= d; ++i) {
+    const std::string bi = idx("b", i);
+    s += "  lo = " + bi + " < lo ? " + bi + " : lo; hi = " + bi + " > hi ? " + bi + " : hi;\n";
   }
-  s += "  lo = " + lo[0] + ";\n  hi = " + hi[0] + ";\n}\n";
+  s += "}\n";
   return s;
 }
 
@@ -558,12 +543,14 @@ std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f,
   WideOps ops;
   ops.df = !fp64;
   std::optional<TaylorWriter> written;
-  written.emplace(g, names, d, ops);
-  for (NodeId id : order) written->define(id);
-  if (ops.df && occurrences(written->out, "zs_dfMul(") > std::size_t(std::max(loops.products, 0))) {
-    ops.loopTerms = std::max(loops.terms, 1);
+  const auto write = [&] {
     written.emplace(g, names, d, ops);
     for (NodeId id : order) written->define(id);
+  };
+  write();
+  if (ops.df && occurrences(written->out, "zs_dfMul(") > std::size_t(std::max(loops.products, 0))) {
+    ops.loopTerms = std::max(loops.terms, 1);  // written anew with its long convolutions as loops
+    write();
   }
   TaylorWriter& taylor = *written;
   // The rounding count of the coefficients, plus that of the conversion to Bernstein form
