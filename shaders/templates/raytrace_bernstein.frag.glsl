@@ -39,7 +39,7 @@
 
 
 // What rounding can have done to any coefficient of an interval split off the window's
-// coefficients by two de Casteljau passes (4.): the Taylor arithmetic and the conversion in
+// coefficients by up to two de Casteljau passes (4.): the Taylor arithmetic and the conversion in
 // zs_Wide (a priori, from the absolute-value bound), the one rounding to zs_Real, and the
 // passes (convex combinations: a few roundings of the largest coefficient each; the walk
 // adds one pass's worth for each interval it splits off the rest). A volume's windows use

@@ -509,8 +509,8 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision, bool fp64) {
   s += "  return ivec4(above == zs_N ? 1 : (below == zs_N ? -1 : 0), int(above + below == 0), v, "
        "dv);\n}\n";
 
-  // The least and largest coefficient (a volume's bound on f), by selects: only a NaN b_0
-  // reaches them.
+  // The least and largest coefficient (a volume's bound on f), by selects (a NaN b_i after
+  // b_0 fails both comparisons and is passed over; a NaN b_0 stays in both).
   s += "\nvoid zs_extremes(" + arrayParam("b") + ", out zs_Real lo, out zs_Real hi) {\n";
   s += "  lo = " + idx("b", 0) + ";\n  hi = " + idx("b", 0) + ";\n";
   for (int i = 1; i <= d; ++i) {
