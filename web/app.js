@@ -205,8 +205,7 @@ function applySetting(key, tomlValue) {
   const error = session.applyOverrides([`${key}=${tomlValue}`]);
   if (error) { showError(error); return; }
   clearError();
-  // The camera and the clip planes are frame parameters: no new program or octree.
-  if (key.startsWith('camera.') || key.startsWith('clip.')) { buildSettings(); redraw(); return; }
+  // The session builds what the key invalidates (nothing for a frame parameter).
   prepareAndDraw();
 }
 
@@ -235,7 +234,7 @@ function formulaEdited() {
     setState('busy');  // the picture on screen is not the typed formula's yet
     showFirstPicture();
   }
-  typingTimer = setTimeout(buildTypedFormula, 120);
+  typingTimer = setTimeout(buildTypedFormula, core.typingPauseMs());  // the session's rule
 }
 formulaInput.addEventListener('focus', requestInterpreters);
 formulaInput.addEventListener('input', formulaEdited);

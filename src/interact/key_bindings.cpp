@@ -53,10 +53,10 @@ std::string format(const char* what, double value) {
   return text;
 }
 
-Effect step(double& value, double delta, const char* what, std::string& message) {
+bool step(double& value, double delta, const char* what, std::string& message) {
   value = std::max(0.0, std::round((value + delta) * 1000) / 1000);
   message = format(what, value);
-  return Effect::Redraw;
+  return true;
 }
 
 }  // namespace
@@ -71,7 +71,7 @@ const KeyBinding* findBinding(int key, int mods) {
   return nullptr;
 }
 
-Effect applyAction(Action action, Scene& scene, std::string& message) {
+bool applyAction(Action action, Scene& scene, std::string& message) {
   RenderSettings& r = scene.render;
   switch (action) {
     case Action::DirLightUp:
@@ -86,25 +86,25 @@ Effect applyAction(Action action, Scene& scene, std::string& message) {
         message = directional
                       ? i18n::tr("no directional light is on (the panel's lights section adds one)")
                       : i18n::tr("no point light is on (the panel's lights section adds one)");
-        return Effect::None;
+        return false;
       }
       return step(light->intensity, up ? 0.1 : -0.1, what, message);
     }
     case Action::ToggleBorder:
       r.border.enabled = !r.border.enabled;
       message = i18n::tr(r.border.enabled ? N_("border highlight on") : N_("border highlight off"));
-      return Effect::Redraw;
+      return true;
     case Action::ToggleSilhouette:
       r.silhouette.enabled = !r.silhouette.enabled;
       message = i18n::tr(r.silhouette.enabled ? N_("silhouette on") : N_("silhouette off"));
-      return Effect::Redraw;
+      return true;
     case Action::EpsilonUp:
     case Action::EpsilonDown: {
       // Bounded to [1e-9, 1]: beyond that the bisection either never stops or finds nothing.
       const double factor = action == Action::EpsilonUp ? 10.0 : 0.1;
       r.tracing.epsilon = std::clamp(r.tracing.epsilon * factor, 1e-9, 1.0);
       message = format(N_("epsilon"), r.tracing.epsilon);
-      return Effect::Redraw;
+      return true;
     }
     case Action::LevelUp:
     case Action::LevelDown: {
@@ -112,14 +112,14 @@ Effect applyAction(Action action, Scene& scene, std::string& message) {
       const int wanted = before + (action == Action::LevelUp ? 1 : -1);
       scene.octree.level = std::clamp(wanted, 0, std::max(before, kMaxKeyLevel));
       message = format(N_("octree level"), scene.octree.level);
-      return scene.octree.level == before ? Effect::None : Effect::Rebuild;
+      return scene.octree.level != before;
     }
     case Action::IntervalsUp:
     case Action::IntervalsDown:
       r.tracing.intervals =
           std::clamp(r.tracing.intervals + (action == Action::IntervalsUp ? 1 : -1), 1, 1000);
       message = format(N_("intervals"), r.tracing.intervals);
-      return Effect::Redraw;
+      return true;
     case Action::NextExample:
     case Action::PrevExample:
     case Action::Screenshot:
@@ -132,9 +132,9 @@ Effect applyAction(Action action, Scene& scene, std::string& message) {
     case Action::ToggleGallery:
     case Action::ResetView:
     case Action::Quit:
-      return Effect::None;
+      return false;
   }
-  return Effect::None;
+  return false;
 }
 
 }  // namespace zs::interact

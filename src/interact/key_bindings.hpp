@@ -33,13 +33,11 @@ std::span<const KeyBinding> keyBindings();
 // Caps Lock and Num Lock bits are ignored; null when nothing is bound.
 const KeyBinding* findBinding(int key, int mods);
 
-// What a scene edit requires: a new frame, or a new octree/hierarchy (worker thread).
-enum class Effect { None, Redraw, Rebuild };
-
-// Applies an editing action to `scene` (the others return None and leave it unchanged).
+// Applies an editing action to `scene`; false for the others, which leave it unchanged. What
+// the edit rebuilds is the schema's to say (scene/invalidation.hpp), as for every edit.
 // Values stay inside the .surf ranges, so a saved scene always loads back; `message` says
 // what changed ("epsilon 0.001"), for the panel's status line.
-Effect applyAction(Action action, Scene& scene, std::string& message);
+bool applyAction(Action action, Scene& scene, std::string& message);
 
 // Octree level reachable with the keys; deeper levels are set in the panel, on purpose.
 inline constexpr int kMaxKeyLevel = 8;

@@ -126,13 +126,12 @@ int maxBernsteinDegree(const PrepareOptions& options) {
   return options.dialect == ShaderDialect::Es300 ? kWebBernsteinMaxDegree : kMaxBernsteinDegree;
 }
 
-std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
-                                                          const PrepareOptions& options) {
+std::variant<PreparedSurface, std::string> prepareGeometry(const Scene& scene,
+                                                           const PrepareOptions& options) {
   PreparedSurface s;
   auto t = std::chrono::steady_clock::now();
   std::size_t failedSurface = 0;
-  std::vector<NodeId> surfaceRoots;
-  ParseResult parsed = parseSceneFormula(scene, &failedSurface, &surfaceRoots);
+  ParseResult parsed = parseSceneFormula(scene, &failedSurface, &s.surfaceRoots);
   if (auto* err = std::get_if<ParseError>(&parsed))
     return formatSceneFormulaError(scene, failedSurface, *err);
   if (surfaceCount(scene) > 1 && scene.render.mode == RenderMode::Volume)
@@ -166,8 +165,14 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
   }
   s.hierarchy = tracingHierarchy(s.formula, s.params, s.octree, s.method);
   s.times.octreeMs = msSince(t);
+  return s;
+}
 
-  t = std::chrono::steady_clock::now();
+std::string prepareShader(const Scene& scene, PreparedSurface& s, const PrepareOptions& options) {
+  auto t = std::chrono::steady_clock::now();
+  s.singularPoints.clear();
+  s.singularNote.clear();
+  s.rayPolynomial.reset();
   s.glsl = emitFormulaGlsl(s.formula.graph, s.formula.root, s.gradient);
   // Second derivatives only for the colorings that show curvature (docs/curvature.md).
   if (needsCurvature(scene.render.shading.color))
@@ -182,7 +187,8 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
              " has parameters; it may use only x, y, z and constants\n";
     s.glsl.source += block;
   }
-  if (surfaceRoots.size() > 1) s.glsl.source += surfacesBlock(scene, s.formula.graph, surfaceRoots);
+  if (s.surfaceRoots.size() > 1)
+    s.glsl.source += surfacesBlock(scene, s.formula.graph, s.surfaceRoots);
   std::string markers;
   if (scene.render.singular.enabled) {
     if (options.markedPoints) s.singularPoints = *options.markedPoints;
@@ -203,6 +209,7 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
   }
   s.vertexShader = vertexShaderSource(dialect);
   s.times.codegenMs = msSince(t);
+  s.times.validateMs = 0;
 
 #if ZS_HAVE_GLSLANG
   if (options.validate) {
@@ -214,7 +221,45 @@ std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
     s.times.validateMs = msSince(t);
   }
 #endif  // the web build has no glslang: WebGL2 compiles the shaders and reports their errors
-  return s;
+  return {};
+}
+
+std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
+                                                          const PrepareOptions& options) {
+  auto geometry = prepareGeometry(scene, options);
+  if (auto* err = std::get_if<std::string>(&geometry)) return *err;
+  PreparedSurface& s = std::get<PreparedSurface>(geometry);
+  if (std::string err = prepareShader(scene, s, options); !err.empty()) return err;
+  return geometry;
+}
+
+std::variant<PreparedSurface, std::string> updateSurface(const PreparedSurface& base,
+                                                         const Scene& scene, Invalidation what,
+                                                         const PrepareOptions& options) {
+  if (!(what & invalidates::Geometry)) {
+    PreparedSurface s = base;
+    s.times = {};
+    if (what & invalidates::Shader) {
+      if (std::string err = prepareShader(scene, s, options); !err.empty()) return err;
+    }
+    return s;
+  }
+  auto geometry = prepareGeometry(scene, options);
+  if (auto* err = std::get_if<std::string>(&geometry)) return *err;
+  PreparedSurface& s = std::get<PreparedSurface>(geometry);
+  if (what & invalidates::Shader) {
+    if (std::string err = prepareShader(scene, s, options); !err.empty()) return err;
+    return geometry;
+  }
+  // The same formula with new parameter values or another octree: the shader text stays
+  // (parameters are uniforms), and so do the points it marks.
+  s.glsl = base.glsl;
+  s.rayPolynomial = base.rayPolynomial;
+  s.singularPoints = base.singularPoints;
+  s.singularNote = base.singularNote;
+  s.vertexShader = base.vertexShader;
+  s.fragmentShader = base.fragmentShader;
+  return geometry;
 }
 
 }  // namespace zs

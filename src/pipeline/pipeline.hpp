@@ -16,6 +16,7 @@
 #include "codegen/shader_assembly.hpp"
 #include "interval/hierarchy.hpp"
 #include "interval/octree.hpp"
+#include "scene/invalidation.hpp"
 #include "scene/scene.hpp"
 
 namespace zs {
@@ -26,6 +27,9 @@ struct StageTimes {
 
 struct PreparedSurface {
   Formula formula;
+  // Each surface's function in formula.graph (one entry per [[surface]]; their product is
+  // formula.root when there are several).
+  std::vector<NodeId> surfaceRoots;
   std::array<NodeId, 3> gradient{};
   std::vector<double> params;  // graph.params() order
   Octree octree;
@@ -88,8 +92,23 @@ inline const PrepareOptions kWithoutGlslang = [] {
 int maxBernsteinDegree(const PrepareOptions& options);
 
 // Error text is ready to print (caret formatting, octree budget messages, or an internal
-// shader error that names itself a bug).
+// shader error that names itself a bug). prepareGeometry, then prepareShader.
 std::variant<PreparedSurface, std::string> prepareSurface(const Scene& scene,
                                                           const PrepareOptions& options = {});
+
+// The two halves, so that an edit redoes only what it invalidates (scene/invalidation.hpp).
+// Geometry: parse, the method, the octree and the box hierarchy (everything but the shaders).
+std::variant<PreparedSurface, std::string> prepareGeometry(const Scene& scene,
+                                                           const PrepareOptions& options = {});
+// Shader: the generated GLSL of a surface whose geometry is made (with the marked singular
+// points), validated by glslang where the options say. "" or the error text.
+std::string prepareShader(const Scene& scene, PreparedSurface& surface,
+                          const PrepareOptions& options = {});
+
+// `base` (prepared from an earlier scene) brought to `scene`, redoing only the stages `what`
+// names: Geometry and Shader as above, nothing for Frame or Variant (a copy of base).
+std::variant<PreparedSurface, std::string> updateSurface(const PreparedSurface& base,
+                                                         const Scene& scene, Invalidation what,
+                                                         const PrepareOptions& options = {});
 
 }  // namespace zs

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <variant>
 
+#include "scene/invalidation.hpp"
 #include "scene/scene.hpp"
 
 namespace zs::scene_detail {
@@ -42,6 +43,9 @@ struct Range {
 
 struct KeySpec {
   std::string_view name;  // dotted: "camera.fov_y"
+  // What a change of this key invalidates (scene/invalidation.hpp): the one place that says
+  // what an edit rebuilds.
+  Invalidation invalidates;
   Field field;
   Range range;
   bool nonZero = false;  // vectors that get normalized (up, light direction)

@@ -1,4 +1,4 @@
-// The web page's window into the core (embind): WebSession's methods, with the hierarchy's
+// The web page's window into the core (embind): the session's methods, with the hierarchy's
 // texels as a Uint32Array and a frame's uniforms as plain objects, so that web/*.js only
 // wires controls and hands numbers to WebGL2.
 #include <emscripten/bind.h>
@@ -9,12 +9,20 @@
 #include "interact/kiosk.hpp"
 #include "interact/parameter_range.hpp"
 #include "interact/trace_budget.hpp"
-#include "web/web_session.hpp"
+#include "session/session.hpp"
 
 using emscripten::val;
 
 namespace zs::web {
 namespace {
+
+using WebSession = session::Session;
+using session::Setting;
+
+// The page's session: GLSL ES 3.00 for WebGL2, which compiles and reports what it rejects.
+WebSession* makeWebSession() {
+  return new WebSession(session::SessionOptions{ShaderDialect::Es300, false});
+}
 
 // A JS typed array holding a copy of `values` (a view into wasm memory would be invalidated
 // when the heap grows): Uint32Array or Float32Array after the element type.
@@ -269,6 +277,7 @@ std::string knownLanguageJs(const std::string& tag) { return i18n::knownLanguage
 
 EMSCRIPTEN_BINDINGS(zeroset) {
   emscripten::function("keys", &keysJs);
+  emscripten::function("typingPauseMs", +[] { return session::kTypingPauseMs; });
   emscripten::function("dragScale", &dragScaleJs);
   emscripten::function("kioskDefaults", &kioskDefaultsJs);
   emscripten::function("kioskRefusal", &kioskRefusalJs);
@@ -280,7 +289,7 @@ EMSCRIPTEN_BINDINGS(zeroset) {
   emscripten::function("currentLanguage", &currentLanguageJs);
   emscripten::function("knownLanguage", &knownLanguageJs);
   emscripten::class_<WebSession>("Session")
-      .constructor<>()
+      .constructor(&makeWebSession, emscripten::allow_raw_pointers())
       // embind passes std::string, not std::string_view
       .function("loadFormula",
                 emscripten::optional_override(
@@ -301,36 +310,37 @@ EMSCRIPTEN_BINDINGS(zeroset) {
       .function("setParam",
                 emscripten::optional_override([](WebSession& s, const std::string& name,
                                                  double value) { return s.setParam(name, value); }))
-      .function("prepare", &WebSession::prepare)
-      .function("prepared", &WebSession::prepared)
-      .function("generation", &WebSession::generation)
-      .function("vertexShader", &WebSession::vertexShader)
-      .function("fragmentShader", &WebSession::fragmentShader)
+      .function("prepare", &session::Session::prepare)
+      .function("prepared", &session::Session::prepared)
+      .function("generation", &session::Session::generation)
+      .function("vertexShader", &session::Session::vertexShader)
+      .function("fragmentShader", &session::Session::fragmentShader)
       .function("hierarchy", &hierarchyJs)
       .function("frame", &frameJs)
-      .function("prepareQuick", &WebSession::prepareQuick)
-      .function("quickPrepared", &WebSession::quickPrepared)
-      .function("quickPolynomialOnly", &WebSession::quickPolynomialOnly)
-      .function("quickFragmentShader", &WebSession::quickFragmentShader)
-      .function("quickScale", &WebSession::quickScale)
-      .function("quickDrawn", &WebSession::quickDrawn)
+      .function("prepareQuick",
+                emscripten::optional_override([](WebSession& s) { return s.prepareQuick(); }))
+      .function("quickPrepared", &session::Session::quickPrepared)
+      .function("quickPolynomialOnly", &session::Session::quickPolynomialOnly)
+      .function("quickFragmentShader", &session::Session::quickFragmentShader)
+      .function("quickScale", &session::Session::quickScale)
+      .function("quickDrawn", &session::Session::quickDrawn)
       .function("quickTape", &quickTapeJs)
       .function("interpreterShaders", &interpreterShadersJs)
       .function("quickHierarchy", &quickHierarchyJs)
       .function("quickFrame", &quickFrameJs)
-      .function("beginDrag", &WebSession::beginDrag)
-      .function("drag", &WebSession::drag)
-      .function("zoom", &WebSession::zoom)
+      .function("beginDrag", &session::Session::beginDrag)
+      .function("drag", &session::Session::drag)
+      .function("zoom", &session::Session::zoom)
       .function("key", &keyJs)
-      .function("resetView", &WebSession::resetView)
-      .function("sceneText", &WebSession::sceneText)
+      .function("resetView", &session::Session::resetView)
+      .function("sceneText", &session::Session::sceneText)
       .function("formula", &formulaJs)
       .function("probe", &probeJs)
       .function("params", &paramsJs)
       .function("settings", &settingsJs)
       .function("listEntries", &listEntriesJs)
-      .function("notes", &WebSession::notes)
-      .function("method", &WebSession::method);
+      .function("notes", &session::Session::notes)
+      .function("method", &session::Session::method);
 }
 
 }  // namespace zs::web

@@ -57,23 +57,23 @@ TEST(Animation, FrameSceneSetsTheParameterAndRefusesABadName) {
   EXPECT_NE(frameScene(*bad, base, 0, frame), "");
 }
 
-TEST(Animation, OctreeIsRebuiltOnlyForAParameterOfF) {
+TEST(Animation, SurfaceIsRebuiltOnlyWhenTheSchemaSaysSo) {
   Scene base;
   base.formula = "x^2 + y^2 + z^2 - r^2";
   std::string error;
-  EXPECT_TRUE(changesOctree(*parseAnimation("params.r=1:2", 3, error), base));
-  EXPECT_FALSE(changesOctree(*parseAnimation("params.unused=1:2", 3, error), base));
-  EXPECT_FALSE(changesOctree(*parseAnimation("camera.orbit=0:360", 3, error), base));
+  EXPECT_TRUE(rebuildsEachFrame(*parseAnimation("params.r=1:2", 3, error), base));
+  EXPECT_FALSE(rebuildsEachFrame(*parseAnimation("params.unused=1:2", 3, error), base));
+  EXPECT_FALSE(rebuildsEachFrame(*parseAnimation("camera.orbit=0:360", 3, error), base));
   // With several surfaces: a parameter of the second one, its level, and what the surfaces'
   // shader holds as constants (the intersection curves, the others' materials lit by the
   // ambient light).
-  EXPECT_FALSE(changesOctree(*parseAnimation("params.h=0:1", 3, error), base));
-  EXPECT_FALSE(changesOctree(*parseAnimation("lights.ambient=0:1", 3, error), base));
+  EXPECT_FALSE(rebuildsEachFrame(*parseAnimation("params.h=0:1", 3, error), base));
+  EXPECT_FALSE(rebuildsEachFrame(*parseAnimation("lights.ambient=0:1", 3, error), base));
   base.moreSurfaces = {SurfaceEntry{"z - h", 0, {}}};
-  EXPECT_TRUE(changesOctree(*parseAnimation("params.h=0:1", 3, error), base));
-  EXPECT_TRUE(changesOctree(*parseAnimation("surface.2.level=0:1", 3, error), base));
-  EXPECT_TRUE(changesOctree(*parseAnimation("highlights.intersection.tolerance=0:1", 3, error), base));
-  EXPECT_TRUE(changesOctree(*parseAnimation("lights.ambient=0:1", 3, error), base));
+  EXPECT_TRUE(rebuildsEachFrame(*parseAnimation("params.h=0:1", 3, error), base));
+  EXPECT_TRUE(rebuildsEachFrame(*parseAnimation("surface.2.level=0:1", 3, error), base));
+  EXPECT_TRUE(rebuildsEachFrame(*parseAnimation("highlights.intersection.tolerance=0:1", 3, error), base));
+  EXPECT_TRUE(rebuildsEachFrame(*parseAnimation("lights.ambient=0:1", 3, error), base));
 }
 
 TEST(Animation, AnyNumberOfTheSceneGoesThroughSetsChecks) {
@@ -86,10 +86,10 @@ TEST(Animation, AnyNumberOfTheSceneGoesThroughSetsChecks) {
   Scene frame;
   ASSERT_EQ(frameScene(*sweep, base, 3, frame), "");
   EXPECT_DOUBLE_EQ(frame.render.clipPlanes[0].offset, 0.5);
-  EXPECT_FALSE(changesOctree(*sweep, base));  // a frame parameter
-  EXPECT_FALSE(changesOctree(*parseAnimation("volume.falloff=0.05:0.5", 5, error), base));
-  EXPECT_TRUE(changesOctree(*parseAnimation("domain.radius=1:2", 5, error), base));
-  EXPECT_TRUE(changesOctree(*parseAnimation("octree.level=1:4", 5, error), base));
+  EXPECT_FALSE(rebuildsEachFrame(*sweep, base));  // a frame parameter
+  EXPECT_FALSE(rebuildsEachFrame(*parseAnimation("volume.falloff=0.05:0.5", 5, error), base));
+  EXPECT_TRUE(rebuildsEachFrame(*parseAnimation("domain.radius=1:2", 5, error), base));
+  EXPECT_TRUE(rebuildsEachFrame(*parseAnimation("octree.level=1:4", 5, error), base));
   // What --set refuses is refused with its message and the how-to: a plane the scene does
   // not have, a vector, a value out of range.
   for (const char* bad : {"clip.plane.2.offset=0:1", "camera.eye=0:1", "volume.density=-2:1"}) {

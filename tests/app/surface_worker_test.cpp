@@ -1,4 +1,4 @@
-// The surface worker's later step (app/surface_worker.hpp) and the shader warmer's two
+// The surface worker's later step (session/surface_worker.hpp) and the shader warmer's two
 // phases (app/shader_warmer.hpp): a new program's beam pass and tile mask are left out of the
 // warm-up that the front end's first picture waits for, and compiled after a pause.
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include <variant>
 
 #include "app/shader_warmer.hpp"
-#include "app/surface_worker.hpp"
+#include "session/surface_worker.hpp"
 #include "pipeline/pipeline.hpp"
 
 namespace zs::app {
@@ -26,9 +26,16 @@ Scene sceneOf(const std::string& formula) {
   return s;
 }
 
-SurfaceWorker::Result waitFor(SurfaceWorker& worker, std::uint64_t id) {
+using session::BuildRequest;
+using session::SurfaceWorker;
+
+// Submits a fresh build of `scene` and waits for its result.
+SurfaceWorker::Result buildOn(SurfaceWorker& worker, const Scene& scene) {
+  static std::uint64_t nextId = 1;
+  const std::uint64_t id = nextId++;
+  worker.submit(BuildRequest{id, scene, invalidates::Surface, nullptr});
   for (;;) {
-    if (auto r = worker.take(); r && r->id == id) return std::move(*r);
+    if (auto r = worker.take(); r && r->build.id == id) return std::move(*r);
     std::this_thread::sleep_for(1ms);
   }
 }
@@ -36,14 +43,14 @@ SurfaceWorker::Result waitFor(SurfaceWorker& worker, std::uint64_t id) {
 TEST(SurfaceWorker, TheLaterStepRunsAfterAPauseInTheRequestsAndOnlyForABuild) {
   std::atomic<int> later{0};
   std::string formula;
-  SurfaceWorker worker({}, {}, {}, [&](const Scene& s) {
+  SurfaceWorker worker({}, {}, {}, {}, [&](const Scene& s) {
     formula = s.formula;
     ++later;
   });
   // A build, then at once another: only the second gets the later step, after the pause.
   const auto start = std::chrono::steady_clock::now();
-  waitFor(worker, worker.submit(sceneOf("x^2 + y^2 + z^2 - 1")));
-  waitFor(worker, worker.submit(sceneOf("x^2 + y^2 - z")));
+  buildOn(worker, sceneOf("x^2 + y^2 + z^2 - 1"));
+  buildOn(worker, sceneOf("x^2 + y^2 - z"));
   EXPECT_EQ(later.load(), 0);
   while (later.load() == 0 && std::chrono::steady_clock::now() - start < 10s)
     std::this_thread::sleep_for(1ms);
@@ -51,8 +58,8 @@ TEST(SurfaceWorker, TheLaterStepRunsAfterAPauseInTheRequestsAndOnlyForABuild) {
   EXPECT_EQ(later.load(), 1);
   EXPECT_EQ(formula, "x^2 + y^2 - z");
   // A build that fails has nothing to warm.
-  const SurfaceWorker::Result failed = waitFor(worker, worker.submit(sceneOf("x^2 +")));
-  EXPECT_TRUE(std::holds_alternative<std::string>(failed.surface));
+  const SurfaceWorker::Result failed = buildOn(worker, sceneOf("x^2 +"));
+  EXPECT_TRUE(std::holds_alternative<std::string>(failed.build.surface));
   std::this_thread::sleep_for(SurfaceWorker::kLaterDelay + 250ms);
   EXPECT_EQ(later.load(), 1);
 }

@@ -83,7 +83,7 @@ TEST(KeyBindings, EditsStayInsideTheSceneRanges) {
   Scene s;
   std::string message;
   s.render.lights.sources[1].intensity = 0.05;
-  EXPECT_EQ(applyAction(Action::PointLightDown, s, message), Effect::Redraw);
+  EXPECT_TRUE(applyAction(Action::PointLightDown, s, message));
   EXPECT_EQ(s.render.lights.sources[1].intensity, 0.0);
   s.render.tracing.epsilon = 0.5;
   applyAction(Action::EpsilonUp, s, message);
@@ -93,14 +93,15 @@ TEST(KeyBindings, EditsStayInsideTheSceneRanges) {
   applyAction(Action::IntervalsDown, s, message);
   EXPECT_EQ(s.render.tracing.intervals, 1);
   s.octree.level = 0;
-  EXPECT_EQ(applyAction(Action::LevelDown, s, message), Effect::None);
-  EXPECT_EQ(applyAction(Action::LevelUp, s, message), Effect::Rebuild);
+  EXPECT_FALSE(applyAction(Action::LevelDown, s, message));
+  EXPECT_TRUE(applyAction(Action::LevelUp, s, message));
   s.octree.level = kMaxKeyLevel;
-  EXPECT_EQ(applyAction(Action::LevelUp, s, message), Effect::None);
+  EXPECT_FALSE(applyAction(Action::LevelUp, s, message));
   const bool on = s.render.silhouette.enabled;
   applyAction(Action::ToggleSilhouette, s, message);
   EXPECT_NE(s.render.silhouette.enabled, on);
-  EXPECT_EQ(checkScene(s), "");
+  session::Session session;
+  EXPECT_EQ(session.edit(s), "") << "a key's edit saves and loads back";
 }
 
 TEST(PromptCommands, LinesParseToCommandsOrUsageErrors) {
@@ -131,14 +132,16 @@ TEST(PromptCommands, LinesParseToCommandsOrUsageErrors) {
 }
 
 TEST(SceneEdit, BadEditsLeaveTheSceneAlone) {
-  Scene s;
-  const Scene before = s;
-  EXPECT_NE(applyToScene({PromptCommand::Kind::Formula, "x^^2"}, s), "");
-  EXPECT_NE(applyToScene({PromptCommand::Kind::Set, "tracing.hits=99"}, s), "");
-  EXPECT_NE(applyToScene({PromptCommand::Kind::Load, "/nonexistent/a.surf"}, s), "");
-  EXPECT_EQ(s, before);
-  s.render.tracing.epsilon = -1;  // what a bad panel edit would do
-  EXPECT_NE(checkScene(s), "");
+  session::Session session;
+  const Scene before = session.scene();
+  EXPECT_NE(applyPromptEdit({PromptCommand::Kind::Formula, "x^^2"}, session), "");
+  EXPECT_NE(applyPromptEdit({PromptCommand::Kind::Set, "tracing.hits=99"}, session), "");
+  EXPECT_NE(applyPromptEdit({PromptCommand::Kind::Load, "/nonexistent/a.surf"}, session), "");
+  EXPECT_EQ(session.scene(), before);
+  Scene bad = before;
+  bad.render.tracing.epsilon = -1;  // what a bad panel edit would do
+  EXPECT_NE(session.edit(bad), "");
+  EXPECT_EQ(session.scene(), before);
   const auto dir = test::freshDir("next-free");
   EXPECT_EQ(nextFreePath(dir, "zeroset", ".png").filename(), "zeroset-0001.png");
   test::shell("touch " + (dir / "zeroset-0001.png").string());
@@ -152,7 +155,8 @@ TEST(Examples, WithoutFilesTheThesisSurfacesAreBuiltIn) {
     auto scene = loadExample(e);
     ASSERT_TRUE(std::holds_alternative<Scene>(scene)) << e.name;
     EXPECT_EQ(std::get<Scene>(scene).render.tracing.intervals, 10);
-    EXPECT_EQ(applyToScene({PromptCommand::Kind::Formula, e.formula}, std::get<Scene>(scene)), "");
+    session::Session session;
+    EXPECT_EQ(session.loadScene(std::get<Scene>(scene)), "") << e.name;
   }
   const auto dir = test::freshDir("examples");
   std::filesystem::create_directories(dir / "thesis");

@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "parser/parser.hpp"
+#include "scene/invalidation.hpp"
 #include "scene/scene_io.hpp"
 
 namespace zs::app {
@@ -17,17 +18,6 @@ const char* const kHowTo =
     "hint: write KEY=FROM:TO with KEY params.NAME, surface.level, camera.orbit (degrees) or "
     "another number of the scene as --set names it, e.g. --animate params.a=0:1, "
     "--animate camera.orbit=0:360 or --animate clip.plane.1.offset=-1:1\n";
-
-// Keys whose change needs a new octree, box hierarchy or shader (not only new uniforms or
-// another program variant of the same shader): with several surfaces, their entries and the
-// intersection highlight are shader constants too, lit by the ambient light.
-bool rebuildsSurface(const std::string& key, const Scene& base) {
-  for (const char* prefix : {"domain.", "octree.", "highlights.singular.", "surface."}) {
-    if (key.rfind(prefix, 0) == 0) return true;
-  }
-  if (base.moreSurfaces.empty()) return false;
-  return key.rfind("highlights.intersection.", 0) == 0 || key == "lights.ambient";
-}
 
 // The whole of `text` as a finite number.
 std::optional<double> number(const std::string& text) {
@@ -115,17 +105,21 @@ std::string frameScene(const Animation& anim, const Scene& base, int i, Scene& o
   return {};
 }
 
-bool changesOctree(const Animation& anim, const Scene& base) {
-  if (anim.kind == Animation::Kind::Level) return true;  // another surface each frame
-  if (anim.kind == Animation::Kind::Setting) return rebuildsSurface(anim.param, base);
-  if (anim.kind != Animation::Kind::Param) return false;
+std::vector<std::string> formulaParams(const Scene& base) {
   ParseResult parsed = parseSceneFormula(base);
   const Formula* f = std::get_if<Formula>(&parsed);
-  if (!f) return true;  // cannot tell; rebuilding is always right
-  for (const std::string& name : f->graph.params()) {
-    if (name == anim.param) return true;
-  }
-  return false;
+  return f ? f->graph.params() : std::vector<std::string>{};
+}
+
+bool rebuildsEachFrame(const Animation& anim, const Scene& base) {
+  if (anim.frames < 2 || anim.from == anim.to) return false;
+  Scene first, last;
+  if (!frameScene(anim, base, 0, first).empty() ||
+      !frameScene(anim, base, anim.frames - 1, last).empty())
+    return true;  // cannot tell; rebuilding is always right
+  const std::vector<std::string> names = formulaParams(base);
+  const std::span<const std::string> used(names);
+  return (invalidation(first, last, &used) & (invalidates::Shader | invalidates::Geometry)) != 0;
 }
 
 }  // namespace zs::app

@@ -9,15 +9,13 @@
 // (clip.plane.1.offset, volume.falloff, lights.source.2.intensity, domain.radius, ...),
 // set through --set's checks each frame.
 //
-// When the octree must be rebuilt: the octree keeps the boxes where 0 may lie in F(box),
-// evaluated with the parameters' values, so a parameter that appears in F changes it and
-// every frame gets its own (a tree built for one value may drop boxes the surface reaches
-// at another: reusing it would cut holes). A parameter F does not use, and camera.orbit,
-// change no box: the octree, the box hierarchy and the shader are built once. Of the other
-// keys, those of the domain, the octree and the singular-point markers rebuild every frame;
-// the rest are frame parameters or program variants (clip planes, volume, lights, ...).
+// What a frame rebuilds is what the schema says its change invalidates
+// (scene/invalidation.hpp), as for every edit: a parameter that appears in F changes the
+// octree (a tree built for one value may drop boxes the surface reaches at another), one F
+// does not use and camera.orbit change nothing but uniforms, and so on.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "scene/scene.hpp"
 
@@ -49,9 +47,11 @@ std::optional<Animation> parseAnimation(const std::string& text, int frames, std
 // message (a value the scene refuses, e.g. a parameter name the formula language rejects).
 std::string frameScene(const Animation& anim, const Scene& base, int i, Scene& out);
 
-// Whether a frame needs its own octree and box hierarchy (see above): the animated
-// parameter appears in `formula`, or the level moves.
-bool changesOctree(const Animation& anim, const Scene& base);
+// Whether the frames need more than new uniforms: the schema's rule (scene/invalidation.hpp)
+// between the first and the last frame's scenes says Shader or Geometry.
+bool rebuildsEachFrame(const Animation& anim, const Scene& base);
+// The parameters the scene's formulas use ("" none when they do not parse).
+std::vector<std::string> formulaParams(const Scene& base);
 
 // The eye of `camera` turned by `degrees` about the axis through its target along its up.
 Vec3 orbitEye(const Camera& camera, double degrees);

@@ -12,6 +12,7 @@
 #include "pipeline/load_surface.hpp"
 #include "pipeline/pipeline.hpp"
 #include "render/ray_tracer.hpp"
+#include "session/session.hpp"
 #include "scene/scene_io.hpp"
 
 namespace zs::app {
@@ -22,30 +23,6 @@ int digitsFor(int frames) {
   int digits = 4;
   for (int n = 10000; n < frames; n *= 10) ++digits;
   return digits;
-}
-
-// A new parameter value for a surface whose shader stays: F's parameters are uniforms, so
-// only the octree and the hierarchy are built again, and uploaded.
-std::string rebuildForParams(PreparedSurface& s, const Scene& scene, RayTracer& tracer) {
-  s.params = paramValues(scene, s.formula.graph);
-  OctreeResult tree =
-      buildOctree(s.formula, s.params, toBox(scene.domain), scene.octree, toBall(scene.domain));
-  if (auto* err = std::get_if<OctreeError>(&tree)) return "error: " + err->message + "\n";
-  s.octree = std::get<Octree>(std::move(tree));
-  s.hierarchy = tracingHierarchy(s.formula, s.params, s.octree, s.method);
-  if (std::string err = tracer.setHierarchy(s.hierarchy.packed()); !err.empty())
-    return "error: " + err + "\n";
-  tracer.setParams(s.paramsAsFloats());
-  return {};
-}
-
-// The singular-point markers are constants of the shader: with them on, a new parameter
-// value needs the whole surface again (the tracer recompiles only if the text changed).
-std::string rebuildAll(PreparedSurface& s, const Scene& scene, RayTracer& tracer) {
-  auto prepared = prepareSurface(scene, kWithoutGlslang);
-  if (auto* err = std::get_if<std::string>(&prepared)) return *err;
-  s = std::get<PreparedSurface>(std::move(prepared));
-  return loadSurface(tracer, s);
 }
 
 }  // namespace
@@ -111,18 +88,20 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
     std::cerr << err;
     return 1;
   }
-  const bool perFrameOctree = changesOctree(*anim, base);
+  const bool perFrameOctree = rebuildsEachFrame(*anim, base);
   if (anim->kind == Animation::Kind::Param && !perFrameOctree) {
     std::cerr << "note: the formula does not use the parameter '" << anim->param
               << "': every frame shows the same surface\n";
   }
-  auto prepared = prepareSurface(scene);
-  if (auto* err = std::get_if<std::string>(&prepared)) {
-    std::cerr << *err;
+  // One session holds the animation's scene: each frame is an edit of it, and the session
+  // rebuilds what the schema says that edit invalidates (scene/invalidation.hpp).
+  session::Session session;
+  session.loadScene(scene);
+  if (std::string err = session.prepare(); !err.empty()) {
+    std::cerr << err;
     return 1;
   }
-  PreparedSurface surface = std::get<PreparedSurface>(std::move(prepared));
-  std::cerr << surface.formulaNote << surface.methodWarning << surface.singularNote;
+  std::cerr << session.notes();
 
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
@@ -132,11 +111,11 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
               << "\nhint: with --animate, -o names a folder, e.g. -o frames/\n";
     return 1;
   }
-  HeadlessTracer gl = openHeadlessTracer(backend, surface);
+  HeadlessTracer gl = openHeadlessTracer(backend, *session.surface());
   if (!gl.tracer) return 1;
   RayTracer& tracer = *gl.tracer;
 
-  const bool markers = base.render.singular.enabled;
+  int loaded = session.generation();
   const auto start = std::chrono::steady_clock::now();
   int written = 0;
   for (int i = first; i < anim->frames; i += opt.shards) {
@@ -146,19 +125,19 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
         std::cerr << err;
         return 1;
       }
-      if (perFrameOctree) {
-        // Only a parameter keeps the shader: a level is a constant of F, a setting that
-        // rebuilds is a domain, octree or surface key.
-        error = markers || anim->kind != Animation::Kind::Param
-                    ? rebuildAll(surface, scene, tracer)
-                    : rebuildForParams(surface, scene, tracer);
-        if (!error.empty()) {
-          std::cerr << "frame " << i << ": " << error;
-          return 1;
-        }
+      error = session.edit(scene);
+      if (error.empty()) error = session.prepare();
+      if (error.empty() && session.generation() != loaded) {
+        error = loadSurface(tracer, *session.surface());
+        loaded = session.generation();
+      }
+      if (!error.empty()) {
+        std::cerr << "frame " << i << ": " << error;
+        return 1;
       }
     }
-    Frame frame = tracer.render(scene.render, scene.domain, scene.width, scene.height);
+    const Scene& shown = session.scene();
+    Frame frame = tracer.render(shown.render, shown.domain, shown.width, shown.height);
     if (!frame.error.empty()) {
       std::cerr << "error: frame " << i << ": " << frame.error << "\n";
       return 1;
@@ -172,7 +151,7 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart)
             .count();
     std::printf("wrote %s: %s = %.6g, %zu octree leaves%s, %.0f ms\n", path.c_str(),
-                anim->key().c_str(), anim->valueAt(i), surface.octree.leaves.size(),
+                anim->key().c_str(), anim->valueAt(i), session.surface()->octree.leaves.size(),
                 perFrameOctree && i > first ? " (rebuilt)" : "", ms);
     std::fflush(stdout);
     ++written;
@@ -190,7 +169,7 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
               : anim->kind == Animation::Kind::Level
                   ? "octree rebuilt per frame (the level moves)"
               : anim->kind == Animation::Kind::Setting
-                  ? "octree rebuilt per frame (the domain, the octree or the markers change)"
+                  ? "surface rebuilt per frame (the setting changes its shader or octree)"
                   : "octree rebuilt per frame (the parameter is in F)",
               gl.context->backendName().c_str());
   if (ffmpeg) {

@@ -10,7 +10,8 @@
 
 #include "app/bench/bench_runner.hpp"
 #include "app/shader_warmer.hpp"
-#include "app/surface_worker.hpp"
+#include "session/session.hpp"
+#include "session/surface_worker.hpp"
 #include "interact/trace_budget.hpp"
 #include "pipeline/load_surface.hpp"
 #include "pipeline/quick_surface.hpp"
@@ -78,28 +79,27 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
   RayTracer own;
   // The worker compiles and draws each formula's own shader in a context of its own first.
   app::ShaderWarmer warmer(app::ShaderWarmer::Target::Offscreen, options.backend);
-  app::SurfaceWorker worker(
-      {}, [&warmer](const Scene& s, const PreparedSurface& p) { warmer.warm(s, p); },
+  // The keystrokes go to a session, as the viewer's do: its first pictures' sizes, its build
+  // requests (on the viewer's worker, with the viewer's warm-up).
+  session::Session session;
+  session.loadScene(base);
+  session::SurfaceWorker worker(
+      session.prepareOptions(), {},
+      [&warmer](const Scene& s, const PreparedSurface& p) { warmer.warm(s, p); },
       [&warmer] { warmer.stop(); }, [&warmer](const Scene& s) { warmer.warmPasses(s); });
   ctx.context->makeCurrent();  // the worker's context loads its own entry points
-  Scene scene = base;
-  interact::FirstPictureCost cost;  // of the first pictures so far: picks the next one's size
   for (std::size_t n = 1; n <= formula.size(); ++n) {
     Keystroke key;
     key.text = formula.substr(0, n);
-    scene.formula = key.text;
     start = Clock::now();
-    auto quick = prepareQuickSurface(scene);
-    if (auto* err = std::get_if<std::string>(&quick)) {
-      key.note = err->substr(0, err->find('\n'));
+    if (std::string err = session.prepareQuick(key.text); !err.empty()) {
+      key.note = err.substr(0, err.find('\n'));
       out.keys.push_back(key);
       continue;
     }
-    const QuickSurface& surface = std::get<QuickSurface>(quick);
+    const QuickSurface& surface = *session.quickSurface();
     key.quickCpuMs = surface.prepareMs;
-    const int instructions = surface.tape.instructions();
-    const bool polynomial = surface.tape.polynomialOnly;
-    const int scale = cost.scale(out.width, out.height, instructions, polynomial);
+    const int scale = session.quickScale(out.width, out.height);
     key.firstWidth = std::max(1, out.width / scale);
     key.firstHeight = std::max(1, out.height / scale);
     std::string error;
@@ -108,24 +108,31 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
     if (RayTracer* interpreter = interpreters.load(surface, error);
         interpreter && firstTarget.ensure(key.firstWidth, key.firstHeight)) {
       glBindFramebuffer(GL_FRAMEBUFFER, firstTarget.framebuffer());
-      interpreter->draw(single.render, scene.domain, key.firstWidth, key.firstHeight);
+      interpreter->draw(single.render, base.domain, key.firstWidth, key.firstHeight);
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       firstTarget.readPixels(pixels);  // as the viewer does, to show it in the window's context
     }
-    cost.measured(msSince(drawStart), double(key.firstWidth) * key.firstHeight, instructions,
-                  polynomial);
+    session.quickDrawn(msSince(drawStart), double(key.firstWidth) * key.firstHeight);
     key.firstMs = msSince(start);
-    const std::uint64_t id = worker.submit(scene);
-    std::optional<app::SurfaceWorker::Result> result;
-    while (!(result = worker.take()) || result->id != id)
-      std::this_thread::sleep_for(std::chrono::microseconds(200));
-    if (auto* err = std::get_if<std::string>(&result->surface)) {
-      key.note = err->substr(0, err->find('\n'));
+    std::string buildError = session.setFormula(key.text);
+    if (buildError.empty()) {
+      if (std::optional<session::BuildRequest> request = session.takeBuildRequest()) {
+        const std::uint64_t id = request->id;
+        worker.submit(std::move(*request));
+        std::optional<session::SurfaceWorker::Result> result;
+        while (!(result = worker.take()) || result->build.id != id)
+          std::this_thread::sleep_for(std::chrono::microseconds(200));
+        buildError = session.finishBuild(std::move(result->build));
+      }
+    }
+    if (!buildError.empty()) {
+      key.note = buildError.substr(0, buildError.find('\n'));
       out.keys.push_back(key);
       continue;
     }
+    const Scene& scene = session.scene();
     ctx.context->makeCurrent();
-    const PreparedSurface& built = std::get<PreparedSurface>(result->surface);
+    const PreparedSurface& built = *session.surface();
     if (error.empty()) error = loadSurface(own, built);
     own.setBeamPass(warmer.passesWarm(app::ShaderWarmer::programKey(built.fragmentShader)));
     if (error.empty()) error = own.drawOffscreen(scene.render, scene.domain, out.width, out.height);

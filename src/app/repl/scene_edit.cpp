@@ -3,57 +3,41 @@
 #include <cstdio>
 #include <fstream>
 #include <system_error>
-#include <variant>
 
-#include "jsurf/jsurf.hpp"
-#include "parser/parser.hpp"
 #include "scene/scene_io.hpp"
 
 namespace zs::app {
 
-std::string applyToScene(const PromptCommand& command, Scene& scene) {
+std::string applyPromptEdit(const PromptCommand& command, session::Session& session) {
   switch (command.kind) {
-    case PromptCommand::Kind::Formula: {
-      ParseResult parsed = parseFormula(command.arg);
-      if (auto* err = std::get_if<ParseError>(&parsed)) return formatError(command.arg, *err);
-      scene.formula = command.arg;
-      return {};
-    }
-    case PromptCommand::Kind::Load: {
-      if (jsurf::isJsurfPath(command.arg)) {
-        jsurf::ImportResult imported = jsurf::loadJsurf(command.arg);
-        if (auto* err = std::get_if<SceneError>(&imported)) return formatSceneError(*err);
-        // What SURFER shows differently is worth saying, but the load goes ahead.
-        for (const SceneError& w : std::get<jsurf::Imported>(imported).warnings)
-          std::fputs(jsurf::formatWarning(w).c_str(), stderr);
-        scene = std::get<jsurf::Imported>(std::move(imported)).scene;
-        return {};
-      }
-      SceneResult loaded = loadScene(command.arg);
-      if (auto* err = std::get_if<SceneError>(&loaded)) return formatSceneError(*err);
-      scene = std::get<Scene>(std::move(loaded));
-      return {};
-    }
-    case PromptCommand::Kind::Set:
-      if (auto err = applyOverride(scene, command.arg)) return formatSceneError(*err);
-      return {};
-    default:
-      return "error: internal: not a scene edit\n";
+    case PromptCommand::Kind::Formula: return session.setFormula(command.arg);
+    case PromptCommand::Kind::Load: return session.loadFile(command.arg);
+    case PromptCommand::Kind::Set: return session.applyOverrides(std::span(&command.arg, 1));
+    default: return "error: internal: not a scene edit\n";
   }
 }
 
-std::string checkScene(const Scene& scene) {
-  SceneResult reloaded = parseScene(saveScene(scene), "<view>");
-  if (auto* err = std::get_if<SceneError>(&reloaded)) return formatSceneError(*err);
-  return {};
-}
-
 std::string writeSceneFile(const std::filesystem::path& path, const Scene& scene) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) return "error: cannot write " + path.string() + "\n";
-  out << saveScene(scene);
-  out.close();
-  if (!out) return "error: writing " + path.string() + " failed\n";
+  // Written beside the target and renamed over it: a failed write leaves no half file.
+  std::filesystem::path partial = path;
+  partial += ".partial";
+  {
+    std::ofstream out(partial, std::ios::binary | std::ios::trunc);
+    if (!out) return "error: cannot write " + path.string() + "\n";
+    out << saveScene(scene);
+    out.close();
+    if (!out) {
+      std::error_code ignored;
+      std::filesystem::remove(partial, ignored);
+      return "error: writing " + path.string() + " failed\n";
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(partial, path, ec);
+  if (ec) {
+    std::filesystem::remove(partial, ec);
+    return "error: cannot write " + path.string() + "\n";
+  }
   return {};
 }
 

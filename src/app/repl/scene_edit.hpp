@@ -1,26 +1,22 @@
 #pragma once
-// Scene edits shared by the prompt's two targets (the viewer window, the headless renderer)
-// and the viewer's panel: takes a Scene and a command or a file name, puts out the changed
-// scene or error text ready to print (caret for formulas, file:line:column for scenes).
+// The prompt's edits, for both of its targets (the viewer window, the headless renderer):
+// takes a session and a command, carries the command out on the session with its verb
+// (session/session.hpp) and puts out error text ready to print (caret for formulas,
+// file:line:column for scenes). Also the files the prompt and the viewer write.
 #include <filesystem>
 #include <string>
 
 #include "app/repl/command.hpp"
-#include "scene/scene.hpp"
+#include "session/session.hpp"
 
 namespace zs::app {
 
-// Formula (parsed first, so a typo gives the caret and leaves the scene alone), Load (the
-// whole scene is replaced) and Set (one key). Other kinds are not edits: returns an error.
-// "" on success; on failure `scene` is unchanged.
-std::string applyToScene(const PromptCommand& command, Scene& scene);
+// Formula, Load (.surf or .jsurf) and Set (one key); other kinds are not edits and return an
+// error. "" on success; on failure the session's scene is unchanged. Builds nothing: the
+// target prepares.
+std::string applyPromptEdit(const PromptCommand& command, session::Session& session);
 
-// "" when `scene` would load back from its own .surf text; otherwise the loader's message
-// (a value outside its range, say). The panel checks every edit with this, so a saved view
-// always loads.
-std::string checkScene(const Scene& scene);
-
-// Writes saveScene(scene) to `path`; "" or an error naming the file.
+// Writes saveScene(scene) to `path`, whole or not at all; "" or an error naming the file.
 std::string writeSceneFile(const std::filesystem::path& path, const Scene& scene);
 
 // dir/stem-0001.ext, dir/stem-0002.ext, ...: the first that does not exist yet.

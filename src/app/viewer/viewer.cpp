@@ -73,8 +73,8 @@ std::unique_ptr<Viewer> Viewer::open(const ViewerOptions& options, std::string& 
 
   v->examples_ = listExamples(findExamplesDir());
   v->warmer_ = std::make_shared<ShaderWarmer>();
-  v->worker_ = std::make_unique<SurfaceWorker>(
-      [] { glfwPostEmptyEvent(); },
+  v->worker_ = std::make_unique<session::SurfaceWorker>(
+      v->session_.prepareOptions(), [] { glfwPostEmptyEvent(); },
       [warmer = v->warmer_](const Scene& s, const PreparedSurface& p) { warmer->warm(s, p); },
       [warmer = v->warmer_] { warmer->stop(); },
       [warmer = v->warmer_](const Scene& s) { warmer->warmPasses(s); });
@@ -92,7 +92,7 @@ std::unique_ptr<Viewer> Viewer::open(const ViewerOptions& options, std::string& 
     // The formula keyboard never gives the formula box the focus: the interpreters for
     // first pictures are wanted from the start.
     v->interpretersAsked_ = true;
-    v->warmer_->wantInterpreters(v->scene_);
+    v->warmer_->wantInterpreters(v->session_.scene());
   }
   return v;
 }
@@ -153,18 +153,19 @@ void Viewer::traceIfNeeded(int width, int height) {
   int scale = 0;
   if (dirty_) {
     scale = moving ? reducedScale(width, height)
-            : quick ? quickCost_.scale(width, height, quickInstructions_, quickPolynomial_)
+            : quick ? session_.quickScale(width, height)
                     : 1;
   }
   else if (refine_ && !moving && !quick) scale = 1;
   if (scale == 0) return;
-  RenderSettings settings = quick ? firstPictureSettings(scene_.render) : scene_.render;
+  const Scene& scene = session_.scene();
+  RenderSettings settings = quick ? firstPictureSettings(scene.render) : scene.render;
   if (scale > 1) settings.samples = 1;  // a moving preview needs no supersampling
   view_->setBeamPass(warmer_->passesWarm(builtProgram_));
-  const double ms = view_->trace(settings, scene_.domain, width, height, scale);
+  const double ms = view_->trace(settings, scene.domain, width, height, scale);
   const double rays =
       double(width / scale) * double(height / scale) * settings.samples * settings.samples;
-  if (quick) quickCost_.measured(ms, rays, quickInstructions_, quickPolynomial_);
+  if (quick) session_.quickDrawn(ms, rays);
   else msPerPixel_ = ms / rays;
   stats_.traceMs = ms;
   stats_.traceScale = scale;
@@ -201,11 +202,11 @@ void Viewer::frame() {
   takeBuild();
   // Once the worker has compiled the interpreters, the first pictures' compile of them is
   // quicker; it runs beside the window's frames and wakes them when it is done.
-  const bool sampling = scene_.render.tracing.method == TracingMethod::Sampling;
+  const bool sampling = session_.scene().render.tracing.method == TracingMethod::Sampling;
   if (!view_->interpretersWarm(sampling) && warmer_->interpretersWarm(sampling)) {
     int width = 0, height = 0;
     window_->framebufferSize(width, height);
-    view_->warmInterpreters(scene_, width, height, [] { glfwPostEmptyEvent(); });
+    view_->warmInterpreters(session_.scene(), width, height, [] { glfwPostEmptyEvent(); });
   }
   if (view_->interpretersWarm(sampling) && !firstPicturesSaid_[sampling]) {
     firstPicturesSaid_[sampling] = true;
@@ -225,20 +226,21 @@ void Viewer::frame() {
   replayMouseButtons();
   ImGui::NewFrame();
   stats_.fps = fps_;
-  const Scene before = scene_;
+  const Scene before = session_.scene();
+  Scene edited = before;  // what the panel's widgets change this frame
   PanelResult panel;
-  if (panelVisible_) panel = drawPanel(scene_, panel_, stats_);
+  if (panelVisible_) panel = drawPanel(edited, panel_, stats_);
   if (options_.kiosk) drawFormulaKeyboard(panel_, panel);
   if (gallery_.visible) {
     if (const int picked = drawGallery(gallery_, exampleIndex_); picked >= 0) showExampleAt(picked);
   }
   // Under the pointer, over the picture and while nothing is dragged or rebuilt: what lies
   // there (src/probe).
-  if (hasSurface_ && dragButton_ < 0 && !ImGui::GetIO().WantCaptureMouse &&
-      built_.formula == scene_.formula && !buildAt_) {
+  if (session_.prepared() && dragButton_ < 0 && !ImGui::GetIO().WantCaptureMouse &&
+      session_.preparedScene().formula == session_.scene().formula && !buildAt_) {
     int windowWidth = 0, windowHeight = 0;
     glfwGetWindowSize(window_->window(), &windowWidth, &windowHeight);
-    if (hover_.update(scene_, cursorX_, cursorY_, windowWidth, windowHeight) && options_.log) {
+    if (hover_.update(session_.scene(), cursorX_, cursorY_, windowWidth, windowHeight) && options_.log) {
       std::printf("%s\n", hover_.logLine().c_str());
       std::fflush(stdout);
     }
@@ -254,20 +256,26 @@ void Viewer::frame() {
   // The formula box has the focus: the interpreters for first pictures are wanted now.
   if (!interpretersAsked_ && ImGui::GetIO().WantTextInput) {
     interpretersAsked_ = true;
-    warmer_->wantInterpreters(scene_);
+    warmer_->wantInterpreters(session_.scene());
   }
-  if (scene_ != before) onSceneEdited(before);
+  if (edited != before) {
+    // Refused (a value a .surf would refuse): the session keeps the last scene that saves
+    // and loads, and says why.
+    if (std::string err = session_.edit(edited); !err.empty()) stats_.status = panelError(err);
+    else onSceneEdited(before);
+  }
   if (panel.formulaEdited && panel_.formulaRefused && options_.log) {
     std::printf("refused: %s\n", panel_.formulaError.c_str());
     std::fflush(stdout);
   }
   if ((panel.formulaEdited || panel.formulaSubmitted) && panel_.formulaError.empty() &&
-      panel_.formula != scene_.formula) {
+      panel_.formula != session_.scene().formula) {
     // Every valid prefix shows at once through the tape interpreter. Enter builds at once;
-    // while typing, a pause of 350 ms does (the worker builds the latest request only).
+    // while typing, a pause of session::kTypingPauseMs does (the worker builds the latest
+    // request only).
     showFirstPicture();
     if (panel.formulaSubmitted) applyTypedFormula();
-    else buildAt_ = Clock::now() + std::chrono::milliseconds(350);
+    else buildAt_ = Clock::now() + std::chrono::milliseconds(session::kTypingPauseMs);
   }
   // After the panel has taken this frame's keys: a slow frame may hold several, and the
   // pause is measured from the last of them, not from a prefix typed before it.
@@ -282,7 +290,7 @@ void Viewer::frame() {
   finishMeshExport();
   finishPrint();
 
-  if (options_.log && !readyPrinted_ && hasSurface_ && !refine_ && !worker_->busy()) {
+  if (options_.log && !readyPrinted_ && session_.prepared() && !refine_ && !worker_->busy()) {
     readyPrinted_ = true;
     std::printf("ready %dx%d\n", width, height);
     std::fflush(stdout);

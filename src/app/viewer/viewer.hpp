@@ -2,9 +2,12 @@
 // The interactive viewer (`zeroset view`, and the window behind the prompt): takes a Scene
 // and options, opens a GLFW window with a Dear ImGui panel, and runs until it is closed.
 // Puts out frames, plus screenshots (PNG) and saved views (.surf) in the output folder,
-// each path printed on stdout as "screenshot: PATH" / "saved: PATH". Surfaces are built on
-// a worker thread (surface_worker.hpp); only the GL upload runs on the main thread. Another
-// thread (the prompt) may post commands; they run on the main thread between frames.
+// each path printed on stdout as "screenshot: PATH" / "saved: PATH". The scene, what each
+// edit rebuilds, rollback and first-picture sizing are the session's (session/session.hpp):
+// the viewer holds one and wires the window's input, the panel and GL to it. Surfaces are
+// built on the session's worker thread (session/surface_worker.hpp); only the GL upload
+// runs on the main thread. Another thread (the prompt) may post commands; they run on the
+// main thread between frames.
 #include <array>
 #include <chrono>
 #include <deque>
@@ -26,7 +29,8 @@
 #include "app/viewer/hover_probe.hpp"
 #include "app/shader_warmer.hpp"
 #include "app/viewer/surface_view.hpp"
-#include "app/surface_worker.hpp"
+#include "session/session.hpp"
+#include "session/surface_worker.hpp"
 #include "render/glfw_context.hpp"
 
 namespace zs::app {
@@ -84,14 +88,17 @@ class Viewer {
 
   // viewer_build.cpp: scene edits and builds
   void takeBuild();
+  // Hands the session's build request, if its scene needs one, to the worker.
   void requestBuild();
-  // Checks the edited scene_ (reverting to `before` when it would not load back), then
-  // starts a build or marks a redraw. "" or the refusal.
-  std::string onSceneEdited(const Scene& before);
+  // After an edit the session took (`before`: the scene before it): a new parameter value
+  // shown at once, the build the session asks for, a redraw.
+  void onSceneEdited(const Scene& before);
   void applyTypedFormula();
   // The typed formula's first picture by the tape interpreter, while its build runs.
   void showFirstPicture();
+  // A whole new scene: into the session, then what a new scene resets in the window.
   void setScene(const Scene& scene, const std::string& exampleName);
+  void sceneReplaced(const std::string& exampleName);
 
   // viewer_input.cpp: GLFW callbacks and key actions
   void installCallbacks();
@@ -154,14 +161,11 @@ class Viewer {
   std::unique_ptr<GlfwWindowContext> window_;
   std::unique_ptr<SurfaceView> view_;
   std::shared_ptr<ShaderWarmer> warmer_;  // the worker's second job (shader_warmer.hpp)
-  std::unique_ptr<SurfaceWorker> worker_;
+  std::unique_ptr<session::SurfaceWorker> worker_;
   bool imguiReady_ = false;
 
-  Scene scene_;   // what is edited and shown
-  Scene built_;   // the scene of the surface on screen (formula, params, domain, octree)
+  session::Session session_;  // the scene edited and shown, and the surface on screen
   std::size_t builtProgram_ = 0;  // its program (ShaderWarmer::programKey)
-  Scene loaded_;  // what R resets camera and lights to
-  bool hasSurface_ = false;
   std::vector<Example> examples_;
   int exampleIndex_ = -1;
   PanelState panel_;
@@ -203,16 +207,12 @@ class Viewer {
   bool buttonsDown_[3] = {false, false, false};  // as ImGui was last told
   std::chrono::steady_clock::time_point lastWheel_{};
   double msPerPixel_ = 0;  // from the latest trace, to pick the reduced scale
-  interact::FirstPictureCost quickCost_;  // of the first pictures so far, to pick their scale
-  int quickInstructions_ = 0;             // the tape of the first picture shown
-  bool quickPolynomial_ = true;           // ... through the polynomial dispatch
   bool sliderActive_ = false, readyPrinted_ = false;
 
-  // Mouse drags: which button, where it started, and the camera/light at the start.
+  // Mouse drags: which button and where it started (the session keeps the camera and the
+  // light at the start).
   int dragButton_ = -1;
   double dragX_ = 0, dragY_ = 0, cursorX_ = 0, cursorY_ = 0;
-  Camera dragCamera_;
-  Vec3 dragLight_{};  // the key light's position (point) or direction at the drag's start
 
   // Frame timing for the panel.
   std::chrono::steady_clock::time_point fpsStart_ = std::chrono::steady_clock::now();
@@ -233,7 +233,6 @@ class Viewer {
   std::optional<std::chrono::steady_clock::time_point> waitingSince_;
   bool waitingSaid_ = false;
   bool windowShot_ = false;        // Shift+C: capture before the next swap
-  std::string lastBuildError_;    // of the latest build request, "" when it is on screen
   std::filesystem::path sceneFile_;      // where the shown scene was loaded from, if anywhere
   std::string startLabel_;               // the start scene's example label, if it is one
   std::string startLanguage_;            // a kiosk's, restored for the next visitor

@@ -9,8 +9,6 @@
 
 #include "app/viewer/viewer.hpp"
 #include "i18n/translate.hpp"
-#include "interact/arcball.hpp"
-#include "render/camera.hpp"
 
 namespace zs::app {
 // The camera motions and key actions are the interact stage's, shared with the web page.
@@ -181,9 +179,7 @@ void Viewer::onMouseButton(int button, int action) {
   dragButton_ = button;
   dragX_ = cursorX_;
   dragY_ = cursorY_;
-  dragCamera_ = scene_.render.camera;
-  const Light* key = keyLight(scene_.render.lights);
-  dragLight_ = !key ? Vec3{} : key->kind == LightKind::Point ? key->position : key->direction;
+  session_.beginDrag();
 }
 
 void Viewer::onCursor(double x, double y) {
@@ -193,30 +189,15 @@ void Viewer::onCursor(double x, double y) {
   if (dragButton_ < 0) return;
   int width = 0, height = 0;
   glfwGetWindowSize(window_->window(), &width, &height);
-  const DragPoints drag{dragX_, dragY_, x, y, width, height};
-  if (dragButton_ == GLFW_MOUSE_BUTTON_LEFT)
-    scene_.render.camera = orbitCamera(dragCamera_, drag);
-  else if (Light* key = keyLight(scene_.render.lights)) {
-    // A light fixed to the camera turns in the world and is given back in camera coordinates.
-    const Camera& view = scene_.render.camera;
-    const bool fixedToCamera = scene_.render.lights.space == LightSpace::Camera;
-    if (key->kind == LightKind::Point) {
-      const Vec3 start = fixedToCamera ? cameraPointToWorld(view, dragLight_) : dragLight_;
-      const Vec3 turned = orbitPoint(view, start, drag);
-      key->position = fixedToCamera ? worldPointToCamera(view, turned) : turned;
-    } else {
-      const Vec3 start = fixedToCamera ? cameraVectorToWorld(view, dragLight_) : dragLight_;
-      const Vec3 turned = orbitDirection(view, start, drag);
-      key->direction = fixedToCamera ? worldVectorToCamera(view, turned) : turned;
-    }
-  }
+  if (dragButton_ == GLFW_MOUSE_BUTTON_LEFT) session_.drag(dragX_, dragY_, x, y, width, height);
+  else session_.dragLight(dragX_, dragY_, x, y, width, height);
   dirty_ = true;
 }
 
 void Viewer::onScroll(double dy) {
   uiFrames_ = 3;
   if (ImGui::GetIO().WantCaptureMouse || dy == 0) return;
-  scene_.render.camera = zoomCamera(scene_.render.camera, dy);
+  session_.zoom(dy);
   lastWheel_ = std::chrono::steady_clock::now();
   dirty_ = true;
 }
@@ -258,7 +239,7 @@ void Viewer::returnToStartIfIdle() {
   // not idle: the time counts from the later of their last input and the new surface's
   // arrival. (Rebuilds of the same formula, as a playing parameter asks for them all the
   // time, do not hold it back.)
-  if (inputWaits() || buildAt_ || (worker_->busy() && scene_.formula != built_.formula)) return;
+  if (inputWaits() || buildAt_ || (worker_->busy() && session_.scene().formula != session_.preparedScene().formula)) return;
   const std::chrono::duration<double> idle =
       std::chrono::steady_clock::now() - std::max(lastInput_, lastBuilt_);
   if (idle.count() < options_.kiosk->idleSeconds) return;
@@ -275,7 +256,7 @@ void Viewer::returnToStartIfIdle() {
   // The exhibit's language for the next visitor.
   if (i18n::currentLanguage() != startLanguage_ && i18n::setLanguage(startLanguage_)) relabel();
   // Only a changed scene is loaded again (a visitor who just passed by leaves it as it was).
-  if (scene_ != options_.scene || panel_.formula != options_.scene.formula) {
+  if (session_.scene() != options_.scene || panel_.formula != options_.scene.formula) {
     setScene(options_.scene, startLabel_);
     exampleIndex_ = options_.exampleIndex;
     sceneFile_ = options_.sceneFile;
@@ -341,18 +322,13 @@ void Viewer::runAction(Action action) {
       break;
     case Action::TogglePanel: panelVisible_ = !panelVisible_; break;
     case Action::ToggleGallery: toggleGallery(); break;
-    case Action::ResetView:
-      scene_.render.camera = loaded_.render.camera;
-      scene_.render.lights = loaded_.render.lights;
-      stats_.status = i18n::tr("view reset");
-      dirty_ = true;
-      break;
+
     case Action::Quit: glfwSetWindowShouldClose(window_->window(), GLFW_TRUE); break;
-    default: {
-      const Scene before = scene_;
-      if (applyAction(action, scene_, message) != Effect::None) {
-        stats_.status = message;
-        if (std::string err = onSceneEdited(before); !err.empty()) message = err;
+    default: {  // the scene edits and the view's reset are the session's
+      const Scene before = session_.scene();
+      if (session_.action(action, message) != 0) {
+        stats_.status = action == Action::ResetView ? i18n::tr("view reset") : message;
+        onSceneEdited(before);
       }
       break;
     }

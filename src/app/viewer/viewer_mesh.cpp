@@ -30,7 +30,7 @@ void Viewer::startMeshExport() {
   request.settings.cap = panel_.meshCap;
   request.output = nextFreePath(dir, stem + "-level" + std::to_string(request.settings.level), ".stl").string();
   stats_.status = i18n::format(i18n::tr("exporting a mesh at level %d..."), request.settings.level);
-  meshExport_ = std::async(std::launch::async, [scene = scene_, request] {
+  meshExport_ = std::async(std::launch::async, [scene = session_.scene(), request] {
     std::vector<SurfaceMesh> meshes;
     const std::string error = exportMeshes(scene, request, meshes);
     glfwPostEmptyEvent();  // wake the loop to show it

@@ -43,22 +43,19 @@ void Viewer::runPending() {
       case PromptCommand::Kind::Formula:
       case PromptCommand::Kind::Set:
       case PromptCommand::Kind::Load: {
-        Scene next = scene_;
-        if (std::string err = applyToScene(c, next); !err.empty()) {
+        const Scene before = session_.scene();
+        if (std::string err = applyPromptEdit(c, session_); !err.empty()) {
           p.reply.set_value(err);
           continue;
         }
         if (c.kind == PromptCommand::Kind::Load) {
-          setScene(next, c.arg);
+          sceneReplaced(c.arg);
           sceneFile_ = c.arg;
+          // What SURFER shows differently is worth saying, but the load goes ahead.
+          std::fputs(session_.notes().c_str(), stderr);
         } else {
-          const Scene before = scene_;
-          scene_ = next;
-          if (std::string err = onSceneEdited(before); !err.empty()) {
-            p.reply.set_value(err);
-            continue;
-          }
-          panel_.formula = scene_.formula;
+          onSceneEdited(before);
+          panel_.formula = session_.scene().formula;
           panel_.formulaError.clear();
           // The window shows the formula at once while its build runs, as when typed.
           if (c.kind == PromptCommand::Kind::Formula) showFirstPicture();
@@ -116,7 +113,7 @@ std::string Viewer::runOutput(const PromptCommand& command) {
                                       : std::filesystem::path(command.arg));
     default:
       // A scene edit: report how its build went (nothing when it is on screen).
-      return lastBuildError_;
+      return session_.lastBuildError();
   }
 }
 
@@ -129,7 +126,7 @@ std::string Viewer::panelError(std::string_view text) {
 std::string Viewer::screenshot(const std::filesystem::path& path) {
   int width = 0, height = 0;
   window_->framebufferSize(width, height);
-  Frame frame = view_->screenshot(scene_.render, scene_.domain, width, height);
+  Frame frame = view_->screenshot(session_.scene().render, session_.scene().domain, width, height);
   std::string text;
   if (!frame.error.empty()) {
     text = "error: " + frame.error + "\n";
@@ -166,7 +163,7 @@ void Viewer::captureWindow(int width, int height) {
 
 std::string Viewer::save(const std::filesystem::path& path) {
   // The image size is the window's, so `zeroset render` of the file gives this picture.
-  Scene saved = scene_;
+  Scene saved = session_.scene();
   window_->framebufferSize(saved.width, saved.height);
   std::string text = writeSceneFile(path, saved);
   stats_.status = text.empty() ? i18n::format(i18n::tr("saved: %s"), path.string().c_str())

@@ -17,9 +17,9 @@ void Viewer::startPrint() {
     return;
   }
   PrintJob job;
-  job.scene = scene_;
+  job.scene = session_.scene();
   // The file's name and description only while its formula is the one shown.
-  const bool fromFile = !sceneFile_.empty() && scene_.formula == loaded_.formula;
+  const bool fromFile = !sceneFile_.empty() && session_.scene().formula == session_.loadedScene().formula;
   describeForPrint(fromFile ? sceneFile_.string() : "", job.title, job.description);
   const std::string stem = fromFile ? sceneFile_.stem().string() : "zeroset";
   job.output = nextFreePath(options_.outputDir, stem + "-page", ".pdf");

@@ -1,15 +1,15 @@
-// The page's core, natively: the first picture by the tape interpreter (prepareQuick) beside
+// The session as the page holds it (GLSL ES), natively: the first picture by the tape interpreter (prepareQuick) beside
 // prepare(), which it must leave alone.
 #include <gtest/gtest.h>
 
 #include "codegen/glsl_validation.hpp"
-#include "web/web_session.hpp"
+#include "session/session.hpp"
 
-namespace zs::web {
+namespace zs::session {
 namespace {
 
-TEST(WebSessionQuick, FirstPictureComesWithoutTouchingThePreparedSurface) {
-  WebSession s;
+TEST(SessionQuick, FirstPictureComesWithoutTouchingThePreparedSurface) {
+  Session s(SessionOptions{ShaderDialect::Es300, false});
   ASSERT_EQ(s.loadFormula("x^2+y^2+z^2-1"), "");
   ASSERT_EQ(s.prepare(), "");
   const int generation = s.generation();
@@ -38,8 +38,8 @@ TEST(WebSessionQuick, FirstPictureComesWithoutTouchingThePreparedSurface) {
   EXPECT_EQ(ahead[0], interpreter);
 }
 
-TEST(WebSessionQuick, SaysWhyWhenItCannotInterpret) {
-  WebSession s;
+TEST(SessionQuick, SaysWhyWhenItCannotInterpret) {
+  Session s(SessionOptions{ShaderDialect::Es300, false});
   ASSERT_EQ(s.loadFormula("x^2+y^2+z^2-1"), "");
   ASSERT_EQ(s.applyOverrides(std::vector<std::string>{"shading.color=\"gauss\""}), "");
   EXPECT_NE(s.prepareQuick(), "");
@@ -47,4 +47,4 @@ TEST(WebSessionQuick, SaysWhyWhenItCannotInterpret) {
 }
 
 }  // namespace
-}  // namespace zs::web
+}  // namespace zs::session

@@ -1,13 +1,14 @@
-// One long-lived worker thread; prepareSurface itself fans the octree out over every core.
-#include "app/surface_worker.hpp"
+// One long-lived worker thread; the octree itself fans out over every core.
+#include "session/surface_worker.hpp"
 
 #include <chrono>
 
-namespace zs::app {
+namespace zs::session {
 
-SurfaceWorker::SurfaceWorker(std::function<void()> wake, WarmUp warmUp,
+SurfaceWorker::SurfaceWorker(PrepareOptions options, std::function<void()> wake, WarmUp warmUp,
                              std::function<void()> stop, Later later)
-    : wake_(std::move(wake)),
+    : options_(std::move(options)),
+      wake_(std::move(wake)),
       warmUp_(std::move(warmUp)),
       stopHook_(std::move(stop)),
       later_(std::move(later)),
@@ -23,16 +24,13 @@ SurfaceWorker::~SurfaceWorker() {
   thread_.join();
 }
 
-std::uint64_t SurfaceWorker::submit(const Scene& scene) {
-  std::uint64_t id;
+void SurfaceWorker::submit(BuildRequest request) {
   {
     std::lock_guard lock(mutex_);
-    id = nextId_++;
-    queued_.emplace(id, scene);
+    queued_ = std::move(request);
     queuedAt_ = std::chrono::steady_clock::now();
   }
   cv_.notify_all();
-  return id;
 }
 
 std::optional<SurfaceWorker::Result> SurfaceWorker::take() {
@@ -47,11 +45,6 @@ bool SurfaceWorker::busy() const {
   return running_ || queued_.has_value();
 }
 
-std::uint64_t SurfaceWorker::lastSubmitted() const {
-  std::lock_guard lock(mutex_);
-  return nextId_ - 1;
-}
-
 void SurfaceWorker::run() {
   std::unique_lock lock(mutex_);
   for (;;) {
@@ -61,22 +54,24 @@ void SurfaceWorker::run() {
       if (stopHook_) stopHook_();
       return;
     }
-    auto [id, scene] = std::move(*queued_);
+    BuildRequest request = std::move(*queued_);
     queued_.reset();
     const auto start = queuedAt_;
     running_ = true;
     lock.unlock();
-    auto surface = prepareSurface(scene);
+    auto surface = Session::build(request, options_);
+    request.base.reset();  // the surface on screen is not held here longer than needed
     if (warmUp_) {
-      if (const auto* built = std::get_if<PreparedSurface>(&surface)) warmUp_(scene, *built);
+      if (const auto* built = std::get_if<PreparedSurface>(&surface))
+        warmUp_(request.scene, *built);
     }
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     const bool later = later_ && std::holds_alternative<PreparedSurface>(surface);
-    const Scene built = later ? scene : Scene{};
+    const Scene built = later ? request.scene : Scene{};
     lock.lock();
     running_ = false;
-    done_ = Result{id, std::move(scene), std::move(surface), ms};
+    done_ = Result{{request.id, std::move(request.scene), std::move(surface)}, ms};
     lock.unlock();
     if (wake_) wake_();
     lock.lock();
@@ -88,4 +83,4 @@ void SurfaceWorker::run() {
   }
 }
 
-}  // namespace zs::app
+}  // namespace zs::session
