@@ -61,7 +61,7 @@ double paramValue(const Scene& scene, const std::string& name) {
   return kDefaultParamValue;
 }
 
-bool sameParams(const Scene& a, const Scene& b, const std::span<const std::string>* used) {
+bool sameParams(const Scene& a, const Scene& b, const std::vector<std::string>* used) {
   if (!used) {
     // Every name either scene has, an entry missing on one side counting as the default.
     for (const Scene* s : {&a, &b}) {
@@ -79,7 +79,7 @@ bool sameParams(const Scene& a, const Scene& b, const std::span<const std::strin
 }  // namespace
 
 Invalidation invalidation(const Scene& before, const Scene& after,
-                          const std::span<const std::string>* formulaParams) {
+                          const std::vector<std::string>* formulaParams) {
   Scene a = before, b = after;
   Invalidation what = changedKeys(scene_detail::keySpecs(), a, b);
   // The first surface's formula and level are a [[surface]] entry's too: the list covers
@@ -94,19 +94,6 @@ Invalidation invalidation(const Scene& before, const Scene& after,
   if ((what & invalidates::ShaderIfSeveralSurfaces) && several) what |= invalidates::Shader;
   if ((what & invalidates::ShaderIfMarked) && marked) what |= invalidates::Shader;
   return what & (invalidates::Variant | invalidates::Shader | invalidates::Geometry);
-}
-
-std::string describeInvalidation(Invalidation what) {
-  std::string out;
-  auto add = [&](Invalidation bit, const char* name) {
-    if (!(what & bit)) return;
-    if (!out.empty()) out += '+';
-    out += name;
-  };
-  add(invalidates::Variant, "variant");
-  add(invalidates::Shader, "shader");
-  add(invalidates::Geometry, "geometry");
-  return out.empty() ? "frame" : out;
 }
 
 }  // namespace zs

@@ -9,8 +9,8 @@
 // supersampling, reflection: render/program_variant.hpp); the tracer compiles it when it
 // draws, no CPU stage runs. Shader: the generated shader text (pipeline::prepareShader).
 // Geometry: the octree and the box hierarchy (pipeline::prepareGeometry).
-#include <span>
 #include <string>
+#include <vector>
 
 #include "scene/scene.hpp"
 
@@ -40,9 +40,6 @@ inline constexpr Invalidation Surface = Shader | Geometry;
 // points are marked); the lights and clip planes their variant. With `formulaParams` given
 // (the names the prepared surface's formula uses), parameters it does not use change nothing.
 Invalidation invalidation(const Scene& before, const Scene& after,
-                          const std::span<const std::string>* formulaParams = nullptr);
-
-// "frame", "variant", "shader", "geometry" joined with '+': for logs and tests.
-std::string describeInvalidation(Invalidation what);
+                          const std::vector<std::string>* formulaParams = nullptr);
 
 }  // namespace zs

@@ -6,8 +6,8 @@
 #include <utility>
 
 #include "interpreter/interpreter_glsl.hpp"
-#include "jsurf/jsurf.hpp"
 #include "parser/parser.hpp"
+#include "interact/arcball.hpp"
 #include "render/camera.hpp"
 #include "render/program_variant.hpp"
 #include "scene/scene_io.hpp"
@@ -83,32 +83,21 @@ std::string Session::loadSurf(std::string_view text, std::string_view fileName) 
   return replaceScene(std::get<Scene>(std::move(result)), {});
 }
 
-namespace {
-
-std::string warningsText(const jsurf::Imported& imported) {
+std::string Session::replaceScene(jsurf::ImportResult imported) {
+  if (auto* err = std::get_if<SceneError>(&imported)) return formatSceneError(*err);
+  jsurf::Imported& scene = std::get<jsurf::Imported>(imported);
+  // What SURFER shows differently is worth saying (notes()), but the load goes ahead.
   std::string notes;
-  for (const SceneError& w : imported.warnings) notes += jsurf::formatWarning(w);
-  return notes;
+  for (const SceneError& w : scene.warnings) notes += jsurf::formatWarning(w);
+  return replaceScene(std::move(scene.scene), std::move(notes));
 }
 
-}  // namespace
-
 std::string Session::loadJsurf(std::string_view text, std::string_view fileName) {
-  jsurf::ImportResult result = jsurf::importJsurf(text, fileName);
-  if (auto* err = std::get_if<SceneError>(&result)) return formatSceneError(*err);
-  jsurf::Imported imported = std::get<jsurf::Imported>(std::move(result));
-  std::string notes = warningsText(imported);
-  return replaceScene(std::move(imported.scene), std::move(notes));
+  return replaceScene(jsurf::importJsurf(text, fileName));
 }
 
 std::string Session::loadFile(const std::filesystem::path& path) {
-  if (jsurf::isJsurfPath(path.string())) {
-    jsurf::ImportResult result = jsurf::loadJsurf(path);
-    if (auto* err = std::get_if<SceneError>(&result)) return formatSceneError(*err);
-    jsurf::Imported imported = std::get<jsurf::Imported>(std::move(result));
-    std::string notes = warningsText(imported);
-    return replaceScene(std::move(imported.scene), std::move(notes));
-  }
+  if (jsurf::isJsurfPath(path.string())) return replaceScene(jsurf::loadJsurf(path));
   SceneResult loaded = zs::loadScene(path);
   if (auto* err = std::get_if<SceneError>(&loaded)) return formatSceneError(*err);
   return replaceScene(std::get<Scene>(std::move(loaded)), {});
@@ -209,10 +198,7 @@ void Session::resetView() {
 // ---- builds --------------------------------------------------------------------------------
 
 Invalidation Session::between(const Scene& before, const Scene& after) const {
-  if (!surface_) return invalidation(before, after);
-  const std::vector<std::string>& names = surface_->formula.graph.params();
-  const std::span<const std::string> used(names);
-  return invalidation(before, after, &used);
+  return invalidation(before, after, surface_ ? &surface_->formula.graph.params() : nullptr);
 }
 
 Invalidation Session::pending() const {
@@ -475,18 +461,14 @@ Setting settingOf(const scene_detail::KeySpec& spec, Scene& scene, std::string k
 
 }  // namespace
 
-std::vector<Setting> settingsOf(const Scene& scene) {
+std::vector<Setting> Session::settings() const {
   std::vector<Setting> out;
-  Scene copy = scene;  // the schema's fields address a mutable Scene
+  Scene scene = scene_;  // the schema's fields address a mutable Scene
   for (const scene_detail::KeySpec& spec : scene_detail::keySpecs()) {
     if (spec.legacyLight >= 0) continue;  // old names, read only
-    out.push_back(settingOf(spec, copy, std::string(spec.name)));
+    out.push_back(settingOf(spec, scene, std::string(spec.name)));
   }
   return out;
-}
-
-std::vector<Setting> Session::settings() const {
-  return settingsOf(scene_);
 }
 
 std::vector<std::vector<Setting>> Session::listEntries(std::string_view name) const {

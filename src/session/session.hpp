@@ -20,8 +20,8 @@
 #include <variant>
 #include <vector>
 
-#include "interact/arcball.hpp"
 #include "interact/key_bindings.hpp"
+#include "jsurf/jsurf.hpp"
 #include "interact/trace_budget.hpp"
 #include "pipeline/pipeline.hpp"
 #include "pipeline/quick_surface.hpp"
@@ -49,9 +49,6 @@ struct Setting {
   std::vector<double> value;         // the current value: 1 number (bool: 0/1), or 3
   std::string choice;                // enum: the current name; function: its text
 };
-
-// Every key of `scene`'s schema with its range and current value, in file order.
-std::vector<Setting> settingsOf(const Scene& scene);
 
 struct SessionOptions {
   // GLSL for the desktop's GL 3.3, or GLSL ES 3.00 for WebGL2 (pipeline.hpp).
@@ -147,7 +144,6 @@ class Session {
   bool prepared() const { return surface_ != nullptr; }
   // The surface on screen (null before the first build) and the scene it was made from.
   const PreparedSurface* surface() const { return surface_.get(); }
-  std::shared_ptr<const PreparedSurface> sharedSurface() const { return surface_; }
   const Scene& preparedScene() const { return preparedScene_; }
   // Counts the surfaces put on screen: the page uploads the hierarchy when it changes.
   int generation() const { return generation_; }
@@ -201,7 +197,7 @@ class Session {
   const Scene& loadedScene() const { return loaded_; }
   // The scene as a complete .surf text (save, share links).
   std::string sceneText() const;
-  // settingsOf(scene()).
+  // Every key of the scene schema with its range and current value, in file order.
   std::vector<Setting> settings() const;
   // The entries of a list of the scene ("lights.source", "clip.plane") in order, each as its
   // keys ("lights.source.N.KEY", N from 1, what applyOverrides takes); none for another name.
@@ -216,6 +212,7 @@ class Session {
 
  private:
   std::string replaceScene(Scene scene, std::string importNotes);
+  std::string replaceScene(jsurf::ImportResult imported);
   // Takes `edited` as the scene (the camera it brings becomes the one drags start from).
   void accept(Scene edited);
   // Invalidation between two scenes as far as the prepared surface's formula goes.

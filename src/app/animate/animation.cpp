@@ -105,21 +105,16 @@ std::string frameScene(const Animation& anim, const Scene& base, int i, Scene& o
   return {};
 }
 
-std::vector<std::string> formulaParams(const Scene& base) {
-  ParseResult parsed = parseSceneFormula(base);
-  const Formula* f = std::get_if<Formula>(&parsed);
-  return f ? f->graph.params() : std::vector<std::string>{};
-}
-
 bool rebuildsEachFrame(const Animation& anim, const Scene& base) {
   if (anim.frames < 2 || anim.from == anim.to) return false;
   Scene first, last;
   if (!frameScene(anim, base, 0, first).empty() ||
       !frameScene(anim, base, anim.frames - 1, last).empty())
     return true;  // cannot tell; rebuilding is always right
-  const std::vector<std::string> names = formulaParams(base);
-  const std::span<const std::string> used(names);
-  return (invalidation(first, last, &used) & (invalidates::Shader | invalidates::Geometry)) != 0;
+  ParseResult parsed = parseSceneFormula(base);
+  const Formula* f = std::get_if<Formula>(&parsed);
+  const Invalidation what = invalidation(first, last, f ? &f->graph.params() : nullptr);
+  return (what & (invalidates::Shader | invalidates::Geometry)) != 0;
 }
 
 }  // namespace zs::app

@@ -15,7 +15,6 @@
 // does not use and camera.orbit change nothing but uniforms, and so on.
 #include <optional>
 #include <string>
-#include <vector>
 
 #include "scene/scene.hpp"
 
@@ -50,8 +49,6 @@ std::string frameScene(const Animation& anim, const Scene& base, int i, Scene& o
 // Whether the frames need more than new uniforms: the schema's rule (scene/invalidation.hpp)
 // between the first and the last frame's scenes says Shader or Geometry.
 bool rebuildsEachFrame(const Animation& anim, const Scene& base);
-// The parameters the scene's formulas use ("" none when they do not parse).
-std::vector<std::string> formulaParams(const Scene& base);
 
 // The eye of `camera` turned by `degrees` about the axis through its target along its up.
 Vec3 orbitEye(const Camera& camera, double degrees);

@@ -21,7 +21,6 @@ class HeadlessTarget final : public PromptTarget {
   explicit HeadlessTarget(std::filesystem::path outputDir);
   ~HeadlessTarget() override;
   std::string run(const PromptCommand& command) override;
-  const session::Session& session() const { return session_; }
 
  private:
   std::string render(const std::filesystem::path& path);

@@ -7,7 +7,7 @@
 #include "app/viewer/viewer.hpp"
 #include "i18n/translate.hpp"
 #include "interact/parameter_range.hpp"
-#include "parser/parser.hpp"
+#include "scene/scene_io.hpp"
 
 namespace zs::app {
 
@@ -65,16 +65,9 @@ void Viewer::onSceneEdited(const Scene& before) {
   const Scene& scene = session_.scene();
   // A new parameter value shows at once through the uniforms; the hierarchy built for the
   // old value follows from the worker.
-  if (before.formula == scene.formula && before.params != scene.params) {
-    std::vector<float> values;
-    for (const std::string& name : panel_.paramNames) {
-      double v = kDefaultParamValue;
-      for (const auto& [key, value] : scene.params) {
-        if (key == name) v = value;
-      }
-      values.push_back(float(v));
-    }
-    view_->setParams(values);
+  if (session_.prepared() && before.formula == scene.formula && before.params != scene.params) {
+    const std::vector<double> values = paramValues(scene, session_.surface()->formula.graph);
+    view_->setParams(std::vector<float>(values.begin(), values.end()));
   }
   requestBuild();
   dirty_ = true;
