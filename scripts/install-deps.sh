@@ -29,6 +29,8 @@ packages=(
   parallel
   # the translations (po/, docs/languages.md): xgettext, msgmerge and msgfmt
   gettext
+  # the layout check of .ci/run (scripts/check-format.sh)
+  clang-format
 )
 for option in "$@"; do
   case $option in

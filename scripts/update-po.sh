@@ -17,7 +17,8 @@ cd "$root"
 # stage, and the parser (its errors reach the viewer and the page as the person types).
 xgettext --from-code=UTF-8 --language=C++ --keyword --keyword=tr --keyword=label --keyword=N_ \
   --add-location=file --sort-by-file -o "$tmp/cpp.pot" \
-  src/app/viewer/*.cpp src/app/gallery.cpp src/interact/*.cpp src/parser/*.cpp
+  src/app/viewer/*.cpp src/app/gallery.cpp src/interact/*.cpp src/parser/*.cpp \
+  src/session/*.cpp
 # The page's scripts: tr('...'), trf('...', values) and N_('...').
 xgettext --from-code=UTF-8 --language=JavaScript --keyword --keyword=tr --keyword=trf --keyword=N_ \
   --add-location=file --sort-by-file -o "$tmp/js.pot" web/*.js

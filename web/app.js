@@ -92,8 +92,17 @@ function loadSurfaceIntoRenderer() {
   const log = renderer.finish(entry);
   if (log === Renderer.LOST) return Renderer.LOST;
   if (log) {
+    // The shader runs to a thousand lines: the console gets it whole, the page a few lines.
+    console.groupCollapsed('zeroset: the rejected shader (driver log and fragment source)');
+    console.error(log);
+    console.log(session.fragmentShader());
+    console.groupEnd();
+    const lines = log.split('\n');
+    const head = lines.slice(0, 12).join('\n') +
+                 (lines.length > 12 ? `\n... (${lines.length - 12} more lines in the console)` : '');
     return 'internal error: the browser\'s WebGL2 rejected the shader zeroset generated for ' +
-           'this formula. This is a bug in zeroset, not a problem with your input.\n' + log;
+           'this formula. This is a bug in zeroset, not a problem with your input.\n' + head +
+           '\nThe whole log and the shader source are in the browser\'s console.';
   }
   if (session.generation() !== uploadedGeneration) {
     const h = session.hierarchy();
@@ -291,25 +300,8 @@ function buildParams() {
   }
 }
 
-const GROUPS = [
-  [N_('Surface'), /^surface/],
-  [N_('Tracing'), /^(tracing|samples|opacity)/],
-  [N_('Domain'), /^(domain|octree)/],
-  [N_('Camera'), /^camera/],
-  [N_('Lights'), /^lights/],
-  [N_('Materials'), /^materials/],
-  [N_('Highlights'), /^(silhouette|border|singular|highlights|reflection)/],
-  [N_('Colouring'), /^(shading|background)/],
-  [N_('Cross-sections'), /^clip/],
-  [N_('Volume'), /^(render|volume)/],
-];
 const MAX_CLIP_PLANES = 4;  // render/settings.hpp kMaxClipPlanes
 const MAX_SURFACES = 4;  // scene/scene.hpp kMaxSurfaces
-
-function groupOf(key) {
-  for (const [name, re] of GROUPS) if (re.test(key)) return name;
-  return N_('More');
-}
 
 function tomlOf(setting, value) {
   switch (setting.type) {
@@ -410,17 +402,19 @@ function buildSettings() {
     }
     return groups.get(name);
   };
-  for (const s of session.settings()) group(groupOf(s.key)).append(settingRow(s));
+  // The sections in the session's order (session::panelGroups), each key where it says.
+  for (const name of core.panelGroups()) group(name);
+  for (const s of session.settings()) group(s.group).append(settingRow(s));
   session.listEntries('lights.source').forEach((light, i) => {
     const set = document.createElement('fieldset');
     const legend = document.createElement('legend');
     legend.textContent = trf('light %d', i + 1);
     set.append(legend, ...light.map(settingRow));
-    group('Lights').append(set);
+    group(core.panelGroup('lights.source')).append(set);
   });
-  surfaceRows(group('Surface'));
-  clipPlaneRows(group('Cross-sections'));
-  box.append(...groups.values());
+  surfaceRows(group(core.panelGroup('surface')));
+  clipPlaneRows(group(core.panelGroup('clip.plane')));
+  box.append(...[...groups.values()].filter((d) => d.children.length > 1));
   if (focused) box.querySelector(`[data-key="${focused}"]`)?.focus();
 }
 

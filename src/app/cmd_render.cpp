@@ -109,7 +109,7 @@ int runRender(const RenderArgs& args) {
   const double rays = double(scene->width) * (band ? band->rows : scene->height) *
                       scene->render.samples * scene->render.samples;
   if (rays <= 8e6) setenv("GALLIVM_PERF", "nopt", /*overwrite=*/0);
-  HeadlessTracer gl = openHeadlessTracer(backend, surface);
+  HeadlessTracer gl = openHeadlessTracer(backend, surface, scene->render);
   if (!gl.tracer) return 1;
   RayTracer& tracer = *gl.tracer;
 

@@ -27,7 +27,7 @@ std::string runPrintJob(const PrintJob& job) {
   auto prepared = prepareSurface(scene);
   if (auto* err = std::get_if<std::string>(&prepared)) return *err;
   const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
-  HeadlessTracer gl = openHeadlessTracer(job.backend, surface);
+  HeadlessTracer gl = openHeadlessTracer(job.backend, surface, scene.render);
   if (!gl.tracer) return "print: no GL context for the picture (see above)\n";
   // The tracer draws in tiles, so a large picture never holds the GPU for long.
   Frame frame = gl.tracer->render(scene.render, scene.domain, side, side);

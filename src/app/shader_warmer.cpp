@@ -51,7 +51,7 @@ void ShaderWarmer::warm(const Scene& scene, const PreparedSurface& surface) {
   if (!ensureContext()) return;
   const std::size_t program = programKey(surface.fragmentShader);
   loaded_ = 0;
-  if (!loadSurface(*tracer_, surface).empty()) return;
+  if (!loadSurface(*tracer_, surface, scene.render).empty()) return;
   loaded_ = program;
   // A program whose passes were warmed before (a new parameter value, octree level) is drawn
   // with them at once; a new one without them, which the front end then does too until

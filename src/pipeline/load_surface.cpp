@@ -6,9 +6,10 @@
 
 namespace zs {
 
-std::string loadSurface(RayTracer& tracer, const PreparedSurface& surface) {
+std::string loadSurface(RayTracer& tracer, const PreparedSurface& surface,
+                        const RenderSettings& drawnWith) {
   std::string log;
-  if (!tracer.build(surface.vertexShader, surface.fragmentShader, log)) return log;
+  if (!tracer.build(surface.vertexShader, surface.fragmentShader, drawnWith, log)) return log;
   if (std::string err = tracer.setHierarchy(surface.hierarchy.packed()); !err.empty()) {
     return "error: " + err + "\n";
   }
@@ -19,7 +20,7 @@ std::string loadSurface(RayTracer& tracer, const PreparedSurface& surface) {
 std::string buildInterpreter(RayTracer& tracer, bool sampling, bool polynomialOnly) {
   std::string log;
   if (!tracer.build(vertexShaderSource(ShaderDialect::Gl330),
-                    interpreterFragmentShader(sampling, polynomialOnly), log))
+                    interpreterFragmentShader(sampling, polynomialOnly), RenderSettings{}, log))
     return log;
   return {};
 }
@@ -101,7 +102,8 @@ RayTracer* TapeInterpreters::load(const QuickSurface& surface, std::string& erro
   return error.empty() ? tracer : nullptr;
 }
 
-HeadlessTracer openHeadlessTracer(Backend backend, const PreparedSurface& surface) {
+HeadlessTracer openHeadlessTracer(Backend backend, const PreparedSurface& surface,
+                                  const RenderSettings& drawnWith) {
   ContextResult ctx = createHeadlessContext(backend);
   if (!ctx.context) {
     std::cerr << "error: " << ctx.error << "\n"
@@ -109,7 +111,7 @@ HeadlessTracer openHeadlessTracer(Backend backend, const PreparedSurface& surfac
     return {};
   }
   HeadlessTracer out{std::move(ctx.context), std::make_unique<RayTracer>()};  // needs the context
-  if (std::string err = loadSurface(*out.tracer, surface); !err.empty()) {
+  if (std::string err = loadSurface(*out.tracer, surface, drawnWith); !err.empty()) {
     std::cerr << err;
     return {};
   }

@@ -15,7 +15,8 @@
 namespace zs {
 
 // "" on success; otherwise text ready to print (the driver's log, or "error: ...").
-std::string loadSurface(RayTracer& tracer, const PreparedSurface& surface);
+std::string loadSurface(RayTracer& tracer, const PreparedSurface& surface,
+                        const RenderSettings& drawnWith);
 
 // A tracer running the tape interpreter's program for `sampling` and `polynomialOnly`
 // (interpreter_glsl.hpp; compiled on the first call, then kept: every formula after it draws
@@ -60,6 +61,7 @@ struct HeadlessTracer {
 };
 
 // Null members after printing why (and a hint) to stderr.
-HeadlessTracer openHeadlessTracer(Backend backend, const PreparedSurface& surface);
+HeadlessTracer openHeadlessTracer(Backend backend, const PreparedSurface& surface,
+                                  const RenderSettings& drawnWith);
 
 }  // namespace zs

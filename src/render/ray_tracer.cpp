@@ -61,13 +61,16 @@ RayTracer::~RayTracer() {
 }
 
 bool RayTracer::build(std::string_view vertexSource, std::string_view fragmentSource,
-                      std::string& log) {
+                      const RenderSettings& drawnWith, std::string& log) {
   // The same text again (a parameter or level change) keeps the programs: llvmpipe's JIT of
   // a new one costs a visible pause.
   if (program_ && programs_.holds(vertexSource, fragmentSource)) return true;
-  const unsigned first = programs_.rebuild(vertexSource, fragmentSource, preferred_, log);
-  if (!first) return false;  // the programs built before stay
-  program_ = first;
+  // Not the last frame's variant: a new surface's shader may not have what that one calls.
+  const ProgramVariant first = ProgramVariant::of(drawnWith);
+  const unsigned program = programs_.rebuild(vertexSource, fragmentSource, first, log);
+  if (!program) return false;  // the programs built before stay
+  program_ = program;
+  preferred_ = first;
   return true;
 }
 

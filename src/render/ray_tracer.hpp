@@ -50,10 +50,13 @@ class RayTracer {
   RayTracer(const RayTracer&) = delete;
   RayTracer& operator=(const RayTracer&) = delete;
 
-  // Compiles and links; on failure returns false and `log` holds the driver log plus the
-  // numbered source. A failed build keeps the previous program, if any; the same sources as
-  // the current program's are not compiled again.
-  bool build(std::string_view vertexSource, std::string_view fragmentSource, std::string& log);
+  // Compiles and links the variant of `drawnWith` (the settings the next frame is drawn
+  // with: a shader built for them may lack what another variant calls, e.g. the Hessian a
+  // curvature coloring needs); on failure returns false and `log` holds a short message
+  // (shader_program.hpp). A failed build keeps the previous program, if any; the same
+  // sources as the current program's are not compiled again.
+  bool build(std::string_view vertexSource, std::string_view fragmentSource,
+             const RenderSettings& drawnWith, std::string& log);
   bool ready() const { return program_ != 0; }
   FrameStorage frameStorage() const { return programs_.frameStorage(); }
 

@@ -1,7 +1,9 @@
 #pragma once
 // Compiles and links a vertex + fragment shader pair on the current GL context. Takes the
-// two source texts, puts out a program id or a log: the driver's message plus the failing
-// source with line numbers, so an error like "0:212(35): ..." can be read in place.
+// two source texts, puts out a program id or a short message: which stage failed and the
+// head of the driver's log, with the whole log and the numbered source in a file whose
+// path the message names (zeroset's shaders run to a thousand lines; a terminal is no place
+// for them).
 #include <string>
 #include <string_view>
 
@@ -9,9 +11,5 @@ namespace zs {
 
 // 0 on failure, with `log` filled. Requires a current context with glad loaded.
 unsigned compileProgram(std::string_view vertex, std::string_view fragment, std::string& log);
-
-// "   1| line" for every line, restarting where a "#line N" directive says, as the
-// compiler counts: what a shader error is read against.
-std::string numberedSource(std::string_view source);
 
 }  // namespace zs

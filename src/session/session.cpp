@@ -12,6 +12,7 @@
 #include "render/program_variant.hpp"
 #include "scene/scene_io.hpp"
 #include "scene/schema.hpp"
+#include "i18n/translate.hpp"
 
 namespace zs::session {
 namespace {
@@ -420,11 +421,44 @@ std::string Session::sceneText() const {
 
 namespace {
 
+// The first prefix that a key starts with names its section; N_ marks the names for
+// translation where they are shown.
+struct GroupRule {
+  std::string_view prefix;
+  std::string_view group;
+};
+constexpr std::string_view kGroups[] = {N_("Surface"),  N_("Tracing"),    N_("Domain"),
+                                        N_("Camera"),   N_("Lights"),     N_("Materials"),
+                                        N_("Highlights"), N_("Colouring"), N_("Cross-sections"),
+                                        N_("Volume"),   N_("More")};
+constexpr GroupRule kGroupRules[] = {
+    {"surface", kGroups[0]},     {"tracing", kGroups[1]},       {"samples", kGroups[1]},
+    {"opacity", kGroups[1]},     {"domain", kGroups[2]},        {"octree", kGroups[2]},
+    {"image", kGroups[2]},       {"camera", kGroups[3]},        {"lights", kGroups[4]},
+    {"materials", kGroups[5]},   {"highlights", kGroups[6]},    {"reflection", kGroups[6]},
+    {"shading", kGroups[7]},     {"background", kGroups[7]},    {"clip", kGroups[8]},
+    {"render", kGroups[9]},      {"volume", kGroups[9]},
+};
+
+}  // namespace
+
+std::string_view panelGroup(std::string_view key) {
+  for (const GroupRule& rule : kGroupRules) {
+    if (key.starts_with(rule.prefix)) return rule.group;
+  }
+  return kGroups[std::size(kGroups) - 1];
+}
+
+std::span<const std::string_view> panelGroups() { return kGroups; }
+
+namespace {
+
 // One schema key's range and current value in `scene`, as the panels show it.
 Setting settingOf(const scene_detail::KeySpec& spec, Scene& scene, std::string key) {
   using namespace scene_detail;
   Setting s;
   s.key = std::move(key);
+  s.group = std::string(panelGroup(s.key));
   s.lo = spec.range.lo;
   s.hi = spec.range.hi;
   s.loOpen = spec.range.loOpen;

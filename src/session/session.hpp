@@ -48,7 +48,14 @@ struct Setting {
   std::vector<std::string> choices;  // enum only
   std::vector<double> value;         // the current value: 1 number (bool: 0/1), or 3
   std::string choice;                // enum: the current name; function: its text
+  std::string group;                 // the panel section it is shown in (panelGroup)
 };
+
+// The panel section a key of the schema (or a list: "lights.source") is shown in, in
+// English ("Tracing", "Lights"); both panels, the viewer's and the page's, group by it.
+std::string_view panelGroup(std::string_view key);
+// The sections in the order the panels show them.
+std::span<const std::string_view> panelGroups();
 
 struct SessionOptions {
   // GLSL for the desktop's GL 3.3, or GLSL ES 3.00 for WebGL2 (pipeline.hpp).

@@ -185,6 +185,7 @@ val settingJs(const Setting& setting) {
   e.set("choices", arrayOf(setting.choices));
   e.set("value", arrayOf(setting.value));
   e.set("choice", setting.choice);
+  e.set("group", setting.group);
   return e;
 }
 
@@ -278,6 +279,14 @@ std::string knownLanguageJs(const std::string& tag) { return i18n::knownLanguage
 EMSCRIPTEN_BINDINGS(zeroset) {
   emscripten::function("keys", &keysJs);
   emscripten::function("typingPauseMs", +[] { return session::kTypingPauseMs; });
+  emscripten::function("panelGroups", +[] {
+    val out = val::array();
+    for (std::string_view g : session::panelGroups()) out.call<void>("push", std::string(g));
+    return out;
+  });
+  emscripten::function("panelGroup", +[](const std::string& key) {
+    return std::string(session::panelGroup(key));
+  });
   emscripten::function("dragScale", &dragScaleJs);
   emscripten::function("kioskDefaults", &kioskDefaultsJs);
   emscripten::function("kioskRefusal", &kioskRefusalJs);

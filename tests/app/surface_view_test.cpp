@@ -49,7 +49,7 @@ TEST(SurfaceView, InterpretersWarmOnAThreadOfTheirOwnWhileTheWindowDraws) {
     const Scene sphere = sceneOf("x^2+y^2+z^2-1");
     auto prepared = prepareSurface(sphere);
     ASSERT_TRUE(std::holds_alternative<PreparedSurface>(prepared)) << std::get<std::string>(prepared);
-    ASSERT_EQ(view.upload(std::get<PreparedSurface>(prepared)), "");
+    ASSERT_EQ(view.upload(std::get<PreparedSurface>(prepared), sphere.render), "");
 
     std::atomic<bool> done{false};
     view.warmInterpreters(sphere, kWidth, kHeight, [&] { done = true; });

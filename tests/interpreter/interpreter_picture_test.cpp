@@ -51,7 +51,7 @@ TEST_P(InterpreterPicture, MatchesTheFormulasOwnShader) {
   const RenderSettings settings = test::testSettings({1.2, 1.6, 2.4});
   const int size = 96;
   RayTracer own;
-  ASSERT_EQ(loadSurface(own, std::get<PreparedSurface>(prepared)), "");
+  ASSERT_EQ(loadSurface(own, std::get<PreparedSurface>(prepared), settings), "");
   const Frame expected = own.render(settings, scene.domain, size, size);
   ASSERT_EQ(expected.error, "");
 

@@ -33,7 +33,7 @@ TEST_P(ContextTest, CompileErrorsComeBackWithDriverLogAndNumberedSource) {
   std::string log;
   const std::string broken =
       "#version 330 core\nout vec4 c;\nvoid main() {\n  c = vec4(1.0) +;\n}\n";
-  EXPECT_FALSE(tracer.build(vertexShaderSource(), broken, log));
+  EXPECT_FALSE(tracer.build(vertexShaderSource(), broken, RenderSettings{}, log));
   EXPECT_FALSE(tracer.ready());
   EXPECT_NE(log.find("fragment shader failed to compile"), std::string::npos) << log;
   EXPECT_NE(log.find("    4|   c = vec4(1.0) +;"), std::string::npos) << log;

@@ -48,7 +48,7 @@ TEST(DoubleFloat, LoopedConvolutionsDrawWhatTheDoubleExpansionDraws) {
   Image pictures[2];
   for (int i = 0; i < 2; ++i) {
     RayTracer tracer;
-    ASSERT_EQ(loadSurface(tracer, i == 0 ? desktop : web), "");
+    ASSERT_EQ(loadSurface(tracer, i == 0 ? desktop : web, scene.render), "");
     const Frame frame = tracer.render(scene.render, scene.domain, kWidth, kHeight);
     ASSERT_EQ(frame.error, "");
     pictures[i] = frame.color;

@@ -54,7 +54,7 @@ TEST_P(EveryMethod, EveryFormulaRendersWithoutAnInternalError) {
     }
     const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
     RayTracer tracer;
-    const std::string loaded = loadSurface(tracer, surface);
+    const std::string loaded = loadSurface(tracer, surface, scene.render);
     ASSERT_EQ(loaded, "");
     const Frame frame = tracer.render(scene.render, scene.domain, 8, 8);
     EXPECT_EQ(frame.error, "");

@@ -19,7 +19,7 @@ Frame draw(const Scene& scene, int size) {
   EXPECT_TRUE(std::holds_alternative<PreparedSurface>(prepared));
   if (!std::holds_alternative<PreparedSurface>(prepared)) return {};
   auto tracer = std::make_unique<RayTracer>();
-  EXPECT_EQ(loadSurface(*tracer, std::get<PreparedSurface>(prepared)), "");
+  EXPECT_EQ(loadSurface(*tracer, std::get<PreparedSurface>(prepared), scene.render), "");
   return tracer->render(scene.render, scene.domain, size, size);
 }
 

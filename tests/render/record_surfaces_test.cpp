@@ -57,7 +57,7 @@ TEST_P(RecordSurfaces, NoPixelWithoutSurfaceAndNoneMissing) {
   const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
   ASSERT_EQ(surface.method, method) << surface.methodWarning;
   auto tracer = std::make_unique<RayTracer>();
-  ASSERT_EQ(loadSurface(*tracer, surface), "");
+  ASSERT_EQ(loadSurface(*tracer, surface, scene->render), "");
   const int size = record.size;
   const Frame frame = tracer->render(scene->render, scene->domain, size, size);
   ASSERT_EQ(frame.error, "");
@@ -96,7 +96,7 @@ TEST(RecordSurfacesWindows, ARootFoundInAReexpansionWindowIsKept) {
       << std::get<std::string>(prepared);
   const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
   auto tracer = std::make_unique<RayTracer>();
-  ASSERT_EQ(loadSurface(*tracer, surface), "");
+  ASSERT_EQ(loadSurface(*tracer, surface, scene->render), "");
   const int size = 96;
   const Frame frame = tracer->render(scene->render, scene->domain, size, size);
   ASSERT_EQ(frame.error, "");

@@ -52,7 +52,7 @@ int run(int argc, char** argv) {
       return 1;
     }
     const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
-    HeadlessTracer gl = openHeadlessTracer(Backend::Egl, surface);
+    HeadlessTracer gl = openHeadlessTracer(Backend::Egl, surface, scene.render);
     if (!gl.tracer) return 1;
     const Frame frame = gl.tracer->render(scene.render, scene.domain, size, size);
     if (!frame.error.empty()) {

@@ -63,7 +63,7 @@ std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& erro
   }
   auto tracer = spec.frameStorage ? std::make_unique<RayTracer>(*spec.frameStorage)
                                   : std::make_unique<RayTracer>();
-  if (error = loadSurface(*tracer, std::get<PreparedSurface>(prepared)); !error.empty())
+  if (error = loadSurface(*tracer, std::get<PreparedSurface>(prepared), scene.render); !error.empty())
     return nullptr;
   return tracer;
 }

@@ -111,7 +111,7 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
               << "\nhint: with --animate, -o names a folder, e.g. -o frames/\n";
     return 1;
   }
-  HeadlessTracer gl = openHeadlessTracer(backend, *session.surface());
+  HeadlessTracer gl = openHeadlessTracer(backend, *session.surface(), session.scene().render);
   if (!gl.tracer) return 1;
   RayTracer& tracer = *gl.tracer;
 
@@ -128,7 +128,7 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
       error = session.edit(scene);
       if (error.empty()) error = session.prepare();
       if (error.empty() && session.generation() != loaded) {
-        error = loadSurface(tracer, *session.surface());
+        error = loadSurface(tracer, *session.surface(), session.scene().render);
         loaded = session.generation();
       }
       if (!error.empty()) {

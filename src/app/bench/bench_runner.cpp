@@ -58,7 +58,7 @@ FirstFrame measureFirstFrame(int number, const Scene& scene, RayTracer& tracer,
   ff.cpu = prepared->times;
   auto t = Clock::now();
   std::string log;
-  if (!tracer.build(prepared->vertexShader, prepared->fragmentShader, log)) {
+  if (!tracer.build(prepared->vertexShader, prepared->fragmentShader, scene.render, log)) {
     ff.error = log;
     return ff;
   }

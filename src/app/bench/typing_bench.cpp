@@ -133,7 +133,7 @@ TypingResults runTypingBench(const Scene& base, const std::string& formula,
     const Scene& scene = session.scene();
     ctx.context->makeCurrent();
     const PreparedSurface& built = *session.surface();
-    if (error.empty()) error = loadSurface(own, built);
+    if (error.empty()) error = loadSurface(own, built, scene.render);
     own.setBeamPass(warmer.passesWarm(app::ShaderWarmer::programKey(built.fragmentShader)));
     if (error.empty()) error = own.drawOffscreen(scene.render, scene.domain, out.width, out.height);
     glFinish();

@@ -24,7 +24,7 @@ std::string HeadlessTarget::render(const std::filesystem::path& path) {
     tracer_ = std::make_unique<RayTracer>();
   }
   if (loadedGeneration_ != session_.generation()) {
-    if (std::string err = loadSurface(*tracer_, *session_.surface()); !err.empty()) return err;
+    if (std::string err = loadSurface(*tracer_, *session_.surface(), session_.scene().render); !err.empty()) return err;
     loadedGeneration_ = session_.generation();
   }
   const Scene& scene = session_.scene();

@@ -44,8 +44,9 @@ void SurfaceView::drawFirstPicturesIn(std::unique_ptr<GlfwWindowContext> first, 
   first_ = std::make_unique<FirstPictures>();
 }
 
-std::string SurfaceView::upload(const PreparedSurface& surface, bool endsQuick) {
-  std::string error = loadSurface(tracer_, surface);
+std::string SurfaceView::upload(const PreparedSurface& surface, const RenderSettings& drawnWith,
+                                bool endsQuick) {
+  std::string error = loadSurface(tracer_, surface, drawnWith);
   if (error.empty() && endsQuick) quick_ = nullptr;
   return error;
 }

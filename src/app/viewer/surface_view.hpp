@@ -44,7 +44,8 @@ class SurfaceView {
   // parameter value or octree level changes only the hierarchy), then sets the hierarchy
   // and the parameters. "" on success; on failure the previous surface stays.
   // The surface's own program replaces a first picture only when `endsQuick`.
-  std::string upload(const PreparedSurface& surface, bool endsQuick = true);
+  std::string upload(const PreparedSurface& surface, const RenderSettings& drawnWith,
+                     bool endsQuick = true);
   void setParams(std::span<const float> params);
   // Whether the surface's own program draws with its beam pass and tile mask (the picture is
   // the same without them): off until the ShaderWarmer has compiled them.

@@ -85,7 +85,7 @@ void Viewer::takeBuild() {
   if (const auto* surface = std::get_if<PreparedSurface>(&build.surface)) {
     // A first picture of a newer formula stays until that formula's own build arrives.
     const bool endsQuick = quickFormula_.empty() || formula == quickFormula_;
-    if (std::string err = view_->upload(*surface, endsQuick); !err.empty()) {
+    if (std::string err = view_->upload(*surface, build.scene.render, endsQuick); !err.empty()) {
       build.surface = std::move(err);
     } else {
       uploaded = true;
