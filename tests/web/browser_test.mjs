@@ -658,7 +658,8 @@ cases['languages'] = async () => {
 // Cases that share one browser in test.sh (a browser's start is a second of a short case).
 const GROUPS = {
   errors: ['bad-formula-keeps-picture', 'bad-url-shows-error-above-default'],
-  'files-and-layouts': ['drop-surf-loads', 'bad-file', 'embed-and-size', 'phone-layout'],
+  files: ['drop-surf-loads', 'bad-file'],
+  layouts: ['embed-and-size', 'phone-layout'],
   pointer: ['hover-shows-curvature', 'touch-drag-turns'],
   links: ['share-link', 'bad-url-parameters'],
   panels: ['light-edit-redraws', 'clip-plane-panel'],
