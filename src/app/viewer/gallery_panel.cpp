@@ -20,13 +20,11 @@ int drawGallery(GalleryPanel& g, int current) {
       ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.85f);
   if (ImGui::Begin(i18n::label("gallery"), &g.visible)) {
-    if (g.focusSearch) {
-      ImGui::SetKeyboardFocusHere();
-      g.focusSearch = false;
-    }
+    g.searchFocus.beforeItem();
     ImGui::SetNextItemWidth(-1);
     const bool enter = ImGui::InputTextWithHint("##search", i18n::tr("search: name or description"),
                                                 &g.search, ImGuiInputTextFlags_EnterReturnsTrue);
+    g.searchFocus.afterItem();
     int firstMatch = -1;
     ImGui::BeginChild("entries");
     for (std::size_t i = 0; i < g.entries.size(); ++i) {

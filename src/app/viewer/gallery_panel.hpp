@@ -8,13 +8,14 @@
 #include <vector>
 
 #include "app/gallery.hpp"
+#include "app/viewer/focus_request.hpp"
 #include "app/viewer/gallery_thumbnails.hpp"
 
 namespace zs::app {
 
 struct GalleryPanel {
   bool visible = false;
-  bool focusSearch = false;  // put the cursor in the search box next frame
+  FocusRequest searchFocus;  // put the cursor in the search box
   std::string search;
   std::vector<GalleryEntry> entries;  // one per example, in the examples' order
   GalleryThumbnails thumbnails;       // of the entries that have a picture

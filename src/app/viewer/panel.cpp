@@ -34,14 +34,12 @@ double& paramSlot(Scene& scene, const std::string& name) {
 
 void drawFormula(PanelState& state, PanelResult& result) {
   ImGui::TextUnformatted("F(x,y,z) =");
-  if (state.focusFormula) {
-    ImGui::SetKeyboardFocusHere();
-    state.focusFormula = false;
-  }
+  state.formulaFocus.beforeItem();
   ImGui::SetNextItemWidth(-1);
   ImGui::PushFont(formulaFont());
   const bool enter = ImGui::InputText("##formula", &state.formula,
                                       ImGuiInputTextFlags_EnterReturnsTrue);
+  state.formulaFocus.afterItem();
   if (ImGui::IsItemEdited()) {
     result.formulaEdited = true;
     checkFormulaText(state);

@@ -10,37 +10,38 @@
 #include <utility>
 #include <vector>
 
+#include "app/viewer/focus_request.hpp"
 #include "interact/kiosk.hpp"
 #include "scene/scene.hpp"
 
 namespace zs::app {
 
 struct PanelStats {
-  double fps = 0;          // window frames per second
-  double frameMs = 0;      // one window frame, ray tracing included when it traced
-  double traceMs = 0;      // the latest trace alone
-  int traceScale = 1;      // 1 = full resolution, 2 = half, ...
+  double fps = 0;      // window frames per second
+  double frameMs = 0;  // one window frame, ray tracing included when it traced
+  double traceMs = 0;  // the latest trace alone
+  int traceScale = 1;  // 1 = full resolution, 2 = half, ...
   int width = 0, height = 0;
-  double buildMs = 0;      // request to upload, for the shown surface
-  std::size_t leaves = 0;  // octree leaves of the shown surface
-  std::size_t nodes = 0;   // of the box hierarchy
+  double buildMs = 0;       // request to upload, for the shown surface
+  std::size_t leaves = 0;   // octree leaves of the shown surface
+  std::size_t nodes = 0;    // of the box hierarchy
   int singularPoints = -1;  // marked by highlights.singular; -1 when the highlight is off
   bool building = false;
-  std::string example;     // name of the example on screen, if any
-  std::string status;      // the latest action's message
+  std::string example;  // name of the example on screen, if any
+  std::string status;   // the latest action's message
   // Curvature colorings: the value at the ends of the color map (the legend); 0 otherwise.
   double curvatureRange = 0;
-  bool gaussian = false;   // which curvature: Gaussian, or mean
+  bool gaussian = false;  // which curvature: Gaussian, or mean
 };
 
 struct PanelState {
-  std::string formula;       // text in the box (may not parse)
-  std::string formulaError;  // caret + message for `formula`, or the build's error
-  bool focusFormula = false; // set by the F key: put the cursor in the box next frame
-  std::vector<std::string> paramNames;                 // of the shown surface
+  std::string formula;                  // text in the box (may not parse)
+  std::string formulaError;             // caret + message for `formula`, or the build's error
+  FocusRequest formulaFocus;            // asked by the F key: put the cursor in the box
+  std::vector<std::string> paramNames;  // of the shown surface
   std::vector<std::pair<double, double>> paramRanges;  // slider bounds, fixed per surface
-  int meshLevel = 7;         // grid level of "Export mesh" (docs/mesh.md)
-  bool meshCap = false;      // close the solid along the domain for printing
+  int meshLevel = 7;                                   // grid level of "Export mesh" (docs/mesh.md)
+  bool meshCap = false;  // close the solid along the domain for printing
   // Per parameter: 0 at rest, +1 or -1 while its play button sweeps it up or down.
   std::vector<int> playing;
   // An exhibit (--kiosk): formulas above its degree are refused like a parse error, the

@@ -234,6 +234,8 @@ void Viewer::frame() {
   if (gallery_.visible) {
     if (const int picked = drawGallery(gallery_, exampleIndex_); picked >= 0) showExampleAt(picked);
   }
+  panel_.formulaFocus.endFrame();
+  gallery_.searchFocus.endFrame();
   // Under the pointer, over the picture and while nothing is dragged or rebuilt: what lies
   // there (src/probe).
   if (session_.prepared() && dragButton_ < 0 && !ImGui::GetIO().WantCaptureMouse &&

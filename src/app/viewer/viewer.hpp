@@ -20,18 +20,18 @@
 #include <vector>
 
 #include "app/repl/command.hpp"
+#include "app/shader_warmer.hpp"
 #include "app/viewer/examples.hpp"
 #include "app/viewer/gallery_panel.hpp"
+#include "app/viewer/hover_probe.hpp"
+#include "app/viewer/panel.hpp"
+#include "app/viewer/surface_view.hpp"
 #include "interact/key_bindings.hpp"
 #include "interact/kiosk.hpp"
 #include "interact/trace_budget.hpp"
-#include "app/viewer/panel.hpp"
-#include "app/viewer/hover_probe.hpp"
-#include "app/shader_warmer.hpp"
-#include "app/viewer/surface_view.hpp"
+#include "render/glfw_context.hpp"
 #include "session/session.hpp"
 #include "session/surface_worker.hpp"
-#include "render/glfw_context.hpp"
 
 namespace zs::app {
 
@@ -39,9 +39,9 @@ struct ViewerOptions {
   Scene scene;
   std::string title = "zeroset";
   std::filesystem::path outputDir = ".";  // screenshots and saved scenes
-  std::filesystem::path sceneFile;  // the scene's file, if any: meshes are written beside it
+  std::filesystem::path sceneFile;        // the scene's file, if any: meshes are written beside it
   int exampleIndex = -1;  // the scene is this entry of listExamples() (N/P go on from it)
-  int dragScale = 0;  // fixed resolution divisor while dragging; 0 = adapt to hold ~30 fps
+  int dragScale = 0;      // fixed resolution divisor while dragging; 0 = adapt to hold ~30 fps
   // Print events on stdout: "ready WxH" once the first surface is on screen at full
   // resolution, "built FORMULA", and each key action's message (scripts and tests).
   bool log = false;
@@ -164,7 +164,7 @@ class Viewer {
   std::unique_ptr<session::SurfaceWorker> worker_;
   bool imguiReady_ = false;
 
-  session::Session session_;  // the scene edited and shown, and the surface on screen
+  session::Session session_;      // the scene edited and shown, and the surface on screen
   std::size_t builtProgram_ = 0;  // its program (ShaderWarmer::programKey)
   std::vector<Example> examples_;
   int exampleIndex_ = -1;
@@ -179,9 +179,9 @@ class Viewer {
   bool dirty_ = true, refine_ = false;
   int uiFrames_ = 3;  // frames still to draw for ImGui to settle after an event
   std::optional<std::chrono::steady_clock::time_point> buildAt_;  // debounced formula build
-  std::string quickFormula_;  // the formula of the first picture on screen, "" if none
+  std::string quickFormula_;        // the formula of the first picture on screen, "" if none
   bool interpretersAsked_ = false;  // the worker was asked to warm the interpreters
-  std::array<bool, 2> firstPicturesSaid_{};  // [sampling]: "first pictures ready" was logged
+  std::array<bool, 2> firstPicturesSaid_{};       // [sampling]: "first pictures ready" was logged
   std::vector<int> pressedSincePoll_, heldKeys_;  // holdQuickKeys
   struct MouseButtonEvent {
     int button;
@@ -201,7 +201,10 @@ class Viewer {
   // The key that last asked for the formula or search box (GLFW key code, -1 none): its own
   // character is dropped, not typed into that box.
   int focusKey_ = -1;
-  bool focusPending() const { return panel_.focusFormula || gallery_.focusSearch; }
+  bool focusPending() const {
+    return panel_.formulaFocus.pending() || gallery_.searchFocus.pending();
+  }
+  bool focusTaken() const { return panel_.formulaFocus.taken() || gallery_.searchFocus.taken(); }
   std::vector<unsigned> waitingChars_;
   int waitingCharsArrived_ = 0;
   bool buttonsDown_[3] = {false, false, false};  // as ImGui was last told
@@ -232,13 +235,13 @@ class Viewer {
   // Since when waiting_ has waited for builds, and whether the log has said so.
   std::optional<std::chrono::steady_clock::time_point> waitingSince_;
   bool waitingSaid_ = false;
-  bool windowShot_ = false;        // Shift+C: capture before the next swap
-  std::filesystem::path sceneFile_;      // where the shown scene was loaded from, if anywhere
-  std::string startLabel_;               // the start scene's example label, if it is one
-  std::string startLanguage_;            // a kiosk's, restored for the next visitor
+  bool windowShot_ = false;          // Shift+C: capture before the next swap
+  std::filesystem::path sceneFile_;  // where the shown scene was loaded from, if anywhere
+  std::string startLabel_;           // the start scene's example label, if it is one
+  std::string startLanguage_;        // a kiosk's, restored for the next visitor
   std::chrono::steady_clock::time_point lastInput_ = std::chrono::steady_clock::now();
   std::chrono::steady_clock::time_point lastBuilt_ = lastInput_;  // a new formula's build arrived
-  bool inputSinceStart_ = false;         // kiosk: the start screen was left
+  bool inputSinceStart_ = false;           // kiosk: the start screen was left
   std::future<FileJobResult> meshExport_;  // a running export's summary
   std::future<FileJobResult> print_;       // a running print's message
 };

@@ -15,23 +15,35 @@ namespace zs::app {
 using namespace zs::interact;
 namespace {
 
-Viewer* self(GLFWwindow* window) { return static_cast<Viewer*>(glfwGetWindowUserPointer(window)); }
+Viewer* self(GLFWwindow* window) {
+  return static_cast<Viewer*>(glfwGetWindowUserPointer(window));
+}
 
 }  // namespace
 
 void Viewer::installCallbacks() {
   GLFWwindow* w = window_->window();
   glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int mods) {
-    self(win)->noteInput();
-    if (action == GLFW_PRESS && key >= 0 && key < 512) self(win)->pressedSincePoll_.push_back(key);
+    Viewer* v = self(win);
+    v->noteInput();
+    // A shortcut typed into a text box (Ctrl+A) gets a frame of its own, with its modifiers
+    // held, and what follows waits for the next: a slow frame may read the whole chord's
+    // presses and releases at once, and the box ignores the characters of a frame in which
+    // Ctrl is down.
+    const bool shortcut = (action == GLFW_PRESS || action == GLFW_REPEAT) &&
+                          (mods & (GLFW_MOD_CONTROL | GLFW_MOD_SUPER)) != 0 &&
+                          ImGui::GetIO().WantTextInput;
+    if (action == GLFW_PRESS && key >= 0 && key < 512 && !shortcut)
+      v->pressedSincePoll_.push_back(key);
     if (action == GLFW_PRESS || action == GLFW_REPEAT) {
       // A key pressed after a click that has not reached the panel yet (a slow frame held
       // both) waits for it: the click may take the focus from a text box, which decides
       // whether the key is the viewer's or the box's. So does a key after one that asked for
       // a text box which has not taken the focus yet: it is meant for that box.
-      Viewer* v = self(win);
-      if (v->inputWaits()) v->waitingKeys_.push_back({key, mods, v->focusPending()});
-      else v->onKey(key, mods);
+      if (v->inputWaits() || shortcut)
+        v->waitingKeys_.push_back({key, mods, v->focusPending() || shortcut});
+      else
+        v->onKey(key, mods);
     }
     self(win)->uiFrames_ = 3;
   });
@@ -142,7 +154,7 @@ void Viewer::releaseWaitingInput() {
       io.KeyShift = (e.mods & GLFW_MOD_SHIFT) != 0;
       io.KeyAlt = (e.mods & GLFW_MOD_ALT) != 0;
       io.KeySuper = (e.mods & GLFW_MOD_SUPER) != 0;
-      onKey(e.key, e.mods);  // the viewer's, where the box did not take the focus after all
+      if (!focusTaken()) onKey(e.key, e.mods);  // the viewer's: the box did not take the focus
       uiFrames_ = std::max(uiFrames_, 2);
       return;
     }
@@ -189,8 +201,10 @@ void Viewer::onCursor(double x, double y) {
   if (dragButton_ < 0) return;
   int width = 0, height = 0;
   glfwGetWindowSize(window_->window(), &width, &height);
-  if (dragButton_ == GLFW_MOUSE_BUTTON_LEFT) session_.drag(dragX_, dragY_, x, y, width, height);
-  else session_.dragLight(dragX_, dragY_, x, y, width, height);
+  if (dragButton_ == GLFW_MOUSE_BUTTON_LEFT)
+    session_.drag(dragX_, dragY_, x, y, width, height);
+  else
+    session_.dragLight(dragX_, dragY_, x, y, width, height);
   dirty_ = true;
 }
 
@@ -205,7 +219,8 @@ void Viewer::onScroll(double dy) {
 void Viewer::showExample(int delta) {
   const int n = int(examples_.size());
   if (n == 0) return;
-  showExampleAt(exampleIndex_ < 0 ? (delta > 0 ? 0 : n - 1) : ((exampleIndex_ + delta) % n + n) % n);
+  showExampleAt(exampleIndex_ < 0 ? (delta > 0 ? 0 : n - 1)
+                                  : ((exampleIndex_ + delta) % n + n) % n);
 }
 
 void Viewer::toggleGallery() {
@@ -221,7 +236,7 @@ void Viewer::openGallery() {
   // Described on first use: reading every example's file is not worth it for a viewer that
   // never opens the gallery.
   if (gallery_.entries.size() != examples_.size()) gallery_.entries = describeExamples(examples_);
-  gallery_.focusSearch = true;
+  gallery_.searchFocus.ask();
   if (options_.log) {
     std::printf("gallery: %zu examples\n", gallery_.entries.size());
     std::fflush(stdout);
@@ -239,7 +254,9 @@ void Viewer::returnToStartIfIdle() {
   // not idle: the time counts from the later of their last input and the new surface's
   // arrival. (Rebuilds of the same formula, as a playing parameter asks for them all the
   // time, do not hold it back.)
-  if (inputWaits() || buildAt_ || (worker_->busy() && session_.scene().formula != session_.preparedScene().formula)) return;
+  if (inputWaits() || buildAt_ ||
+      (worker_->busy() && session_.scene().formula != session_.preparedScene().formula))
+    return;
   const std::chrono::duration<double> idle =
       std::chrono::steady_clock::now() - std::max(lastInput_, lastBuilt_);
   if (idle.count() < options_.kiosk->idleSeconds) return;
@@ -292,7 +309,8 @@ void Viewer::showExampleAt(int index) {
 void Viewer::relabel() {
   const int n = int(examples_.size());
   if (options_.exampleIndex >= 0 && options_.exampleIndex < n)
-    startLabel_ = exampleLabel(options_.exampleIndex, n, examples_[std::size_t(options_.exampleIndex)].name);
+    startLabel_ =
+        exampleLabel(options_.exampleIndex, n, examples_[std::size_t(options_.exampleIndex)].name);
   if (!stats_.example.empty() && exampleIndex_ >= 0 && exampleIndex_ < n)
     stats_.example = exampleLabel(exampleIndex_, n, examples_[std::size_t(exampleIndex_)].name);
 }
@@ -309,21 +327,41 @@ void Viewer::runAction(Action action) {
     return;
   }
   switch (action) {
-    case Action::NextExample: showExample(1); break;
-    case Action::PrevExample: showExample(-1); break;
-    case Action::Screenshot: waiting_.push_back({{PromptCommand::Kind::Png, {}}, std::nullopt}); break;
-    case Action::WindowShot: windowShot_ = true; break;
-    case Action::SaveScene: waiting_.push_back({{PromptCommand::Kind::Save, {}}, std::nullopt}); break;
-    case Action::ExportMesh: startMeshExport(); break;
-    case Action::PrintPage: startPrint(); break;
+    case Action::NextExample:
+      showExample(1);
+      break;
+    case Action::PrevExample:
+      showExample(-1);
+      break;
+    case Action::Screenshot:
+      waiting_.push_back({{PromptCommand::Kind::Png, {}}, std::nullopt});
+      break;
+    case Action::WindowShot:
+      windowShot_ = true;
+      break;
+    case Action::SaveScene:
+      waiting_.push_back({{PromptCommand::Kind::Save, {}}, std::nullopt});
+      break;
+    case Action::ExportMesh:
+      startMeshExport();
+      break;
+    case Action::PrintPage:
+      startPrint();
+      break;
     case Action::FocusFormula:
       panelVisible_ = true;
-      panel_.focusFormula = true;
+      panel_.formulaFocus.ask();
       break;
-    case Action::TogglePanel: panelVisible_ = !panelVisible_; break;
-    case Action::ToggleGallery: toggleGallery(); break;
+    case Action::TogglePanel:
+      panelVisible_ = !panelVisible_;
+      break;
+    case Action::ToggleGallery:
+      toggleGallery();
+      break;
 
-    case Action::Quit: glfwSetWindowShouldClose(window_->window(), GLFW_TRUE); break;
+    case Action::Quit:
+      glfwSetWindowShouldClose(window_->window(), GLFW_TRUE);
+      break;
     default: {  // the scene edits and the view's reset are the session's
       const Scene before = session_.scene();
       if (session_.action(action, message) != 0) {
