@@ -14,7 +14,7 @@ packages=(
   # at an older point release (docs/toolchain notes).
   libegl-dev libopengl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
   libglfw3-dev libglm-dev glslang-dev glslang-tools python3-glad
-  libpng-dev libimgui-dev libcli11-dev libtomlplusplus-dev libedit-dev
+  libpng-dev libjpeg-dev libimgui-dev libcli11-dev libtomlplusplus-dev libedit-dev
   libgtest-dev libgmock-dev libbenchmark-dev libmpfi-dev libmpfr-dev libgmp-dev
   xvfb xauth xdotool
   # the viewer's font (src/app/viewer/fonts.cpp); the printed page's serif italic

@@ -16,6 +16,7 @@ void addCommands(CLI::App& app) {
   addCheckCommand(app);
   addRenderCommand(app);
   addPrintCommand(app);
+  addSurfCommand(app);
   addOctreeCommand(app);
   addShaderCommand(app);
   addBenchCommand(app);

@@ -2,6 +2,8 @@
 // The zeroset command line: one function per subcommand registers it with CLI11; each
 // lives in its own cmd_*.cpp.
 #include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
 
 namespace zs::app {
 
@@ -19,6 +21,11 @@ void addGalleryCommand(CLI::App& app);
 void addProbeCommand(CLI::App& app);
 void addAssembleCommand(CLI::App& app);
 void addPrintCommand(CLI::App& app);
+void addSurfCommand(CLI::App& app);
+
+// zeroset run as surf, surf-alggeo or surf-alggeo-nox: surf's command line (cmd_surf.cpp);
+// `args` without the program's name.
+int runSurfCommandLine(const std::vector<std::string>& args);
 
 // `zeroset` with no arguments: the formula prompt (repl/prompt.hpp).
 int runPrompt();

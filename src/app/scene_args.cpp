@@ -3,15 +3,16 @@
 #include <iostream>
 
 #include "app/formula_args.hpp"
-#include "jsurf/jsurf.hpp"
 #include "scene/scene_io.hpp"
+#include "session/session.hpp"
 
 namespace zs::app {
 
 void addSceneOptions(CLI::App& cmd, SceneArgs& args, bool inputRequired) {
-  auto* input = cmd.add_option("input", args.input,
-                               "a .surf scene file, a SURFER .jsurf file, or a formula such as "
-                               "\"x^2+y^2+z^2-1\"");
+  auto* input =
+      cmd.add_option("input", args.input,
+                     "a .surf scene file, a SURFER .jsurf file, a surf script .pic, or a formula "
+                     "such as \"x^2+y^2+z^2-1\"");
   if (inputRequired) input->required();
   unprotectFormula(*input);
   cmd.add_option("--set", args.sets,
@@ -26,23 +27,29 @@ void addSceneOptions(CLI::App& cmd, SceneArgs& args, bool inputRequired) {
                       ->expected(1)
                       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   unprotectFormula(*surface);
+  cmd.add_option("--input-format", args.inputFormat,
+                 "read the input as a zeroset scene (surf), a SURFER file (jsurf) or a surf script "
+                 "(pic) whatever its name (default: by its extension)")
+      ->check(CLI::IsMember({"surf", "jsurf", "pic"}));
 }
 
 namespace {
 
-// A SURFER file is imported (its warnings printed); anything else is a scene or a formula.
-SceneResult loadAnyScene(const std::string& input) {
-  if (!jsurf::isJsurfPath(input)) return loadSceneOrFormula(input);
-  jsurf::ImportResult r = jsurf::loadJsurf(input);
-  if (auto* err = std::get_if<SceneError>(&r)) return *err;
-  for (const SceneError& w : std::get<jsurf::Imported>(r).warnings) std::cerr << jsurf::formatWarning(w);
-  return std::get<jsurf::Imported>(std::move(r)).scene;
+// Another program's file (SURFER's .jsurf, surf's .pic) is imported, its warnings printed;
+// anything else is a scene or a formula.
+SceneResult loadAnyScene(const std::string& input, const std::string& format) {
+  if (format == "surf") return loadScene(input);
+  std::optional<ImportResult> r = session::importForeignFile(input, format);
+  if (!r) return loadSceneOrFormula(input);
+  if (auto* err = std::get_if<SceneError>(&*r)) return *err;
+  std::cerr << session::formatImportWarnings(std::get<ImportedScene>(*r));
+  return std::get<ImportedScene>(std::move(*r)).scene;
 }
 
 }  // namespace
 
 std::optional<Scene> loadSceneArgs(const SceneArgs& args) {
-  SceneResult loaded = loadAnyScene(args.input);
+  SceneResult loaded = loadAnyScene(args.input, args.inputFormat);
   if (auto* err = std::get_if<SceneError>(&loaded)) {
     std::cerr << formatSceneError(*err);
     return std::nullopt;

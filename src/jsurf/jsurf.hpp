@@ -16,12 +16,8 @@
 
 namespace zs::jsurf {
 
-struct Imported {
-  Scene scene;
-  std::vector<SceneError> warnings;  // in file order; print with formatWarning
-};
-
-using ImportResult = std::variant<Imported, SceneError>;
+using Imported = ImportedScene;  // warnings: print with formatWarning
+using ImportResult = zs::ImportResult;
 
 ImportResult importJsurf(std::string_view text, std::string_view fileName);
 

@@ -33,6 +33,15 @@ struct SceneError {
 
 using SceneResult = std::variant<Scene, SceneError>;
 
+// A scene read from another program's file (SURFER's .jsurf, surf's scripts): the scene, and
+// warnings for what zeroset shows differently, in file order (print them as warnings).
+struct ImportedScene {
+  Scene scene;
+  std::vector<SceneError> warnings;
+};
+
+using ImportResult = std::variant<ImportedScene, SceneError>;
+
 // Parses and validates a whole .surf text; `fileName` is only used in errors.
 SceneResult parseScene(std::string_view text, std::string_view fileName);
 

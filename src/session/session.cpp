@@ -5,14 +5,15 @@
 #include <type_traits>
 #include <utility>
 
+#include "i18n/translate.hpp"
+#include "interact/arcball.hpp"
 #include "interpreter/interpreter_glsl.hpp"
 #include "parser/parser.hpp"
-#include "interact/arcball.hpp"
 #include "render/camera.hpp"
 #include "render/program_variant.hpp"
 #include "scene/scene_io.hpp"
 #include "scene/schema.hpp"
-#include "i18n/translate.hpp"
+#include "surfscript/surf_import.hpp"
 
 namespace zs::session {
 namespace {
@@ -84,12 +85,27 @@ std::string Session::loadSurf(std::string_view text, std::string_view fileName) 
   return replaceScene(std::get<Scene>(std::move(result)), {});
 }
 
-std::string Session::replaceScene(jsurf::ImportResult imported) {
-  if (auto* err = std::get_if<SceneError>(&imported)) return formatSceneError(*err);
-  jsurf::Imported& scene = std::get<jsurf::Imported>(imported);
-  // What SURFER shows differently is worth saying (notes()), but the load goes ahead.
+std::optional<ImportResult> importForeignFile(const std::filesystem::path& path,
+                                              std::string_view format) {
+  if (format == "jsurf" || (format.empty() && jsurf::isJsurfPath(path.string())))
+    return jsurf::loadJsurf(path);
+  if (format == "pic" || (format.empty() && surfscript::isSurfScriptPath(path.string())))
+    return surfscript::loadSurfScript(path);
+  return std::nullopt;
+}
+
+std::string formatImportWarnings(const ImportedScene& imported) {
   std::string notes;
-  for (const SceneError& w : scene.warnings) notes += jsurf::formatWarning(w);
+  for (const SceneError& w : imported.warnings) notes += jsurf::formatWarning(w);
+  return notes;
+}
+
+std::string Session::replaceScene(ImportResult imported) {
+  if (auto* err = std::get_if<SceneError>(&imported)) return formatSceneError(*err);
+  ImportedScene& scene = std::get<ImportedScene>(imported);
+  // What the other program shows differently is worth saying (notes()), but the load goes
+  // ahead.
+  std::string notes = formatImportWarnings(scene);
   return replaceScene(std::move(scene.scene), std::move(notes));
 }
 
@@ -97,8 +113,12 @@ std::string Session::loadJsurf(std::string_view text, std::string_view fileName)
   return replaceScene(jsurf::importJsurf(text, fileName));
 }
 
+std::string Session::loadSurfScript(std::string_view text, std::string_view fileName) {
+  return replaceScene(surfscript::importSurfScript(text, fileName));
+}
+
 std::string Session::loadFile(const std::filesystem::path& path) {
-  if (jsurf::isJsurfPath(path.string())) return replaceScene(jsurf::loadJsurf(path));
+  if (auto imported = importForeignFile(path)) return replaceScene(std::move(*imported));
   SceneResult loaded = zs::loadScene(path);
   if (auto* err = std::get_if<SceneError>(&loaded)) return formatSceneError(*err);
   return replaceScene(std::get<Scene>(std::move(loaded)), {});
@@ -159,8 +179,7 @@ void Session::dragLight(double x0, double y0, double x1, double y1, int width, i
     const Vec3 turned = interact::orbitPoint(view, start, drag);
     key->position = fixedToCamera ? worldPointToCamera(view, turned) : turned;
   } else {
-    const Vec3 start =
-        fixedToCamera ? cameraVectorToWorld(view, dragLightStart_) : dragLightStart_;
+    const Vec3 start = fixedToCamera ? cameraVectorToWorld(view, dragLightStart_) : dragLightStart_;
     const Vec3 turned = interact::orbitDirection(view, start, drag);
     key->direction = fixedToCamera ? worldVectorToCamera(view, turned) : turned;
   }
@@ -354,9 +373,9 @@ std::vector<std::string> Session::interpreterShaders() const {
   const bool sampling = scene_.render.tracing.method == TracingMethod::Sampling;
   std::vector<std::string> out;
   for (bool polynomialOnly : {true, false}) {
-    out.push_back(withVariantDefines(
-        interpreterFragmentShader(sampling, polynomialOnly, options_.dialect),
-        ProgramVariant::of(firstPictureSettings(scene_.render))));
+    out.push_back(
+        withVariantDefines(interpreterFragmentShader(sampling, polynomialOnly, options_.dialect),
+                           ProgramVariant::of(firstPictureSettings(scene_.render))));
   }
   return out;
 }
@@ -405,8 +424,7 @@ FrameUniforms Session::frameOf(const GpuHierarchy& hierarchy, std::span<const fl
   return frame;
 }
 
-std::variant<ProbeResult, std::string> Session::probe(int x, int y, int width,
-                                                      int height) const {
+std::variant<ProbeResult, std::string> Session::probe(int x, int y, int width, int height) const {
   if (!surface_) return std::string("nothing is drawn yet");
   // Made at the first probe of a surface: a front end that never hovers never pays for it.
   if (!probe_ || !probe_->sameSurfaces(scene_)) probe_ = std::make_unique<SceneProbe>(scene_);
@@ -427,17 +445,17 @@ struct GroupRule {
   std::string_view prefix;
   std::string_view group;
 };
-constexpr std::string_view kGroups[] = {N_("Surface"),  N_("Tracing"),    N_("Domain"),
-                                        N_("Camera"),   N_("Lights"),     N_("Materials"),
+constexpr std::string_view kGroups[] = {N_("Surface"),    N_("Tracing"),   N_("Domain"),
+                                        N_("Camera"),     N_("Lights"),    N_("Materials"),
                                         N_("Highlights"), N_("Colouring"), N_("Cross-sections"),
-                                        N_("Volume"),   N_("More")};
+                                        N_("Volume"),     N_("More")};
 constexpr GroupRule kGroupRules[] = {
-    {"surface", kGroups[0]},     {"tracing", kGroups[1]},       {"samples", kGroups[1]},
-    {"opacity", kGroups[1]},     {"domain", kGroups[2]},        {"octree", kGroups[2]},
-    {"image", kGroups[2]},       {"camera", kGroups[3]},        {"lights", kGroups[4]},
-    {"materials", kGroups[5]},   {"highlights", kGroups[6]},    {"reflection", kGroups[6]},
-    {"shading", kGroups[7]},     {"background", kGroups[7]},    {"clip", kGroups[8]},
-    {"render", kGroups[9]},      {"volume", kGroups[9]},
+    {"surface", kGroups[0]},   {"tracing", kGroups[1]},    {"samples", kGroups[1]},
+    {"opacity", kGroups[1]},   {"domain", kGroups[2]},     {"octree", kGroups[2]},
+    {"image", kGroups[2]},     {"camera", kGroups[3]},     {"lights", kGroups[4]},
+    {"materials", kGroups[5]}, {"highlights", kGroups[6]}, {"reflection", kGroups[6]},
+    {"shading", kGroups[7]},   {"background", kGroups[7]}, {"clip", kGroups[8]},
+    {"render", kGroups[9]},    {"volume", kGroups[9]},
 };
 
 }  // namespace
@@ -449,7 +467,9 @@ std::string_view panelGroup(std::string_view key) {
   return kGroups[std::size(kGroups) - 1];
 }
 
-std::span<const std::string_view> panelGroups() { return kGroups; }
+std::span<const std::string_view> panelGroups() {
+  return kGroups;
+}
 
 namespace {
 
@@ -515,9 +535,9 @@ std::vector<std::vector<Setting>> Session::listEntries(std::string_view name) co
     list->entry(scene_, i, scratch);
     std::vector<Setting> entry;
     for (const scene_detail::KeySpec& spec : list->keys) {
-      entry.push_back(settingOf(spec, scratch,
-                                std::string(list->name) + "." + std::to_string(i + 1) + "." +
-                                    std::string(spec.name)));
+      entry.push_back(settingOf(
+          spec, scratch,
+          std::string(list->name) + "." + std::to_string(i + 1) + "." + std::string(spec.name)));
     }
     out.push_back(std::move(entry));
   }

@@ -21,8 +21,8 @@
 #include <vector>
 
 #include "interact/key_bindings.hpp"
-#include "jsurf/jsurf.hpp"
 #include "interact/trace_budget.hpp"
+#include "jsurf/jsurf.hpp"
 #include "pipeline/pipeline.hpp"
 #include "pipeline/quick_surface.hpp"
 #include "probe/probe.hpp"
@@ -32,6 +32,15 @@
 #include "scene/scene.hpp"
 
 namespace zs::session {
+
+// A file of another program's, by its extension — SURFER's .jsurf, surf's .pic script —
+// or as `format` says ("jsurf", "pic") whatever its name, imported; nothing for any other
+// file (a .surf scene, say).
+std::optional<ImportResult> importForeignFile(const std::filesystem::path& path,
+                                              std::string_view format = {});
+
+// The warnings of an import, as the command line prints them.
+std::string formatImportWarnings(const ImportedScene& imported);
 
 // How long typing must pause before the typed formula is built (its first picture by the
 // tape interpreter comes at every keystroke): every front end with a formula field waits
@@ -93,7 +102,9 @@ class Session {
   std::string loadSurf(std::string_view text, std::string_view fileName);
   // A SURFER .jsurf text; what zeroset shows differently goes to notes().
   std::string loadJsurf(std::string_view text, std::string_view fileName);
-  // A .surf or .jsurf file (by its extension), read from disk.
+  // A surf script's text (.pic; docs/surf.md): the scene of its last draw_surface.
+  std::string loadSurfScript(std::string_view text, std::string_view fileName);
+  // A .surf, .jsurf or .pic file (by its extension), read from disk.
   std::string loadFile(const std::filesystem::path& path);
   // A scene made elsewhere (the command line's, a gallery example): replaces this one.
   std::string loadScene(const Scene& scene, std::string notes = {});
@@ -219,7 +230,7 @@ class Session {
 
  private:
   std::string replaceScene(Scene scene, std::string importNotes);
-  std::string replaceScene(jsurf::ImportResult imported);
+  std::string replaceScene(ImportResult imported);
   // Takes `edited` as the scene (the camera it brings becomes the one drags start from).
   void accept(Scene edited);
   // Invalidation between two scenes as far as the prepared surface's formula goes.
@@ -227,8 +238,8 @@ class Session {
   // Back to the scene of the surface on screen, keeping the view.
   void rollBack();
   // A frame's uniforms over this hierarchy and parameters (nothing drawn unless `drawn`).
-  FrameUniforms frameOf(const GpuHierarchy& hierarchy, std::span<const float> params,
-                        bool drawn, int width, int height) const;
+  FrameUniforms frameOf(const GpuHierarchy& hierarchy, std::span<const float> params, bool drawn,
+                        int width, int height) const;
 
   SessionOptions options_;
   Scene scene_;
@@ -236,7 +247,7 @@ class Session {
   Camera dragStart_;
   Vec3 dragLightStart_{};  // the key light's position (point) or direction at the drag's start
   std::shared_ptr<const PreparedSurface> surface_;
-  Scene preparedScene_;  // the scene surface_ was prepared from: the last good one
+  Scene preparedScene_;             // the scene surface_ was prepared from: the last good one
   std::optional<Scene> requested_;  // the scene of the latest request handed out
   std::uint64_t nextId_ = 1, latestId_ = 0;
   bool wanted_ = false;  // the latest request is still wanted

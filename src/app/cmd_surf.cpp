@@ -1,0 +1,139 @@
+// `zeroset surf [-n] [-q|--quiet|--silent] FILE...`: runs surf scripts as surf 1.0.6 does and
+// writes the pictures each one saves (save_color_image, in its color_file_format: jpg, ppm,
+// sun or zeroset's png). zeroset run under the name surf, surf-alggeo or surf-alggeo-nox is
+// this command, with surf's own command line; run as surfer it shows a SURFER file (main.cpp,
+// docs/surf.md). Unlike surf, an error stops with file:line:column and a non-zero status.
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "app/commands.hpp"
+#include "pipeline/load_surface.hpp"
+#include "pipeline/pipeline.hpp"
+#include "render/gl_context.hpp"
+#include "render/image_formats.hpp"
+#include "render/ray_tracer.hpp"
+#include "scene/scene_io.hpp"
+#include "session/session.hpp"
+#include "surfscript/surf_import.hpp"
+
+namespace zs::app {
+
+namespace {
+
+PictureFormat pictureFormat(surfscript::ImageFormat f) {
+  switch (f) {
+    case surfscript::ImageFormat::Jpeg:
+      return PictureFormat::Jpeg;
+    case surfscript::ImageFormat::Ppm:
+      return PictureFormat::Ppm;
+    case surfscript::ImageFormat::Png:
+      return PictureFormat::Png;
+    default:
+      return PictureFormat::Sun;
+  }
+}
+
+// One scene to one picture file; "" or why not.
+std::string drawPicture(const Scene& scene, const std::string& path, PictureFormat format) {
+  auto prepared = prepareSurface(scene);
+  if (auto* err = std::get_if<std::string>(&prepared)) return *err;
+  const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
+  // Small pictures: llvmpipe's JIT without LLVM's optimizer is done sooner (cmd_render.cpp).
+  const double rays =
+      double(scene.width) * scene.height * scene.render.samples * scene.render.samples;
+  if (rays <= 8e6) setenv("GALLIVM_PERF", "nopt", /*overwrite=*/0);
+  HeadlessTracer gl = openHeadlessTracer(Backend::Egl, surface, scene.render);
+  if (!gl.tracer) return "no GL context to draw with";
+  const Frame frame = gl.tracer->render(scene.render, scene.domain, scene.width, scene.height);
+  if (!frame.error.empty()) return frame.error;
+  return writePicture(path, frame.color, format);
+}
+
+int runScriptFile(const std::string& file, bool quiet) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  if (in) text << in.rdbuf();
+  if (!in || in.bad()) {
+    std::cerr << file << ": error: cannot open the surf script\n";
+    return 1;
+  }
+  if (!quiet) std::printf("zeroset: executing %s\n", file.c_str());
+  auto run = surfscript::runSurfScript(text.str(), file);
+  if (auto* err = std::get_if<SceneError>(&run)) {
+    std::cerr << formatSceneError(*err);
+    return 1;
+  }
+  const auto& pictures = std::get<surfscript::ScriptPictures>(run);
+  if (!quiet) {
+    for (const SceneError& w : pictures.warnings) {
+      ImportedScene shown{{}, {w}};
+      std::cerr << session::formatImportWarnings(shown);
+    }
+  }
+  for (const surfscript::ScriptPicture& p : pictures.pictures) {
+    if (std::string err = drawPicture(p.scene, p.fileName, pictureFormat(p.format)); !err.empty()) {
+      SceneError e = p.place;
+      e.message = "save_color_image: " + err;
+      std::cerr << formatSceneError(e);
+      return 1;
+    }
+    if (!quiet)
+      std::printf("wrote %s (%dx%d)\n", p.fileName.c_str(), p.scene.width, p.scene.height);
+  }
+  return 0;
+}
+
+const char* const kSurfUsage =
+    "usage: surf [-n] [-q|--quiet|--silent] FILE...\n"
+    "  runs surf scripts with zeroset, writing the pictures they save (docs/surf.md)\n";
+
+}  // namespace
+
+int runSurfCommandLine(const std::vector<std::string>& args) {
+  bool quiet = false;
+  std::vector<std::string> files;
+  for (const std::string& a : args) {
+    if (a == "-q" || a == "--quiet" || a == "--silent")
+      quiet = true;
+    else if (a == "-n" || a == "--no-gui" || a == "-v" || a == "--enable-auto-extension" ||
+             a == "--disable-auto-extension")
+      continue;  // surf's: no window here anyway; zeroset never renames the pictures
+    else if (a == "-h" || a == "--help") {
+      std::cout << kSurfUsage;
+      return 0;
+    } else if (!a.empty() && a[0] == '-' && a != "-") {
+      std::cerr << "surf: unknown option " << a << "\n" << kSurfUsage;
+      return 1;
+    } else {
+      files.push_back(a);
+    }
+  }
+  if (files.empty()) {
+    std::cerr << "surf: no script given (zeroset has no surf window: name the scripts to run)\n"
+              << kSurfUsage;
+    return 1;
+  }
+  for (const std::string& f : files)
+    if (int rc = runScriptFile(f, quiet); rc != 0) return rc;
+  return 0;
+}
+
+void addSurfCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "surf", "Run surf scripts (.pic), writing the pictures they save, as surf does");
+  auto files = std::make_shared<std::vector<std::string>>();
+  auto quiet = std::make_shared<bool>(false);
+  cmd->add_option("files", *files, "the surf scripts, run in order")->required();
+  cmd->add_flag("-q,--quiet", *quiet, "print nothing but errors");
+  cmd->callback([files, quiet] {
+    int rc = 0;
+    for (const std::string& f : *files)
+      if ((rc = runScriptFile(f, *quiet)) != 0) break;
+    std::exit(rc);
+  });
+}
+
+}  // namespace zs::app
