@@ -29,6 +29,10 @@ set(CPACK_ZS_LINTIAN_OVERRIDES ${PROJECT_SOURCE_DIR}/packaging/lintian-overrides
 # Full RELRO (-z now: the global offset table read-only after start-up), as Debian's
 # hardening flags ask of a packaged program.
 target_link_options(zeroset PRIVATE LINKER:-z,relro LINKER:-z,now)
+# surf's and SURFER's names, through the alternatives system (packaging/postinst).
+set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA ${PROJECT_SOURCE_DIR}/packaging/postinst
+                                       ${PROJECT_SOURCE_DIR}/packaging/prerm)
+set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION TRUE)
 # The long description; CPack puts the summary above it and formats it for the control file.
 set(CPACK_DEBIAN_PACKAGE_DESCRIPTION
 "zeroset draws the surface where a formula in x, y and z is zero: type a

@@ -31,6 +31,9 @@ packages=(
   gettext
   # the layout check of .ci/run (scripts/check-format.sh)
   clang-format
+  # the surf command's tests (tests/surfscript): surf 1.0.6 to compare with, and Singular,
+  # whose plot, plot_jupyter and surfer run zeroset through build/compat
+  surf-alggeo-nox singular
 )
 for option in "$@"; do
   case $option in
