@@ -3,6 +3,8 @@
 // sun or zeroset's png). zeroset run under the name surf, surf-alggeo or surf-alggeo-nox is
 // this command, with surf's own command line; run as surfer it shows a SURFER file (main.cpp,
 // docs/surf.md). Unlike surf, an error stops with file:line:column and a non-zero status.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -10,6 +12,8 @@
 #include <sstream>
 
 #include "app/commands.hpp"
+#include "curve/curve.hpp"
+#include "parser/parser.hpp"
 #include "pipeline/load_surface.hpp"
 #include "pipeline/pipeline.hpp"
 #include "render/gl_context.hpp"
@@ -36,8 +40,15 @@ PictureFormat pictureFormat(surfscript::ImageFormat f) {
   }
 }
 
-// One scene to one picture file; "" or why not.
-std::string drawPicture(const Scene& scene, const std::string& path, PictureFormat format) {
+// The surfaces of a picture, or surf's empty buffer (black) where it has none.
+std::string drawSurfaces(const Scene& scene, Image& out) {
+  if (scene.formula.empty()) {
+    out.width = scene.width;
+    out.height = scene.height;
+    out.rgba.assign(std::size_t(out.width) * out.height * 4, 0);
+    for (std::size_t i = 3; i < out.rgba.size(); i += 4) out.rgba[i] = 255;
+    return {};
+  }
   auto prepared = prepareSurface(scene);
   if (auto* err = std::get_if<std::string>(&prepared)) return *err;
   const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
@@ -47,9 +58,43 @@ std::string drawPicture(const Scene& scene, const std::string& path, PictureForm
   if (rays <= 8e6) setenv("GALLIVM_PERF", "nopt", /*overwrite=*/0);
   HeadlessTracer gl = openHeadlessTracer(Backend::Egl, surface, scene.render);
   if (!gl.tracer) return "no GL context to draw with";
-  const Frame frame = gl.tracer->render(scene.render, scene.domain, scene.width, scene.height);
+  Frame frame = gl.tracer->render(scene.render, scene.domain, scene.width, scene.height);
   if (!frame.error.empty()) return frame.error;
-  return writePicture(path, frame.color, format);
+  out = std::move(frame.color);
+  return {};
+}
+
+// surf's draw_curve over the picture, exactly (src/curve).
+std::string drawCurve(const surfscript::ScriptCurve& c, Image& image) {
+  const ParseResult parsed = parseFormula(c.formula);
+  if (const auto* err = std::get_if<ParseError>(&parsed)) return formatError(c.formula, *err);
+  const Formula& f = std::get<Formula>(parsed);
+  curve::CurveOptions options;
+  options.halfWidth = c.halfWidth;
+  const curve::CurveMask mask =
+      curve::rasterizeCurve(f.graph, f.root, c.map, image.width, image.height, options);
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      if (!mask.drawn[std::size_t(y) * image.width + x]) continue;
+      if (c.clipped) {
+        const double u = c.u0 + c.du * x - c.discU, v = c.v0 + c.dv * y - c.discV;
+        if (u * u + v * v > c.discRadius * c.discRadius) continue;
+      }
+      std::uint8_t* p = image.pixel(x, y);
+      for (int k = 0; k < 3; ++k)
+        p[k] = static_cast<std::uint8_t>(std::lround(std::clamp(c.color[k], 0.0, 1.0) * 255));
+    }
+  }
+  return {};
+}
+
+// One picture of a script to its file; "" or why not.
+std::string drawPicture(const surfscript::ScriptPicture& p) {
+  Image image;
+  if (std::string err = drawSurfaces(p.scene, image); !err.empty()) return err;
+  for (const surfscript::ScriptCurve& c : p.curves)
+    if (std::string err = drawCurve(c, image); !err.empty()) return err;
+  return writePicture(p.fileName, image, pictureFormat(p.format));
 }
 
 int runScriptFile(const std::string& file, bool quiet) {
@@ -74,7 +119,7 @@ int runScriptFile(const std::string& file, bool quiet) {
     }
   }
   for (const surfscript::ScriptPicture& p : pictures.pictures) {
-    if (std::string err = drawPicture(p.scene, p.fileName, pictureFormat(p.format)); !err.empty()) {
+    if (std::string err = drawPicture(p); !err.empty()) {
       SceneError e = p.place;
       e.message = "save_color_image: " + err;
       std::cerr << formatSceneError(e);

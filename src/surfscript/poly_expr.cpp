@@ -204,15 +204,39 @@ std::pair<Poly, Poly> Poly::aligned(const Poly& a, const Poly& b) {
   return {a.applied(), b.applied()};
 }
 
+namespace {
+
+std::optional<double> constantOf(const NodePtr& n) {
+  if (n->op == Node::Op::Leaf && isConstantLeaf(*n)) return n->leaf[3];
+  return std::nullopt;
+}
+
+}  // namespace
+
+// Numbers fold (as surf computes them, in doubles), and p + 0, p - 0 are p: the formula keeps
+// what the script means, not its bookkeeping (SURFER-2008 writes -1*(a-1*0.5) with a = 0.5).
 Poly Poly::operator+(const Poly& o) const {
+  const auto ca = constantOf(node_), cb = constantOf(o.node_);
+  if (ca && cb) return constant(*ca + *cb);
+  if (cb && *cb == 0) return *this;
+  if (ca && *ca == 0) return o;
   auto [a, b] = aligned(*this, o);
   return Poly(make(Node::Op::Add, a.node_, b.node_), a.map_);
 }
 Poly Poly::operator-(const Poly& o) const {
+  const auto ca = constantOf(node_), cb = constantOf(o.node_);
+  if (ca && cb) return constant(*ca - *cb);
+  if (cb && *cb == 0) return *this;
   auto [a, b] = aligned(*this, o);
   return Poly(make(Node::Op::Sub, a.node_, b.node_), a.map_);
 }
 Poly Poly::operator*(const Poly& o) const {
+  // 1*p is p exactly (SURFER-2008 writes -1*z^2): the formula reads as the mathematics.
+  if (node_->op == Node::Op::Leaf && isConstantLeaf(*node_) && node_->leaf[3] == 1) return o;
+  if (o.node_->op == Node::Op::Leaf && isConstantLeaf(*o.node_) && o.node_->leaf[3] == 1)
+    return *this;
+  if (const auto ca = constantOf(node_), cb = constantOf(o.node_); ca && cb)
+    return constant(*ca * *cb);
   auto [a, b] = aligned(*this, o);
   return Poly(make(Node::Op::Mul, a.node_, b.node_), a.map_);
 }

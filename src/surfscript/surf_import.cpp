@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -77,6 +78,45 @@ std::variant<Scene, SceneError> sceneOf(std::string_view text, std::string_view 
   return scene;
 }
 
+// surf's draw_curve: curve(x, y) = 0 in the surface's window, moved by origin and scaled by
+// scale_* as surfaces are (not turned: a plane curve ignores rot_*), clipped to surf's
+// sphere where clip is the sphere.
+std::variant<ScriptCurve, SceneError> curveOf(std::string_view text, std::string_view fileName,
+                                              const Drawing& d, int width, int height) {
+  const Globals& g = d.globals;
+  const Poly* p = g.poly("curve");
+  if (!p || p->degree() < 1)
+    return placed(text, fileName, d.place, "draw_curve has no curve to draw",
+                  "set curve = ...; to a polynomial in x and y before it");
+  ScriptCurve c;
+  c.formula = p->applied().formula();
+  if (c.formula.find('z') != std::string::npos)
+    return placed(text, fileName, d.place, "the curve holds z: surf draws plane curves f(x, y) = 0",
+                  "write the curve in x and y only");
+  const double wf = width >= height ? 10.0 * width / height : 10;
+  const double hf = width >= height ? 10 : 10.0 * height / width;
+  c.u0 = -wf;
+  c.du = 2 * wf / std::max(1, width - 1);
+  c.v0 = hf;
+  c.dv = -2 * hf / std::max(1, height - 1);
+  const double sx = g.number("scale_x"), sy = g.number("scale_y");
+  c.map = {sx * c.u0 - g.number("origin_x"), sx * c.du, sy * c.v0 - g.number("origin_y"),
+           sy * c.dv};
+  // surf's stroke of curve_width w is about 2w/3 pixels thick (measured: 1.5 gives one
+  // pixel, 3 two): a square of side 0.6 w about each pixel's centre draws as thick.
+  c.halfWidth = std::max(0.5, 0.3 * g.number("curve_width"));
+  c.color = {g.number("curve_red") / 255, g.number("curve_green") / 255,
+             g.number("curve_blue") / 255};
+  if (g.integer("clip") == 0) {
+    const double r = g.number("radius") > 0 ? g.number("radius") : 10, cz = g.number("center_z");
+    c.clipped = true;
+    c.discU = g.number("center_x");
+    c.discV = g.number("center_y");
+    c.discRadius = r * r > cz * cz ? std::sqrt(r * r - cz * cz) : 0;
+  }
+  return c;
+}
+
 }  // namespace
 
 ImportResult importSurfScript(std::string_view text, std::string_view fileName) {
@@ -131,31 +171,30 @@ std::variant<ScriptPictures, SceneError> runSurfScript(std::string_view text,
     picture.fileName = saved.fileName;
     picture.format = saved.format;
     picture.place = placed(text, fileName, saved.place, "");
-    const Drawing* d = lastSurfaces(saved.screen);
-    if (!d) {
-      const bool curves =
-          std::any_of(saved.screen.begin(), saved.screen.end(),
-                      [](const Drawing& x) { return x.kind == Drawing::Kind::Curve; });
+    if (saved.screen.empty())
       return placed(text, fileName, saved.place,
-                    curves ? "zeroset does not draw plane curves (draw_curve) yet: nothing to save"
-                           : "nothing is drawn yet: save_color_image would save an empty picture",
-                    curves ? "" : "draw_surface; before save_color_image;");
+                    "nothing is drawn yet: save_color_image would save an empty picture",
+                    "draw_surface; or draw_curve; before save_color_image;");
+    // Each drawing starts from a cleared picture (surf 1.0.6, measured: a draw_curve after a
+    // draw_surface leaves the curve alone on black), so the picture is the last drawing.
+    const Drawing& last = saved.screen.back();
+    if (last.kind == Drawing::Kind::Surfaces) {
+      auto scene = sceneOf(text, fileName, last, out.warnings);
+      if (auto* e = std::get_if<SceneError>(&scene)) return *e;
+      picture.scene = std::get<Scene>(std::move(scene));
+    } else {
+      picture.scene.formula.clear();
+      auto c = curveOf(text, fileName, last, saved.width, saved.height);
+      if (auto* e = std::get_if<SceneError>(&c)) return *e;
+      picture.curves.push_back(std::get<ScriptCurve>(std::move(c)));
     }
-    if (std::count_if(saved.screen.begin(), saved.screen.end(),
-                      [](const Drawing& x) { return x.kind == Drawing::Kind::Surfaces; }) > 1)
-      out.warnings.push_back(
-          placed(text, fileName, saved.place,
-                 "several draw_surface without clear_screen: the picture shows the last"));
-    if (std::any_of(saved.screen.begin(), saved.screen.end(),
-                    [](const Drawing& x) { return x.kind == Drawing::Kind::Curve; }))
-      out.warnings.push_back(placed(text, fileName, saved.place,
-                                    "the plane curves drawn with draw_curve are not in the "
-                                    "picture: zeroset does not draw them yet"));
-    auto scene = sceneOf(text, fileName, *d, out.warnings);
-    if (auto* e = std::get_if<SceneError>(&scene)) return *e;
-    picture.scene = std::get<Scene>(std::move(scene));
     picture.scene.width = saved.width;
     picture.scene.height = saved.height;
+    if (saved.screen.size() > 1)
+      out.warnings.push_back(
+          placed(text, fileName, last.place,
+                 "each drawing clears the picture, as in surf: the one saved shows this "
+                 "drawing alone"));
     out.pictures.push_back(std::move(picture));
   }
   return out;
