@@ -1,5 +1,6 @@
 #include "surfscript/poly_expr.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "expr/number_text.hpp"
@@ -11,6 +12,7 @@ struct Poly::Node {
   Op op = Op::Leaf;
   Affine leaf{0, 0, 0, 0};  // Leaf: a constant has zero x, y, z coefficients
   int exponent = 0;         // Pow
+  int depth = 1;
   std::shared_ptr<const Node> a, b;
 };
 
@@ -31,6 +33,7 @@ NodePtr make(Node::Op op, NodePtr a, NodePtr b = nullptr, int exponent = 0) {
   n->a = std::move(a);
   n->b = std::move(b);
   n->exponent = exponent;
+  n->depth = 1 + std::max(n->a ? n->a->depth : 0, n->b ? n->b->depth : 0);
   return n;
 }
 
@@ -263,6 +266,10 @@ std::optional<double> Poly::constantValue() const {
 
 int Poly::degree() const {
   return degreeOf(*node_);
+}
+
+int Poly::depth() const {
+  return node_->depth;
 }
 
 std::optional<std::pair<Affine, double>> Poly::slab() const {

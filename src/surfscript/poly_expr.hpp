@@ -48,6 +48,9 @@ class Poly {
   std::optional<double> constantValue() const;
   // Total degree (an upper bound where terms cancel).
   int degree() const;
+  // Levels of the written tree (a leaf is 1): the runner keeps it bounded, since printing
+  // and substituting walk it recursively.
+  int depth() const;
 
   // Where the written tree is a - b*L^2 with numbers a, b > 0 and L affine, such as
   // 1 - x^2 (the slab |L| <= sqrt(a/b)): L and sqrt(a/b).

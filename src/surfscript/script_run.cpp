@@ -463,7 +463,26 @@ class Runner {
     return v.type == Value::Type::Int || v.type == Value::Type::Double;
   }
 
-  Value binary(const Expr& e) {
+  // Bounds on what a polynomial may grow to: zeroset draws degrees far below these, and the
+  // tree is walked recursively.
+  static constexpr int kMaxDegree = 1000;
+  static constexpr int kMaxDepth = 2000;
+
+  Value checked(Value v, const Expr& e) {
+    if (v.type != Value::Type::Poly) return v;
+    if (v.poly->depth() > kMaxDepth)
+      fail(e.place,
+           "this polynomial is nested too deeply (over " + std::to_string(kMaxDepth) + " levels)",
+           "write it in fewer operations, or expanded");
+    if (v.poly->degree() > kMaxDegree)
+      fail(e.place, "this polynomial's degree is over " + std::to_string(kMaxDegree),
+           "zeroset draws surfaces of far lower degree");
+    return v;
+  }
+
+  Value binary(const Expr& e) { return checked(binaryUnchecked(e), e); }
+
+  Value binaryUnchecked(const Expr& e) {
     const Value a = evaluate(e.args[0]);
     const Value b = evaluate(e.args[1]);
     const char op = e.op;

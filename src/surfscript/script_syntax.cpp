@@ -223,7 +223,20 @@ class Parser {
     return s;
   }
 
+  // Nesting bound for ( ... ) and signs, which the parser follows recursively.
+  static constexpr int kMaxNesting = 500;
+
+  struct Nesting {
+    Parser& p;
+    explicit Nesting(Parser& parser) : p(parser) {
+      if (++p.nesting_ > kMaxNesting)
+        p.fail(p.peek().place, "this expression is nested too deeply", "use fewer parentheses");
+    }
+    ~Nesting() { --p.nesting_; }
+  };
+
   Expr expression() {
+    Nesting guard(*this);
     Expr left = term();
     while (isOp("+") || isOp("-")) left = binary(std::move(left), &Parser::term);
     return left;
@@ -253,6 +266,7 @@ class Parser {
   }
 
   Expr unary() {
+    Nesting guard(*this);
     if (isOp("-") || isOp("+")) {
       const bool minus = isOp("-");
       const Place place = peek().place;
@@ -328,6 +342,7 @@ class Parser {
 
   std::vector<Token> tokens_;
   std::size_t at_ = 0;
+  int nesting_ = 0;
 };
 
 }  // namespace

@@ -91,9 +91,21 @@ AffineMap cameraChain(const Globals& g) {
   return chain;
 }
 
-Vec3 rgb(const Globals& g, const std::string& prefix) {
-  return {g.number(prefix + "_red") / 255, g.number(prefix + "_green") / 255,
-          g.number(prefix + "_blue") / 255};
+// Values beyond what a scene holds (a colour over 255, a weight over 100) are drawn at the
+// nearest one it does; the first such key is named in a note.
+struct Clamp {
+  std::string first;  // the first key clamped, "" when none
+  double operator()(double v, double lo, double hi, const std::string& key) {
+    const double c = std::isfinite(v) ? std::clamp(v, lo, hi) : lo;
+    if (c != v && first.empty()) first = key;
+    return c;
+  }
+};
+
+Vec3 rgb(const Globals& g, const std::string& prefix, Clamp& within) {
+  return {within(g.number(prefix + "_red") / 255, 0, 1, prefix + "_red"),
+          within(g.number(prefix + "_green") / 255, 0, 1, prefix + "_green"),
+          within(g.number(prefix + "_blue") / 255, 0, 1, prefix + "_blue")};
 }
 
 std::string suffix(int surface) {
@@ -102,15 +114,15 @@ std::string suffix(int surface) {
 
 // surf's weights for surface `i` (1-based) as a zeroset material. surf's highlight is
 // Blinn's (N.H)^n, zeroset's Phong's (R.V)^m, which is about the same lobe for m = n / 4.
-Material material(const Globals& g, int i, bool front) {
+Material material(const Globals& g, int i, bool front, Clamp& within) {
   const std::string k = suffix(i);
   const int flags = g.integer("illumination");
   Material m;
-  m.color = rgb(g, (front ? "surface" : "inside") + k);
+  m.color = rgb(g, (front ? "surface" : "inside") + k, within);
   m.ambient = 1;  // lights.ambient carries surface 1's `ambient`, which surf uses for all
-  m.diffuse = (flags & 2) ? g.number("diffuse" + k) / 100 : 0;
-  m.specular = (flags & 4) ? g.number("reflected" + k) / 100 : 0;
-  m.shininess = std::max(1.0, g.number("smoothness" + k) / 4);
+  m.diffuse = (flags & 2) ? within(g.number("diffuse" + k) / 100, 0, 1, "diffuse" + k) : 0;
+  m.specular = (flags & 4) ? within(g.number("reflected" + k) / 100, 0, 1, "reflected" + k) : 0;
+  m.shininess = within(g.number("smoothness" + k) / 4, 1, 10000, "smoothness" + k);
   return m;
 }
 
@@ -178,9 +190,11 @@ Scene surfaceScene(const Drawing& d, std::vector<Note>& notes) {
       if (n.message == message) return;
     notes.push_back({d.place, std::move(message)});
   };
+  Clamp within;
   Scene scene;
-  scene.width = g.integer("width") > 0 ? g.integer("width") : 200;
-  scene.height = g.integer("height") > 0 ? g.integer("height") : 200;
+  scene.width = g.integer("width") > 0 ? int(within(g.integer("width"), 1, 16384, "width")) : 200;
+  scene.height =
+      g.integer("height") > 0 ? int(within(g.integer("height"), 1, 16384, "height")) : 200;
 
   // The surfaces surf draws: surface, surface2 ... surface9 of degree 1 or more.
   std::vector<std::pair<int, Poly>> surfaces;
@@ -225,21 +239,23 @@ Scene surfaceScene(const Drawing& d, std::vector<Note>& notes) {
   for (std::size_t s = 1; s < surfaces.size(); ++s) {
     SurfaceEntry e;
     e.formula = formulas[s];
-    e.materials = {material(g, surfaces[s].first, true), material(g, surfaces[s].first, false)};
+    e.materials = {material(g, surfaces[s].first, true, within),
+                   material(g, surfaces[s].first, false, within)};
     scene.moreSurfaces.push_back(e);
   }
 
   RenderSettings& r = scene.render;
   r.camera = cameraOf(g, frame, scene.width, scene.height);
-  r.materials = {material(g, surfaces[0].first, true), material(g, surfaces[0].first, false)};
+  r.materials = {material(g, surfaces[0].first, true, within),
+                 material(g, surfaces[0].first, false, within)};
   r.silhouette.enabled = false;
   r.border.enabled = false;
   r.reflection.enabled = false;
   r.intersection.enabled = false;
   r.samples = std::clamp(g.integer("antialiasing"), 1, 4);
-  r.background = g.integer("do_background") == 0 ? rgb(g, "background") : Vec3{0, 0, 0};
+  r.background = g.integer("do_background") == 0 ? rgb(g, "background", within) : Vec3{0, 0, 0};
   const int flags = g.integer("illumination");
-  r.lights.ambient = (flags & 1) ? g.number("ambient") / 100 : 0;
+  r.lights.ambient = (flags & 1) ? within(g.number("ambient") / 100, 0, 1, "ambient") : 0;
   r.lights.space = LightSpace::World;
   r.lights.sources.clear();
   struct SurfLight {
@@ -249,8 +265,8 @@ Scene surfaceScene(const Drawing& d, std::vector<Note>& notes) {
   std::vector<SurfLight> lights;
   for (int l = 1; l <= 9; ++l) {
     const std::string k = "light" + std::to_string(l);
-    const Vec3 color = rgb(g, k);
-    const double vol = g.number(k + "_vol") / 100;
+    const Vec3 color = rgb(g, k, within);
+    const double vol = within(g.number(k + "_vol") / 100, 0, 1e6, k + "_vol");
     if (vol <= 0 || color[0] + color[1] + color[2] <= 0) continue;
     Light light;
     light.kind = LightKind::Point;
@@ -358,6 +374,20 @@ Scene surfaceScene(const Drawing& d, std::vector<Note>& notes) {
       }
     }
   }
+  if (dom.shape == DomainShape::Box) {
+    bool empty = false;
+    for (int a = 0; a < 3; ++a) {
+      if (!(dom.min[a] < dom.max[a])) {
+        empty = true;
+        dom.max[a] = dom.min[a] + 1e-9 * std::max(1.0, std::abs(dom.min[a]));
+      }
+    }
+    if (empty) say("the clip solid leaves nothing inside the window: the picture is empty");
+  }
+  if (!within.first.empty())
+    say(within.first +
+        " (or another setting) is beyond what zeroset draws: it is drawn at the nearest value it "
+        "can");
   return scene;
 }
 
