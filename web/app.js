@@ -612,7 +612,9 @@ $('panel-toggle').addEventListener('click', togglePanel);
 
 function loadText(text, name) {
   setState('busy');
-  const error = /\.jsurf$|\.pic$/i.test(name) ? session.loadJsurf(text, name) : session.loadSurf(text, name);
+  // SURFER's .jsurf files and surf's scripts (.pic, docs/surf-scripts.md) are imported.
+  const error = /\.jsurf$/i.test(name) ? session.loadJsurf(text, name)
+    : /\.pic$/i.test(name) ? session.loadSurfScript(text, name) : session.loadSurf(text, name);
   if (error) { showError(error); return error; }
   return afterSceneLoaded();
 }

@@ -59,10 +59,18 @@ val hierarchyOf(const GpuHierarchy& h) {
   return out;
 }
 
-val hierarchyJs(const WebSession& s) { return hierarchyOf(s.hierarchy()); }
-val quickHierarchyJs(const WebSession& s) { return hierarchyOf(s.quickHierarchy()); }
-val interpreterShadersJs(const WebSession& s) { return arrayOf(s.interpreterShaders()); }
-val quickTapeJs(const WebSession& s) { return typedArrayCopy("Uint32Array", s.quickTape()); }
+val hierarchyJs(const WebSession& s) {
+  return hierarchyOf(s.hierarchy());
+}
+val quickHierarchyJs(const WebSession& s) {
+  return hierarchyOf(s.quickHierarchy());
+}
+val interpreterShadersJs(const WebSession& s) {
+  return arrayOf(s.interpreterShaders());
+}
+val quickTapeJs(const WebSession& s) {
+  return typedArrayCopy("Uint32Array", s.quickTape());
+}
 
 const char* kindName(UniformValue::Kind kind) {
   switch (kind) {
@@ -269,24 +277,33 @@ val languagesJs() {
   });
 }
 
-std::string translateJs(const std::string& text) { return i18n::tr(text); }
-bool setLanguageJs(const std::string& tag) { return i18n::setLanguage(tag); }
-std::string currentLanguageJs() { return std::string(i18n::currentLanguage()); }
-std::string knownLanguageJs(const std::string& tag) { return i18n::knownLanguage(tag); }
+std::string translateJs(const std::string& text) {
+  return i18n::tr(text);
+}
+bool setLanguageJs(const std::string& tag) {
+  return i18n::setLanguage(tag);
+}
+std::string currentLanguageJs() {
+  return std::string(i18n::currentLanguage());
+}
+std::string knownLanguageJs(const std::string& tag) {
+  return i18n::knownLanguage(tag);
+}
 
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(zeroset) {
   emscripten::function("keys", &keysJs);
-  emscripten::function("typingPauseMs", +[] { return session::kTypingPauseMs; });
-  emscripten::function("panelGroups", +[] {
-    val out = val::array();
-    for (std::string_view g : session::panelGroups()) out.call<void>("push", std::string(g));
-    return out;
-  });
-  emscripten::function("panelGroup", +[](const std::string& key) {
-    return std::string(session::panelGroup(key));
-  });
+  emscripten::function(
+      "typingPauseMs", +[] { return session::kTypingPauseMs; });
+  emscripten::function(
+      "panelGroups", +[] {
+        val out = val::array();
+        for (std::string_view g : session::panelGroups()) out.call<void>("push", std::string(g));
+        return out;
+      });
+  emscripten::function(
+      "panelGroup", +[](const std::string& key) { return std::string(session::panelGroup(key)); });
   emscripten::function("dragScale", &dragScaleJs);
   emscripten::function("kioskDefaults", &kioskDefaultsJs);
   emscripten::function("kioskRefusal", &kioskRefusalJs);
@@ -315,6 +332,11 @@ EMSCRIPTEN_BINDINGS(zeroset) {
       .function("loadJsurf", emscripten::optional_override(
                                  [](WebSession& s, const std::string& text,
                                     const std::string& name) { return s.loadJsurf(text, name); }))
+      .function("loadSurfScript",
+                emscripten::optional_override(
+                    [](WebSession& s, const std::string& text, const std::string& name) {
+                      return s.loadSurfScript(text, name);
+                    }))
       .function("applyOverrides", &applyOverridesJs)
       .function("setParam",
                 emscripten::optional_override([](WebSession& s, const std::string& name,

@@ -354,9 +354,11 @@ cases['kiosk'] = async () => {
   const refusal = await page.textContent('#zeroset-error');
   check(/degree 6 .*at most 4/.test(refusal), `no degree refusal: ${refusal}`);
   await tap(['clear', 'x', '^2', '+', 'y', '^2', '-', '1', 'draw']);
-  await settled(page);
+  // The draw key sets the formula at once; read it before the build settles, since under
+  // load the build can outlast the 2 s idle time, which then returns to the start screen.
   const typed = await page.evaluate(() => window.zeroset.session.formula());
   check(typed === 'x^2+y^2-1', `the keyboard typed "${typed}"`);
+  await settled(page);
   await markBusy(page);
   await page.waitForFunction(() => document.documentElement.dataset.kioskStarts === '1', null,
                              { timeout: 10000 });
@@ -591,6 +593,23 @@ cases['drop-surf-loads'] = async () => {
         `the dropped torus did not load (formula ${formula})`);
 };
 
+// A surf script dropped on the page (docs/surf-scripts.md): its surface, with the formula
+// the script wrote (the script's turns go into the camera).
+cases['drop-pic-loads'] = async () => {
+  const page = await openPage(SMALL);
+  await settled(page);
+  await markBusy(page);
+  const text = fs.readFileSync(path.join(sourceDir, 'tests', 'surfscript', 'data', 'cone_turned.pic'), 'utf8');
+  await page.evaluate((t) => {
+    const dt = new DataTransfer();
+    dt.items.add(new File([t], 'cone_turned.pic', { type: 'text/plain' }));
+    window.dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
+  }, text);
+  await settled(page);
+  const formula = await page.inputValue('#formula');
+  check(formula === 'x^2 + y^2 - z^2 - 0.2', `the dropped surf script did not load (formula ${formula})`);
+};
+
 // The page's languages (docs/languages.md): the browser's language picks Spanish, lang=
 // overrides it, the menu switches to German and back, and the core's own messages (a parse
 // error, the kiosk's refusal) and the keyboard's words follow. Expected texts come from po/*.po.
@@ -658,7 +677,7 @@ cases['languages'] = async () => {
 // Cases that share one browser in test.sh (a browser's start is a second of a short case).
 const GROUPS = {
   errors: ['bad-formula-keeps-picture', 'bad-url-shows-error-above-default'],
-  files: ['drop-surf-loads', 'bad-file'],
+  files: ['drop-surf-loads', 'drop-pic-loads', 'bad-file'],
   layouts: ['embed-and-size', 'phone-layout'],
   pointer: ['hover-shows-curvature', 'touch-drag-turns'],
   links: ['share-link', 'bad-url-parameters'],
