@@ -51,8 +51,10 @@ double worstResidual(const Formula& formula, std::span<const double> params, con
     if (len > 0) directions.push_back({out[1] / len, out[2] / len, out[3] / len});
     bool certified = false;
     for (const auto& d : directions) {
-      const std::array<double, 3> a{p[0] - tolerance * d[0], p[1] - tolerance * d[1], p[2] - tolerance * d[2]};
-      const std::array<double, 3> b{p[0] + tolerance * d[0], p[1] + tolerance * d[1], p[2] + tolerance * d[2]};
+      const std::array<double, 3> a{p[0] - tolerance * d[0], p[1] - tolerance * d[1],
+                                    p[2] - tolerance * d[2]};
+      const std::array<double, 3> b{p[0] + tolerance * d[0], p[1] + tolerance * d[1],
+                                    p[2] + tolerance * d[2]};
       const double fa = value(a), fb = value(b);
       if ((fa <= 0 && out[0] >= 0) || (fa >= 0 && out[0] <= 0) || (fb <= 0 && out[0] >= 0) ||
           (fb >= 0 && out[0] <= 0)) {
@@ -88,7 +90,8 @@ void checkExample(const std::filesystem::path& file, int level) {
   ASSERT_TRUE(std::holds_alternative<MeshResult>(built));
   const MeshResult& r = std::get<MeshResult>(built);
   EXPECT_GT(r.mesh.triangles.size(), 0u);
-  EXPECT_LE(worstResidual(formula, params, r.mesh, 1e-3 * r.stats.cellSize), 1e-3 * r.stats.cellSize);
+  EXPECT_LE(worstResidual(formula, params, r.mesh, 1e-3 * r.stats.cellSize),
+            1e-3 * r.stats.cellSize);
   const MeshTopology t = checkMesh(r.mesh);
   EXPECT_EQ(t.nonManifoldEdges, 0u);
   EXPECT_EQ(t.misorientedEdges, 0u);

@@ -184,6 +184,25 @@ TEST(SurfCommand, DrawsWhatSurfDraws) {
   }
 }
 
+// The import is exact: a script's picture is the picture of the .surf scene zeroset import
+// writes of it (the formula as written, the camera turned instead).
+TEST(SurfCommand, TheImportedSceneDrawsTheScriptsPicture) {
+  const fs::path zeroset = fs::read_symlink(kCompat / "surf");
+  for (const char* name : {"cone_turned", "kummer_camera", "plane_in_cube"}) {
+    const fs::path dir = freshDir(std::string("surf-import-") + name);
+    const std::string script = (kData / (std::string(name) + ".pic")).string();
+    const std::string out =
+        runIn(dir, zeroset.string() + " render " + script + " -o direct.png && " +
+                       zeroset.string() + " import " + script + " -o scene.surf && " +
+                       zeroset.string() + " render scene.surf -o imported.png");
+    ASSERT_EQ(out.substr(0, 2), "0\n") << out;
+    Image direct, imported;
+    ASSERT_EQ(readPng((dir / "direct.png").string(), direct), "");
+    ASSERT_EQ(readPng((dir / "imported.png").string(), imported), "");
+    EXPECT_TRUE(withinTolerance(compareImages(direct, imported), 0.0, 0.0)) << name;
+  }
+}
+
 // Singular's own libraries, unchanged, with build/compat first on PATH.
 class SingularCalls : public ::testing::Test {
  protected:
