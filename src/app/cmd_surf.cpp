@@ -49,7 +49,10 @@ std::string drawSurfaces(const Scene& scene, Image& out) {
     for (std::size_t i = 3; i < out.rgba.size(); i += 4) out.rgba[i] = 255;
     return {};
   }
-  auto prepared = prepareSurface(scene);
+  // Without glslang's check: the driver compiles the shader anyway and reports what it
+  // refuses (briefly, with the details in a file), and glslang's start-up is a fifth of a
+  // small picture's whole time (docs/surf-scripts.md, Speed).
+  auto prepared = prepareSurface(scene, kWithoutGlslang);
   if (auto* err = std::get_if<std::string>(&prepared)) return *err;
   const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
   // Small pictures: llvmpipe's JIT without LLVM's optimizer is done sooner (cmd_render.cpp).
