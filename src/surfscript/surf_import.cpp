@@ -133,9 +133,10 @@ ImportResult importSurfScript(std::string_view text, std::string_view fileName) 
                     [](const Drawing& x) { return x.kind == Drawing::Kind::Curve; });
     SceneError e = placed(
         text, fileName, {1, 1, 1},
-        curves ? "this script draws plane curves only (draw_curve), which zeroset does not draw yet"
+        curves ? "this script draws plane curves only (draw_curve): a scene holds surfaces"
                : "this script draws no surface",
-        curves ? "" : "end it with surface = ...; draw_surface;");
+        curves ? "run it with `zeroset surf`, which draws its curves into the pictures it saves"
+               : "end it with surface = ...; draw_surface;");
     e.line = 0;
     return e;
   }

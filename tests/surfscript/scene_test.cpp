@@ -145,6 +145,10 @@ TEST(SurfScene, ImportErrorsShowTheLine) {
   EXPECT_NE(text.find("bad.pic:2:16: error:"), std::string::npos) << text;
   EXPECT_NE(text.find("  surface = x^2 +* y;\n                 ^"), std::string::npos) << text;
 
+  r = importSurfScript("curve = x^2 - y^3; draw_curve;", "curve.pic");
+  ASSERT_TRUE(std::holds_alternative<SceneError>(r));
+  EXPECT_NE(std::get<SceneError>(r).hint.find("zeroset surf"), std::string::npos);
+
   r = importSurfScript("width = 100;", "empty.pic");
   ASSERT_TRUE(std::holds_alternative<SceneError>(r));
   EXPECT_NE(std::get<SceneError>(r).message.find("draws no surface"), std::string::npos);
