@@ -677,7 +677,8 @@ cases['languages'] = async () => {
 // Cases that share one browser in test.sh (a browser's start is a second of a short case).
 const GROUPS = {
   errors: ['bad-formula-keeps-picture', 'bad-url-shows-error-above-default'],
-  files: ['drop-surf-loads', 'drop-pic-loads', 'bad-file'],
+  files: ['drop-surf-loads', 'bad-file'],
+  imports: ['drop-pic-loads'],
   layouts: ['embed-and-size', 'phone-layout'],
   pointer: ['hover-shows-curvature', 'touch-drag-turns'],
   links: ['share-link', 'bad-url-parameters'],
