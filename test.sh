@@ -3,6 +3,8 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 scripts/install-deps.sh
+# The layout of every tracked C++ file is .clang-format's (scripts/check-format.sh --fix).
+scripts/check-format.sh
 scripts/build.sh
 # The web page (docs/web.md): its site and wasm tests, and the browser tests' driver.
 scripts/build-web.sh

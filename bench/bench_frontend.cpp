@@ -53,12 +53,24 @@ zs::NodeId replay(const zs::Graph& src, zs::Graph& dst) {
     const zs::Node& n = src[static_cast<zs::NodeId>(i)];
     const auto a = [&] { return map[static_cast<std::size_t>(n.a)]; };
     switch (n.op) {
-      case zs::Op::Const: map[i] = dst.constant(n.value); break;
-      case zs::Op::VarX: map[i] = dst.var(0); break;
-      case zs::Op::VarY: map[i] = dst.var(1); break;
-      case zs::Op::VarZ: map[i] = dst.var(2); break;
-      case zs::Op::Param: map[i] = dst.param(src.params()[static_cast<std::size_t>(n.ival)]); break;
-      case zs::Op::PowI: map[i] = dst.powi(a(), n.ival); break;
+      case zs::Op::Const:
+        map[i] = dst.constant(n.value);
+        break;
+      case zs::Op::VarX:
+        map[i] = dst.var(0);
+        break;
+      case zs::Op::VarY:
+        map[i] = dst.var(1);
+        break;
+      case zs::Op::VarZ:
+        map[i] = dst.var(2);
+        break;
+      case zs::Op::Param:
+        map[i] = dst.param(src.params()[static_cast<std::size_t>(n.ival)]);
+        break;
+      case zs::Op::PowI:
+        map[i] = dst.powi(a(), n.ival);
+        break;
       default:
         map[i] = zs::opInfo(n.op).arity == 1
                      ? dst.unary(n.op, a())
@@ -126,8 +138,7 @@ void BM_Codegen(benchmark::State& state) {
 void BM_Glslang(benchmark::State& state) {
   zs::Formula f = parsed(state.range(0));
   const auto grad = zs::gradient(f.graph, f.root);
-  const std::string source =
-      zs::assembleFragmentShader(zs::emitFormulaGlsl(f.graph, f.root, grad));
+  const std::string source = zs::assembleFragmentShader(zs::emitFormulaGlsl(f.graph, f.root, grad));
   for (auto _ : state) {
     const zs::ValidationResult r = zs::validateGlsl(source, zs::Stage::Fragment);
     if (!r.ok) {

@@ -31,7 +31,9 @@ constexpr std::array<std::string_view, 7> kSurfaces = {
 
 const Box kDomain{{-2, -2, -2}, {2, 2, 2}};
 
-Formula parse(std::string_view text) { return std::get<Formula>(parseFormula(text)); }
+Formula parse(std::string_view text) {
+  return std::get<Formula>(parseFormula(text));
+}
 
 // Boxes the size of octree cells at levels 3..8 inside the domain, as the build sees them.
 std::vector<Box> randomBoxes(std::size_t n) {
@@ -68,8 +70,12 @@ void intervalEval(benchmark::State& state, bool withGradient) {
   state.counters["tape"] = double(tape.code.size());
 }
 
-void BM_IntervalF(benchmark::State& state) { intervalEval(state, false); }
-void BM_IntervalFAndGradient(benchmark::State& state) { intervalEval(state, true); }
+void BM_IntervalF(benchmark::State& state) {
+  intervalEval(state, false);
+}
+void BM_IntervalFAndGradient(benchmark::State& state) {
+  intervalEval(state, true);
+}
 BENCHMARK(BM_IntervalF)->DenseRange(0, 6);
 BENCHMARK(BM_IntervalFAndGradient)->DenseRange(0, 6);
 

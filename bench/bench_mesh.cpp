@@ -42,10 +42,16 @@ const std::string kExamples = ZS_EXAMPLES_DIR;
 }  // namespace
 
 BENCHMARK_CAPTURE(meshScene, sphere, std::string("x^2 + y^2 + z^2 - 1"))
-    ->Arg(8)->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Arg(8)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(meshScene, barth_sextic, kExamples + "/barth-sextic.surf")
-    ->Arg(8)->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Arg(8)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(meshScene, endrass_octic, kExamples + "/endrass-octic.surf")
-    ->Arg(8)->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Arg(8)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 BENCHMARK_MAIN();

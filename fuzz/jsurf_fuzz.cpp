@@ -21,8 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const zs::jsurf::Imported& imported = std::get<zs::jsurf::Imported>(result);
   for (const zs::SceneError& warning : imported.warnings) (void)zs::jsurf::formatWarning(warning);
   zs::SceneResult again = zs::parseScene(zs::saveScene(imported.scene), "imported.surf");
-  if (!std::holds_alternative<zs::Scene>(again) ||
-      !(std::get<zs::Scene>(again) == imported.scene))
+  if (!std::holds_alternative<zs::Scene>(again) || !(std::get<zs::Scene>(again) == imported.scene))
     std::abort();
   auto exported = zs::jsurf::exportJsurf(imported.scene);
   if (auto* refused = std::get_if<std::string>(&exported); refused && refused->empty())

@@ -3,8 +3,10 @@
 // gradient builds, and whose tape evaluates; and the syntax tree of the same text must
 // typeset (src/print) into a finite box. Crashes, sanitizer reports and the abort()
 // below are findings.
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <string>
 #include <string_view>
 
 #include "expr/degree.hpp"
@@ -13,9 +15,6 @@
 #include "expr/tape.hpp"
 #include "parser/parser.hpp"
 #include "print/typeset.hpp"
-
-#include <cmath>
-#include <string>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
@@ -46,7 +45,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const zs::printing::MeasureText measure = [](const std::string& s, bool, double size) {
     return 0.5 * size * double(s.size());
   };
-  for (const zs::printing::MathBox& line : zs::printing::typesetEquationLines(*tree, 20, measure, 500)) {
+  for (const zs::printing::MathBox& line :
+       zs::printing::typesetEquationLines(*tree, 20, measure, 500)) {
     if (!std::isfinite(line.width) || !std::isfinite(line.ascent) || !std::isfinite(line.descent))
       std::abort();
   }

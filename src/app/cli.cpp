@@ -36,9 +36,11 @@ void addCommands(CLI::App& app) {
     for (const CLI::Option* opt : cmd->get_options()) {
       if (opt->get_positional()) {
         cmd->footer("A formula may begin with a minus sign: zeroset " + cmd->get_name() +
-                    " \"-x^2-y^2+z\"" + (cmd->get_name() == "render" ? " -o out.png"
-                                                  : cmd->get_name() == "print" ? " -o page.pdf"
-                                                                               : "") + ".");
+                    " \"-x^2-y^2+z\"" +
+                    (cmd->get_name() == "render"  ? " -o out.png"
+                     : cmd->get_name() == "print" ? " -o page.pdf"
+                                                  : "") +
+                    ".");
         break;
       }
     }

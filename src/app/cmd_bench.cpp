@@ -15,8 +15,8 @@
 #include "app/bench/fps_plot.hpp"
 #include "app/bench/typing_bench.hpp"
 #include "app/commands.hpp"
-#include "app/text_output.hpp"
 #include "app/scene_args.hpp"
+#include "app/text_output.hpp"
 
 namespace zs::app {
 
@@ -54,8 +54,8 @@ int runBench(const BenchArgs& args) {
   if (args.quick) options = bench::quickOptions(options);
   if (!args.size.empty()) {
     char x = 0, rest = 0;
-    if (std::sscanf(args.size.c_str(), "%d%c%d%c", &options.width, &x, &options.height,
-                    &rest) != 3 ||
+    if (std::sscanf(args.size.c_str(), "%d%c%d%c", &options.width, &x, &options.height, &rest) !=
+            3 ||
         (x != 'x' && x != 'X') || options.width <= 0 || options.height <= 0 ||
         options.width > 16384 || options.height > 16384) {
       std::cerr << "error: --size '" << args.size << "' is not WIDTHxHEIGHT\n"
@@ -105,15 +105,15 @@ int runBench(const BenchArgs& args) {
   bool ok = writeTextFile(dir / "bench.md", markdown) &&
             writeTextFile(dir / "bench.csv", bench::configCsv(results)) &&
             writeTextFile(dir / "first_frame.csv", bench::firstFrameCsv(results));
-  if (std::string err = writePng((dir / "fps_by_level.png").string(),
-                                 bench::fpsByLevelPlot(results));
+  if (std::string err =
+          writePng((dir / "fps_by_level.png").string(), bench::fpsByLevelPlot(results));
       !err.empty()) {
     std::cerr << "error: " << err << "\n";
     ok = false;
   }
   std::cout << markdown;
-  std::cerr << "wrote bench.md, bench.csv, first_frame.csv, fps_by_level.png to "
-            << dir.string() << "\n";
+  std::cerr << "wrote bench.md, bench.csv, first_frame.csv, fps_by_level.png to " << dir.string()
+            << "\n";
   bool failed = false;
   for (const auto& f : results.firstFrames) failed |= !f.error.empty();
   for (const auto& c : results.configs) failed |= !c.error.empty();

@@ -54,8 +54,8 @@ int runCheck(const std::string& formula) {
 void addCheckCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("check", "Parse a formula and print what zeroset makes of it");
   auto formula = std::make_shared<std::string>();
-  unprotectFormula(*cmd->add_option("formula", *formula, "F(x,y,z), e.g. \"x^2 + y^2 + z^2 - 1\"")
-                        ->required());
+  unprotectFormula(
+      *cmd->add_option("formula", *formula, "F(x,y,z), e.g. \"x^2 + y^2 + z^2 - 1\"")->required());
   cmd->callback([formula] { std::exit(runCheck(*formula)); });
 }
 

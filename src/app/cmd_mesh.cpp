@@ -43,8 +43,9 @@ void addMeshCommand(CLI::App& app) {
       "closed where the surface is, on the domain where it leaves it, or capped with --cap");
   auto args = std::make_shared<MeshArgs>();
   addSceneOptions(*cmd, args->scene);
-  cmd->add_option("-o,--output", args->request.output,
-                  "the mesh file: .stl (binary), .ply (binary, with normals) or .obj (with normals)")
+  cmd->add_option(
+         "-o,--output", args->request.output,
+         "the mesh file: .stl (binary), .ply (binary, with normals) or .obj (with normals)")
       ->required();
   auto* level = cmd->add_option("--level", args->request.settings.level,
                                 "grid level: 2^N cells along each axis of the domain (default 7)")

@@ -5,11 +5,11 @@
 #include <iostream>
 
 #include "app/commands.hpp"
-#include "pipeline/pipeline.hpp"
 #include "app/scene_args.hpp"
 #include "interval/report.hpp"
 #include "interval/surface_bounds.hpp"
 #include "parser/parser.hpp"
+#include "pipeline/pipeline.hpp"
 #include "scene/scene_io.hpp"
 
 namespace zs::app {
@@ -28,8 +28,8 @@ int runOctree(const OctreeArgs& args) {
   std::optional<Scene> scene = loadSceneArgs(args.scene);
   if (!scene) return 1;
   if (args.level) scene->octree.level = *args.level;
-  if (args.criteria) scene->octree.criteria = *args.criteria == "uniform" ? Criteria::Uniform
-                                                                           : Criteria::Thesis;
+  if (args.criteria)
+    scene->octree.criteria = *args.criteria == "uniform" ? Criteria::Uniform : Criteria::Thesis;
   if (!args.domain.empty()) {  // --domain is a box: it replaces a sphere domain too
     scene->domain.shape = DomainShape::Box;
     for (int axis = 0; axis < 3; ++axis) {
@@ -44,8 +44,8 @@ int runOctree(const OctreeArgs& args) {
   }
   const Formula& formula = std::get<Formula>(parsed);
   const std::vector<double> params = paramValues(*scene, formula.graph);
-  OctreeResult built = buildOctree(formula, params, toBox(scene->domain), scene->octree,
-                                   toBall(scene->domain));
+  OctreeResult built =
+      buildOctree(formula, params, toBox(scene->domain), scene->octree, toBall(scene->domain));
   if (auto* err = std::get_if<OctreeError>(&built)) {
     std::cerr << "error: " << err->message << "\n";
     return 1;
@@ -77,8 +77,9 @@ int runOctree(const OctreeArgs& args) {
 }  // namespace
 
 void addOctreeCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("octree", "Subdivide the domain with interval arithmetic and "
-                                           "report the kept boxes");
+  auto* cmd = app.add_subcommand("octree",
+                                 "Subdivide the domain with interval arithmetic and "
+                                 "report the kept boxes");
   auto args = std::make_shared<OctreeArgs>();
   addSceneOptions(*cmd, args->scene);
   cmd->add_option("--level", args->level, "maximum octree level")->check(CLI::Range(0, 20));

@@ -54,8 +54,7 @@ void addPrintCommand(CLI::App& app) {
       "print", "Write a printable page: the picture, the formula typeset, the parameters");
   auto args = std::make_shared<PrintArgs>();
   addSceneOptions(*cmd, args->scene);
-  cmd->add_option("-o,--output", args->output, "the page to write: a .pdf or an .svg")
-      ->required();
+  cmd->add_option("-o,--output", args->output, "the page to write: a .pdf or an .svg")->required();
   cmd->add_option("--paper", args->paper, "A4 (default), A3 or letter");
   cmd->add_option("--dpi", args->dpi, "resolution of the picture on the page (default 300)")
       ->check(CLI::Range(30.0, 1200.0));

@@ -3,17 +3,18 @@
 // `--animate KEY=FROM:TO [--frames N] [--video out.mp4] [--shard K/N]`, -o is a folder of
 // numbered frames (animate/render_frames.hpp). With `--tile I/N`, band I of N of the picture
 // (render/picture_bands.hpp), which `zeroset assemble` stacks.
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
-#include <unistd.h>
 
 #include "app/animate/render_frames.hpp"
 #include "app/commands.hpp"
+#include "app/scene_args.hpp"
 #include "pipeline/load_surface.hpp"
 #include "pipeline/pipeline.hpp"
-#include "app/scene_args.hpp"
 #include "render/gl_context.hpp"
 #include "render/picture_bands.hpp"
 #include "render/ray_tracer.hpp"
@@ -62,8 +63,9 @@ int runRender(const RenderArgs& args) {
   if (!args.tile.empty()) {
     int index = 0, count = 0;
     if (!parseFraction(args.tile, index, count)) {
-      std::cerr << "error: --tile '" << args.tile << "' is not I/N with 0 <= I < N\n"
-                << "hint: --tile 0/4 is the top quarter of the picture, --tile 3/4 the bottom one\n";
+      std::cerr
+          << "error: --tile '" << args.tile << "' is not I/N with 0 <= I < N\n"
+          << "hint: --tile 0/4 is the top quarter of the picture, --tile 3/4 the bottom one\n";
       return 1;
     }
     band = pictureBand(scene->height, index, count);
@@ -119,10 +121,10 @@ int runRender(const RenderArgs& args) {
     if (showProgress) std::fprintf(stderr, "\rrendering: tile %d of %d", done, total);
     return true;
   };
-  Frame frame = band ? tracer.renderBand(scene->render, scene->domain, scene->width,
-                                         scene->height, band->top, band->rows, progress)
-                     : tracer.render(scene->render, scene->domain, scene->width, scene->height,
-                                     progress);
+  Frame frame =
+      band ? tracer.renderBand(scene->render, scene->domain, scene->width, scene->height, band->top,
+                               band->rows, progress)
+           : tracer.render(scene->render, scene->domain, scene->width, scene->height, progress);
   if (showProgress) std::fprintf(stderr, "\r\033[K");
   if (!frame.error.empty()) {
     std::cerr << "error: " << frame.error << "\n";
@@ -167,8 +169,8 @@ void addRenderCommand(CLI::App& app) {
                   "the PNG to write (with --animate: the folder of the frames)")
       ->required();
   cmd->add_option("--size", args->size, "image size WIDTHxHEIGHT (default: the scene's)");
-  auto* depth = cmd->add_option(
-      "--depth", args->depth, "also write a PFM with the distance from the eye to the first hit");
+  auto* depth = cmd->add_option("--depth", args->depth,
+                                "also write a PFM with the distance from the eye to the first hit");
   cmd->add_option("--backend", args->backend, "egl (default) or osmesa")
       ->check(CLI::IsMember({"egl", "osmesa"}));
   auto* animate = cmd->add_option(

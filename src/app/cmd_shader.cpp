@@ -2,8 +2,8 @@
 #include <iostream>
 
 #include "app/commands.hpp"
-#include "pipeline/pipeline.hpp"
 #include "app/scene_args.hpp"
+#include "pipeline/pipeline.hpp"
 
 namespace zs::app {
 

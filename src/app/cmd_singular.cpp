@@ -5,10 +5,10 @@
 #include <iostream>
 
 #include "app/commands.hpp"
-#include "app/text_output.hpp"
-#include "pipeline/pipeline.hpp"
 #include "app/scene_args.hpp"
+#include "app/text_output.hpp"
 #include "parser/parser.hpp"
+#include "pipeline/pipeline.hpp"
 #include "scene/scene_io.hpp"
 #include "singular/report.hpp"
 
@@ -48,8 +48,8 @@ bool reportSurface(const SingularArgs& args, const Scene& scene, std::size_t i, 
     std::printf("the ball of center (%g, %g, %g), radius %g\n", scene.domain.center[0],
                 scene.domain.center[1], scene.domain.center[2], scene.domain.radius);
   } else {
-    std::printf("[%g, %g] x [%g, %g] x [%g, %g]\n", box.min[0], box.max[0], box.min[1],
-                box.max[1], box.min[2], box.max[2]);
+    std::printf("[%g, %g] x [%g, %g] x [%g, %g]\n", box.min[0], box.max[0], box.min[1], box.max[1],
+                box.min[2], box.max[2]);
   }
   std::fflush(stdout);
   std::cout << singularTable(result);

@@ -45,12 +45,11 @@ int runView(const ViewArgs& args) {
     options.scene = *scene;
     options.title = "zeroset - " + args.scene.input;
     std::error_code ec;
-    if (std::filesystem::is_regular_file(args.scene.input, ec)) options.sceneFile = args.scene.input;
+    if (std::filesystem::is_regular_file(args.scene.input, ec))
+      options.sceneFile = args.scene.input;
   }
   const char* envDir = std::getenv("ZS_OUTPUT_DIR");
-  options.outputDir = !args.outputDir.empty() ? args.outputDir
-                      : envDir && *envDir     ? envDir
-                                              : ".";
+  options.outputDir = !args.outputDir.empty() ? args.outputDir : envDir && *envDir ? envDir : ".";
   options.dragScale = args.dragScale;
   options.log = args.log;
   if (args.kiosk) options.kiosk = args.kioskPolicy;
@@ -78,7 +77,8 @@ void addViewCommand(CLI::App& app) {
       ->check(CLI::Range(1, 8));
   cmd->add_flag("--log", args->log, "print events (ready, builds, key actions) on stdout");
   std::string codes;
-  for (const i18n::Language& l : i18n::languages()) codes += (codes.empty() ? "" : ", ") + std::string(l.code);
+  for (const i18n::Language& l : i18n::languages())
+    codes += (codes.empty() ? "" : ", ") + std::string(l.code);
   cmd->add_option("--language", args->language,
                   "language of the viewer's texts: " + codes +
                       " (default: from LANGUAGE, LC_ALL, LC_MESSAGES or LANG, else en)")

@@ -5,10 +5,9 @@
 // options is taken for a formula: it gets a leading space, which CLI11 does not read as an
 // option and the formula parser skips. Options keep working anywhere on the line, and "--"
 // still ends the options as usual.
+#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 namespace zs::app {
 

@@ -7,9 +7,9 @@
 #include <future>
 
 #include "app/text_output.hpp"
-#include "pipeline/pipeline.hpp"
 #include "mesh/mesh_io.hpp"
 #include "parser/parser.hpp"
+#include "pipeline/pipeline.hpp"
 #include "scene/scene_io.hpp"
 
 namespace zs::app {
@@ -61,24 +61,26 @@ std::string meshSummary(const MeshExportReport& r, const std::string& output) {
   if (t.closedManifold()) {
     shape = "a closed 2-manifold, consistently oriented";
   } else if (t.nonManifoldEdges == 0 && t.misorientedEdges == 0 && t.nonManifoldVertices == 0) {
-    shape = "a 2-manifold whose boundary (" + std::to_string(t.boundaryEdges) + " edges) lies on the domain" +
+    shape = "a 2-manifold whose boundary (" + std::to_string(t.boundaryEdges) +
+            " edges) lies on the domain" +
             (s.poleVertices > 0 ? " and where F changes sign without a root" : "");
   } else {
     shape = "NOT a manifold: " + std::to_string(t.nonManifoldEdges) + " edges in 3+ triangles, " +
             std::to_string(t.misorientedEdges) + " misoriented, " +
             std::to_string(t.nonManifoldVertices) + " pinched vertices (please report this)";
   }
-  std::snprintf(buf, sizeof buf,
-                "wrote %s: %zu triangles, %zu vertices\n"
-                "  %s; Euler characteristic %ld, %zu piece%s%s\n"
-                "  largest vertex distance to the surface |F|/|grad F|: %.3g (%.2g of a cell of %.4g)\n"
-                "  time: %.3f s (octree %.3f, grid %.3f, vertices %.3f, writing %.3f)\n",
-                output.c_str(), r.triangles, r.vertices, shape.c_str(), t.euler, t.components,
-                t.components == 1 ? "" : "s",
-                t.closedManifold() ? (", volume " + std::to_string(t.volume)).c_str() : "",
-                s.maxResidual, s.cellSize > 0 ? s.maxResidual / s.cellSize : 0.0, s.cellSize,
-                s.totalSeconds + r.writeSeconds, s.octreeSeconds, s.gridSeconds, s.rootSeconds,
-                r.writeSeconds);
+  std::snprintf(
+      buf, sizeof buf,
+      "wrote %s: %zu triangles, %zu vertices\n"
+      "  %s; Euler characteristic %ld, %zu piece%s%s\n"
+      "  largest vertex distance to the surface |F|/|grad F|: %.3g (%.2g of a cell of %.4g)\n"
+      "  time: %.3f s (octree %.3f, grid %.3f, vertices %.3f, writing %.3f)\n",
+      output.c_str(), r.triangles, r.vertices, shape.c_str(), t.euler, t.components,
+      t.components == 1 ? "" : "s",
+      t.closedManifold() ? (", volume " + std::to_string(t.volume)).c_str() : "", s.maxResidual,
+      s.cellSize > 0 ? s.maxResidual / s.cellSize : 0.0, s.cellSize,
+      s.totalSeconds + r.writeSeconds, s.octreeSeconds, s.gridSeconds, s.rootSeconds,
+      r.writeSeconds);
   return buf;
 }
 

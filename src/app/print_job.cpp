@@ -20,7 +20,8 @@ std::string runPrintJob(const PrintJob& job) {
   // A square picture as wide as the page's text, at the asked resolution.
   const int side = int(std::lround(printing::pictureSide(job.paper) / 72.0 * job.dpi));
   if (side < 16 || side > 16384) {
-    return "print: a picture of " + std::to_string(side) + " pixels a side is out of range\n"
+    return "print: a picture of " + std::to_string(side) +
+           " pixels a side is out of range\n"
            "hint: a lower --dpi, or a smaller paper\n";
   }
   scene.width = scene.height = side;

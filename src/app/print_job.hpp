@@ -16,7 +16,7 @@ struct PrintJob {
   Scene scene;
   std::string title, description;
   printing::Paper paper = printing::Paper::A4;
-  double dpi = 300;  // of the picture on the page
+  double dpi = 300;              // of the picture on the page
   std::filesystem::path output;  // .pdf or .svg
   Backend backend = Backend::Egl;
 };

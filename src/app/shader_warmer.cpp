@@ -11,8 +11,7 @@
 
 namespace zs::app {
 
-void drawWarmUp(RayTracer& tracer, ViewTarget& target, const Scene& scene, int width,
-                int height) {
+void drawWarmUp(RayTracer& tracer, ViewTarget& target, const Scene& scene, int width, int height) {
   if (!target.ensure(width, height)) return;
   glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());
   tracer.draw(scene.render, scene.domain, width, height);

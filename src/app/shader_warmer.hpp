@@ -86,8 +86,7 @@ class ShaderWarmer {
 // depends on the picture (render/beam_pass.hpp), so warm-ups draw pictures like the ones
 // that follow: a formula's own program at a quarter of the scene's size from its eye, the
 // interpreters at a first picture's size.
-void drawWarmUp(RayTracer& tracer, ViewTarget& target, const Scene& scene, int width,
-                int height);
+void drawWarmUp(RayTracer& tracer, ViewTarget& target, const Scene& scene, int width, int height);
 // An interpreter's warm-up (TapeInterpreters' Draw) for the first pictures of a window of
 // windowWidth x windowHeight: drawWarmUp at the largest size a first picture takes there.
 void drawInterpreterWarmUp(RayTracer& tracer, ViewTarget& target, const Scene& scene,

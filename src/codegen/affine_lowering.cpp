@@ -93,7 +93,9 @@ class Lowering {
     AffineStep s;
     s.op = n.op;
     switch (n.op) {
-      case Op::VarX: case Op::VarY: case Op::VarZ:
+      case Op::VarX:
+      case Op::VarY:
+      case Op::VarZ:
         s.kind = AffineStep::Kind::Coordinate;
         s.ival = n.op == Op::VarX ? 0 : n.op == Op::VarY ? 1 : 2;
         own = push(s);
@@ -109,7 +111,8 @@ class Lowering {
         if (!s.nan) std::tie(s.lo, s.hi) = floatEnclosure(n.value);
         own = push(s);
         return;
-      default: break;
+      default:
+        break;
     }
     if (n.op == Op::Sin || n.op == Op::Cos) {
       const Op other = n.op == Op::Sin ? Op::Cos : Op::Sin;

@@ -8,7 +8,9 @@
 namespace zs {
 namespace {
 
-bool isLeaf(Op op) { return opInfo(op).arity == 0; }
+bool isLeaf(Op op) {
+  return opInfo(op).arity == 0;
+}
 
 }  // namespace
 
@@ -59,7 +61,8 @@ std::string BodyWriter::standIns(const std::vector<NodeId>& nodes) const {
     const std::string& a = flagOf(g_[id].a);
     const std::string mask = std::to_string(1u << bit++) + "u";
     if (a == "false") continue;
-    bits += (bits.empty() ? "" : " | ") + (a == "true" ? mask : "((" + a + ") ? " + mask + " : 0u)");
+    bits +=
+        (bits.empty() ? "" : " | ") + (a == "true" ? mask : "((" + a + ") ? " + mask + " : 0u)");
   }
   return "  zs_standIns = " + (bits.empty() ? std::string("0u") : bits) + ";\n";
 }

@@ -17,7 +17,8 @@ std::string emitHessianGlsl(Graph& g, const std::array<NodeId, 3>& grad) {
   BodyWriter body(g, names);
   for (NodeId id : order) body.node(id, "zs_uh");
   auto name = [&](NodeId id) { return names[static_cast<std::size_t>(id)]; };
-  std::string s = "\n// Second derivatives of F (src/codegen/emit_hessian.cpp), for curvature coloring.\n";
+  std::string s =
+      "\n// Second derivatives of F (src/codegen/emit_hessian.cpp), for curvature coloring.\n";
   s += "mat3 zs_FHess(vec3 p) {\n";
   s += "  bool zs_uh = false;  // set where a second derivative is undefined (not used)\n";
   s += body.out;

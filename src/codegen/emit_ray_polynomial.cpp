@@ -15,7 +15,9 @@ namespace {
 
 using Coeffs = std::vector<std::string>;  // GLSL names of c_0 .. c_k
 
-std::string idx(const std::string& array, int i) { return array + "[" + std::to_string(i) + "]"; }
+std::string idx(const std::string& array, int i) {
+  return array + "[" + std::to_string(i) + "]";
+}
 
 // A double literal with every digit a double has (the conversion matrix's entries); a
 // negative one is parenthesized: "a * -2.0" is fine, "a - -2.0" lexes as a decrement.
@@ -67,7 +69,9 @@ struct WideOps {
     return df ? "vec2(" + a + ", 0.0)" : "zs_Wide(" + a + ")";
   }
   // |x| of a wide value, as the bound's type (float in double-float, whose bound is float).
-  std::string absOf(const std::string& a) const { return df ? "abs(" + a + ".x)" : "abs(" + a + ")"; }
+  std::string absOf(const std::string& a) const {
+    return df ? "abs(" + a + ".x)" : "abs(" + a + ")";
+  }
 };
 
 // The double-float arithmetic of GLSL ES (no double, no fma): Knuth's two-sum and Dekker's
@@ -140,7 +144,9 @@ class TaylorWriter {
   Coeffs node(NodeId id) {
     const Node& n = g_[id];
     switch (n.op) {
-      case Op::VarX: case Op::VarY: case Op::VarZ: {
+      case Op::VarX:
+      case Op::VarY:
+      case Op::VarZ: {
         const std::string axis = n.op == Op::VarX ? "x" : n.op == Op::VarY ? "y" : "z";
         if (ops_.df) {
           bound(id, "abs(p" + axis + ".x) + abs(v" + axis + ".x)", 0);
@@ -155,13 +161,17 @@ class TaylorWriter {
         bound(id, boundOf(n.a), roundingsOf(n.a));
         return declare(r);
       }
-      case Op::Add: case Op::Sub: {
+      case Op::Add:
+      case Op::Sub: {
         const Coeffs &a = at(n.a), &b = at(n.b);
         Coeffs r(std::max(a.size(), b.size()));
         for (std::size_t i = 0; i < r.size(); ++i) {
-          if (i < a.size() && i < b.size()) r[i] = n.op == Op::Add ? ops_.add(a[i], b[i]) : ops_.sub(a[i], b[i]);
-          else if (i < a.size()) r[i] = a[i];
-          else r[i] = n.op == Op::Add ? b[i] : ops_.neg(b[i]);
+          if (i < a.size() && i < b.size())
+            r[i] = n.op == Op::Add ? ops_.add(a[i], b[i]) : ops_.sub(a[i], b[i]);
+          else if (i < a.size())
+            r[i] = a[i];
+          else
+            r[i] = n.op == Op::Add ? b[i] : ops_.neg(b[i]);
         }
         bound(id, boundOf(n.a) + " + " + boundOf(n.b),
               std::max(roundingsOf(n.a), roundingsOf(n.b)) + 1);
@@ -176,15 +186,18 @@ class TaylorWriter {
         const std::string inv = "c" + std::to_string(next_++) + "_inv";
         out += "  zs_u = zs_u || " + b + " == 0.0;\n";
         out += "  zs_Wide " + inv + " = " +
-               (ops_.df ? "zs_dfDiv(vec2(1.0, 0.0), vec2(" + b + ", 0.0))" : "1.0 / zs_Wide(" + b + ")") +
+               (ops_.df ? "zs_dfDiv(vec2(1.0, 0.0), vec2(" + b + ", 0.0))"
+                        : "1.0 / zs_Wide(" + b + ")") +
                ";\n";
         Coeffs r;
         for (const std::string& a : at(n.a)) r.push_back(ops_.mul(a, inv));
         bound(id, boundOf(n.a) + " * " + ops_.absOf(inv), roundingsOf(n.a) + roundingsOf(n.b) + 2);
         return declare(r);
       }
-      case Op::PowI: return power(id, at(n.a), n.ival);
-      default: return {};  // not reached: every other opcode is spatially constant here
+      case Op::PowI:
+        return power(id, at(n.a), n.ival);
+      default:
+        return {};  // not reached: every other opcode is spatially constant here
     }
   }
 
@@ -195,7 +208,8 @@ class TaylorWriter {
       scalars_.out.clear();
       const std::string& name = names_[static_cast<std::size_t>(id)];
       coeffs_.emplace(id, Coeffs{ops_.df ? ops_.widen(name) : name});
-      bound(id, ops_.df ? "abs(" + name + ")" : "abs(zs_Wide(" + name + "))", constantRoundings(id));
+      bound(id, ops_.df ? "abs(" + name + ")" : "abs(zs_Wide(" + name + "))",
+            constantRoundings(id));
       return;
     }
     coeffs_.emplace(id, node(id));
@@ -238,7 +252,8 @@ class TaylorWriter {
         into = into.empty() ? ops_.mul(a[i], b[j]) : ops_.add(into, ops_.mul(a[i], b[j]));
       }
       // Doubling is exact in either arithmetic.
-      if (!twice.empty()) sum = sum.empty() ? "2.0 * (" + twice + ")" : ops_.add("2.0 * (" + twice + ")", sum);
+      if (!twice.empty())
+        sum = sum.empty() ? "2.0 * (" + twice + ")" : ops_.add("2.0 * (" + twice + ")", sum);
       r[std::size_t(k)] = sum;
     }
     return declare(r);
@@ -257,8 +272,8 @@ class TaylorWriter {
     };
     out += "  vec2 " + name + "[zs_N];\n";
     out += "  zs_dfConvolve(" + constructor(a) + ", " + std::to_string(a.size()) + ", " +
-           constructor(b) + ", " + std::to_string(b.size()) + ", " + std::to_string(n) + ", " + name +
-           ");\n";
+           constructor(b) + ", " + std::to_string(b.size()) + ", " + std::to_string(n) + ", " +
+           name + ");\n";
     Coeffs r;
     for (int k = 0; k < n; ++k) r.push_back(name + "[" + std::to_string(k) + "]");
     return r;
@@ -334,7 +349,9 @@ class TaylorWriter {
   std::unordered_map<NodeId, int> roundings_, constantRoundings_;
 };
 
-std::string arrayParam(const std::string& name) { return "zs_Real " + name + "[zs_N]"; }
+std::string arrayParam(const std::string& name) {
+  return "zs_Real " + name + "[zs_N]";
+}
 
 // de Casteljau rows at parameter `t` over the coefficients `in`; returns row j, entry i.
 std::vector<std::vector<std::string>> deCasteljau(std::string& out, const std::string& prefix,
@@ -408,7 +425,8 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision, bool fp64) {
         const std::string term = m == 1.0 ? idx("c", j) : doubleLiteral(m) + " * " + idx("c", j);
         sum += (sum.empty() ? "" : " + ") + term;
       } else {
-        const std::string term = m == 1.0 ? idx("c", j) : "zs_dfMul(" + dfLiteral(m) + ", " + idx("c", j) + ")";
+        const std::string term =
+            m == 1.0 ? idx("c", j) : "zs_dfMul(" + dfLiteral(m) + ", " + idx("c", j) + ")";
         sum = sum.empty() ? term : "zs_dfAdd(" + sum + ", " + term + ")";
       }
     }
@@ -460,10 +478,12 @@ std::string emitBernsteinKernelsGlsl(int d, bool doublePrecision, bool fp64) {
   s += "\nfloat zs_firstCrossing(" + arrayParam("b") + ") {\n";
   s += "  zs_Real bi = " + idx("b", 0) + ", bj = " + idx("b", 1) + ";\n  float i = 0.0;\n";
   for (int i = d - 1; i >= 0; --i) {
-    s += "  if ((" + idx("b", i) + " > 0.0) != (" + idx("b", i + 1) + " > 0.0)) { bi = " +
-         idx("b", i) + "; bj = " + idx("b", i + 1) + "; i = " + std::to_string(i) + ".0; }\n";
+    s += "  if ((" + idx("b", i) + " > 0.0) != (" + idx("b", i + 1) +
+         " > 0.0)) { bi = " + idx("b", i) + "; bj = " + idx("b", i + 1) +
+         "; i = " + std::to_string(i) + ".0; }\n";
   }
-  s += "  return clamp((i + (bi != bj ? float(bi / (bi - bj)) : 0.0)) / float(zs_DEGREE), 0.0, 1.0);\n}\n";
+  s += "  return clamp((i + (bi != bj ? float(bi / (bi - bj)) : 0.0)) / float(zs_DEGREE), 0.0, "
+       "1.0);\n}\n";
 
   // How much of [0, 1] at each end is proven to keep f beyond a band |f| < band, given
   // lim = band + noise (every exact coefficient within noise of b_i): by the supporting line
@@ -555,12 +575,14 @@ std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f,
   TaylorWriter& taylor = *written;
   // The rounding count of the coefficients, plus that of the conversion to Bernstein form
   // (d + 1 products summed, the matrix entries rounded once).
-  s += "\n// Roundings on the longest path to a Bernstein coefficient in zs_Wide (zs_FPoly's error\n";
+  s += "\n// Roundings on the longest path to a Bernstein coefficient in zs_Wide (zs_FPoly's "
+       "error\n";
   s += "// bound, with the conversion's d + 1 products summed).\n";
   s += "const zs_Bound zs_ROUNDINGS = " + std::to_string(taylor.roundingsOf(f) + d + 3) + ".0;\n";
   if (ops.loopTerms > 0) {
     s += "\n// r_k = sum_i a_i b_(k-i) for k < n, in double-float, i ascending.\n"
-         "void zs_dfConvolve(vec2 a[zs_N], int na, vec2 b[zs_N], int nb, int n, out vec2 r[zs_N]) {\n"
+         "void zs_dfConvolve(vec2 a[zs_N], int na, vec2 b[zs_N], int nb, int n, out vec2 r[zs_N]) "
+         "{\n"
          "  for (int k = 0; k < zs_N; ++k) {\n"
          "    vec2 sum = vec2(0.0);\n"
          "    for (int i = max(0, k - nb + 1); i <= min(k, na - 1) && k < n; ++i)\n"
@@ -569,14 +591,16 @@ std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f,
          "  }\n"
          "}\n";
   }
-  s += "\n// Coefficients of f(s) in the power basis, in zs_Wide, and `bound` >= sum_k |c_k| computed\n";
+  s += "\n// Coefficients of f(s) in the power basis, in zs_Wide, and `bound` >= sum_k |c_k| "
+       "computed\n";
   s += "// with every operation on absolute values: the error of any Bernstein coefficient made\n";
   s += "// from them in zs_Wide is at most zs_ROUNDINGS zs_WIDE_EPS bound. False where F is\n";
   s += "// undefined on the whole ray.\n";
   if (fp64) {
     s += "bool zs_FPoly(dvec3 p, dvec3 v, out zs_Wide c[zs_N], out zs_Bound bound) {\n";
   } else {
-    s += "bool zs_FPoly(vec2 px, vec2 py, vec2 pz, vec2 vx, vec2 vy, vec2 vz, out zs_Wide c[zs_N],\n";
+    s += "bool zs_FPoly(vec2 px, vec2 py, vec2 pz, vec2 vx, vec2 vy, vec2 vz, out zs_Wide "
+         "c[zs_N],\n";
     s += "              out zs_Bound bound) {\n";
   }
   s += "  bool zs_u = false;\n";
@@ -584,13 +608,15 @@ std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f,
   const Coeffs& root = taylor.at(f);
   for (int k = 0; k <= d; ++k) {
     s += "  " + idx("c", k) + " = " +
-         (k < int(root.size()) ? root[std::size_t(k)] : std::string(fp64 ? "0.0" : "vec2(0.0)")) + ";\n";
+         (k < int(root.size()) ? root[std::size_t(k)] : std::string(fp64 ? "0.0" : "vec2(0.0)")) +
+         ";\n";
   }
   s += "  bound = " + taylor.boundOf(f) + ";\n";
   s += "  return !zs_u;\n}\n";
   // The segment [wa, wb] of the ray o + t d: its midpoint and half of it, in the wide type.
   s += "\n// f on the ray segment [wa, wb] of o + t d, expanded about the segment's midpoint.\n";
-  s += "bool zs_FPolyOn(vec3 o, vec3 d, float wa, float wb, out zs_Wide c[zs_N], out zs_Bound bound) {\n";
+  s += "bool zs_FPolyOn(vec3 o, vec3 d, float wa, float wb, out zs_Wide c[zs_N], out zs_Bound "
+       "bound) {\n";
   if (fp64) {
     s += "  return zs_FPoly(dvec3(o) + (0.5 * (double(wa) + double(wb))) * dvec3(d),\n";
     s += "                  (0.5 * double(wb - wa)) * dvec3(d), c, bound);\n}\n";
@@ -599,7 +625,8 @@ std::optional<RayPolynomialGlsl> emitRayPolynomialGlsl(const Graph& g, NodeId f,
     s += "  return zs_FPoly(zs_dfAdd(vec2(o.x, 0.0), zs_dfMul(mid, vec2(d.x, 0.0))),\n";
     s += "                  zs_dfAdd(vec2(o.y, 0.0), zs_dfMul(mid, vec2(d.y, 0.0))),\n";
     s += "                  zs_dfAdd(vec2(o.z, 0.0), zs_dfMul(mid, vec2(d.z, 0.0))),\n";
-    s += "                  zs_dfMul(halfLen, vec2(d.x, 0.0)), zs_dfMul(halfLen, vec2(d.y, 0.0)),\n";
+    s +=
+        "                  zs_dfMul(halfLen, vec2(d.x, 0.0)), zs_dfMul(halfLen, vec2(d.y, 0.0)),\n";
     s += "                  zs_dfMul(halfLen, vec2(d.z, 0.0)), c, bound);\n}\n";
   }
   return result;

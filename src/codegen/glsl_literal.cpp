@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <system_error>
+
 #include "expr/number_text.hpp"
 
 namespace zs {
@@ -29,14 +30,12 @@ GlslLiteral glslFloatLiteral(double value) {
   const float sign = value < 0 ? -1.0f : 1.0f;
   // Checked before the cast: converting a double beyond float range is undefined in C++.
   if (magnitude > kMax) {
-    return {shortestFloatText(sign * std::numeric_limits<float>::max()),
-            LiteralKind::ClampedHuge};
+    return {shortestFloatText(sign * std::numeric_limits<float>::max()), LiteralKind::ClampedHuge};
   }
   if (magnitude < kMin) {
     // Values between FLT_MIN/2 and FLT_MIN would round to FLT_MIN anyway; below they would
     // become denormals or zero. Either way the literal says FLT_MIN.
-    return {shortestFloatText(sign * std::numeric_limits<float>::min()),
-            LiteralKind::ClampedTiny};
+    return {shortestFloatText(sign * std::numeric_limits<float>::min()), LiteralKind::ClampedTiny};
   }
   return {shortestFloatText(static_cast<float>(value)), LiteralKind::Nearest};
 }

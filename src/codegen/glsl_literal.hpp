@@ -13,9 +13,9 @@
 namespace zs {
 
 enum class LiteralKind {
-  Nearest,        // the float nearest to the value (exact when the value is a float)
-  ClampedHuge,    // magnitude too large for a float
-  ClampedTiny,    // non-zero magnitude below the smallest normal float
+  Nearest,      // the float nearest to the value (exact when the value is a float)
+  ClampedHuge,  // magnitude too large for a float
+  ClampedTiny,  // non-zero magnitude below the smallest normal float
   NotANumber,
 };
 

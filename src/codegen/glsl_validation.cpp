@@ -1,16 +1,14 @@
 #include "codegen/glsl_validation.hpp"
 
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-
-#include <glslang/Public/ResourceLimits.h>
-#include <glslang/Public/ShaderLang.h>
-
-#include <cstdlib>
 #include <mutex>
 #include <string>
 
@@ -25,8 +23,10 @@ void initializeGlslangOnce() {
 
 EShLanguage toGlslang(Stage stage) {
   switch (stage) {
-    case Stage::Vertex: return EShLangVertex;
-    case Stage::Fragment: return EShLangFragment;
+    case Stage::Vertex:
+      return EShLangVertex;
+    case Stage::Fragment:
+      return EShLangFragment;
   }
   return EShLangFragment;
 }
@@ -126,10 +126,9 @@ std::string head(std::string_view log, int lines) {
 std::string withReportFile(std::string message, const std::string& report) {
   static std::atomic<int> counter{0};
   std::error_code ec;
-  const std::filesystem::path path =
-      std::filesystem::temp_directory_path(ec) /
-      ("zeroset-internal-error-" + std::to_string(::getpid()) + "-" +
-       std::to_string(++counter) + ".txt");
+  const std::filesystem::path path = std::filesystem::temp_directory_path(ec) /
+                                     ("zeroset-internal-error-" + std::to_string(::getpid()) + "-" +
+                                      std::to_string(++counter) + ".txt");
   std::ofstream out(path);
   if (!ec && out && (out << message << report) && (out.flush(), out)) {
     return message + "The shader and the whole log: " + path.string() + "\n";
@@ -151,8 +150,8 @@ std::string formatInternalShaderError(std::string_view what, const ValidationRes
   return withReportFile(s + head(result.log, 12), report);
 }
 
-std::string formatDriverShaderError(std::string_view what, Stage stage,
-                                    std::string_view driverLog, std::string_view source) {
+std::string formatDriverShaderError(std::string_view what, Stage stage, std::string_view driverLog,
+                                    std::string_view source) {
   const ValidationResult glslang = validateGlsl(source, stage);
   std::string s = "internal error in zeroset: the GL driver rejected the ";
   s.append(what);

@@ -31,7 +31,7 @@ std::string formatInternalShaderError(std::string_view what, const ValidationRes
 
 // The message for a shader that glslang accepted but the GL driver rejected: the driver's
 // log first, then glslang's (empty when clean), then the numbered source.
-std::string formatDriverShaderError(std::string_view what, Stage stage,
-                                    std::string_view driverLog, std::string_view source);
+std::string formatDriverShaderError(std::string_view what, Stage stage, std::string_view driverLog,
+                                    std::string_view source);
 
 }  // namespace zs

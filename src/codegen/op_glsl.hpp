@@ -12,8 +12,7 @@
 namespace zs {
 
 // Not for leaves (Const, VarX/Y/Z, Param) or PowI: the emitter writes those itself.
-std::string glslOpExpression(Op op, std::string_view a, std::string_view b,
-                             std::string_view flag);
+std::string glslOpExpression(Op op, std::string_view a, std::string_view b, std::string_view flag);
 
 // True when the operation's helper takes the undefined flag (sqrt, log, asin, acos, pow, /).
 bool opCanBeUndefined(Op op);

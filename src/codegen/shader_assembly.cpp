@@ -27,8 +27,7 @@ void appendPiece(std::string& out, std::string_view origin, int string, std::str
 // True when `name` occurs in `text` as a whole identifier (zs_F must not match zs_FGrad).
 bool mentionsIdentifier(std::string_view text, std::string_view name) {
   auto isIdent = [](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-           c == '_';
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
   };
   for (std::size_t pos = text.find(name); pos != std::string_view::npos;
        pos = text.find(name, pos + 1)) {
@@ -123,12 +122,14 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
   const std::string_view firstRoots = (poly || interval) ? shaderTemplate(kFirstRootsTemplate) : "";
   if (!mentionsIdentifier(march, "zs_F") && !mentionsIdentifier(march, "zs_FGrad") &&
       !mentionsIdentifier(firstRoots, "zs_FGrad")) {
-    throw std::logic_error("internal error in zeroset: shaders/templates/" + std::string(marchName) +
-                           " calls neither zs_F nor zs_FGrad, so the generated formula would be unused");
+    throw std::logic_error(
+        "internal error in zeroset: shaders/templates/" + std::string(marchName) +
+        " calls neither zs_F nor zs_FGrad, so the generated formula would be unused");
   }
   if (poly && poly->fp64 && dialect == ShaderDialect::Es300) {
-    throw std::logic_error("internal error in zeroset: a double-precision ray polynomial "
-                           "cannot be assembled for GLSL ES");
+    throw std::logic_error(
+        "internal error in zeroset: a double-precision ray polynomial "
+        "cannot be assembled for GLSL ES");
   }
   // #version must come first.
   std::string out = versionHeader(prelude, dialect);
@@ -159,13 +160,13 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
                 interval->source);
   }
   const std::string_view frame = shaderTemplate(kFrameTemplate);
-  appendPiece(out, "shaders/templates/" + std::string(kFrameTemplate), string++,
-              (dialect == ShaderDialect::Gl330
-                   ? "#ifdef RT_FRAME_UNIFORMS\n" + frameStruct(frame) +
-                         "#else\n#define RT_FRAME_STORAGE in\n" + std::string(frame) +
-                         "#define RT_FRAME_BEGIN\n#endif\n"
-                   : frameStruct(frame)) +
-                  (interval ? std::string(kHasBeamDefine) : std::string()));
+  appendPiece(
+      out, "shaders/templates/" + std::string(kFrameTemplate), string++,
+      (dialect == ShaderDialect::Gl330 ? "#ifdef RT_FRAME_UNIFORMS\n" + frameStruct(frame) +
+                                             "#else\n#define RT_FRAME_STORAGE in\n" +
+                                             std::string(frame) + "#define RT_FRAME_BEGIN\n#endif\n"
+                                       : frameStruct(frame)) +
+          (interval ? std::string(kHasBeamDefine) : std::string()));
   if (!markers.empty()) appendPiece(out, "highlights.singular markers", string++, markers);
   appendPiece(out, "shaders/templates/" + std::string(kRaytraceTemplate), string++, raytrace);
   appendPiece(out, "shaders/templates/" + std::string(kShadingTemplate), string++,
@@ -174,7 +175,8 @@ std::string assemble(const GlslFormula& formula, const RayPolynomialGlsl* poly,
   if (!firstRoots.empty())
     appendPiece(out, "shaders/templates/" + std::string(kFirstRootsTemplate), string++, firstRoots);
   if (interval)
-    appendPiece(out, "shaders/templates/" + std::string(kBeamTemplate), string++, shaderTemplate(kBeamTemplate));
+    appendPiece(out, "shaders/templates/" + std::string(kBeamTemplate), string++,
+                shaderTemplate(kBeamTemplate));
   // Last: a volume skips stretches with what the interval or Bernstein pieces define.
   appendPiece(out, "shaders/templates/" + std::string(kVolumeTemplate), string,
               shaderTemplate(kVolumeTemplate));

@@ -43,19 +43,40 @@ void BatchEvaluator::pass(const double* xs, const double* ys, const double* zs, 
     // The common arithmetic gets loops of its own (they vectorize); everything else goes
     // through applyScalar, the single definition of each operation's value.
     switch (in.op) {
-      case Op::VarX: std::copy(xs, xs + count, s); break;
-      case Op::VarY: std::copy(ys, ys + count, s); break;
-      case Op::VarZ: std::copy(zs, zs + count, s); break;
-      case Op::Param:
-        std::fill(s, s + count, std::size_t(in.ival) < params.size() ? params[std::size_t(in.ival)] : NAN);
+      case Op::VarX:
+        std::copy(xs, xs + count, s);
         break;
-      case Op::Const: std::fill(s, s + count, in.value); break;
-      case Op::Neg: for (std::size_t k = 0; k < count; ++k) s[k] = -a[k]; break;
-      case Op::Add: for (std::size_t k = 0; k < count; ++k) s[k] = a[k] + b[k]; break;
-      case Op::Sub: for (std::size_t k = 0; k < count; ++k) s[k] = a[k] - b[k]; break;
-      case Op::Mul: for (std::size_t k = 0; k < count; ++k) s[k] = a[k] * b[k]; break;
-      case Op::Div: for (std::size_t k = 0; k < count; ++k) s[k] = a[k] / b[k]; break;
-      case Op::PowI: for (std::size_t k = 0; k < count; ++k) s[k] = powInt(a[k], in.ival); break;
+      case Op::VarY:
+        std::copy(ys, ys + count, s);
+        break;
+      case Op::VarZ:
+        std::copy(zs, zs + count, s);
+        break;
+      case Op::Param:
+        std::fill(s, s + count,
+                  std::size_t(in.ival) < params.size() ? params[std::size_t(in.ival)] : NAN);
+        break;
+      case Op::Const:
+        std::fill(s, s + count, in.value);
+        break;
+      case Op::Neg:
+        for (std::size_t k = 0; k < count; ++k) s[k] = -a[k];
+        break;
+      case Op::Add:
+        for (std::size_t k = 0; k < count; ++k) s[k] = a[k] + b[k];
+        break;
+      case Op::Sub:
+        for (std::size_t k = 0; k < count; ++k) s[k] = a[k] - b[k];
+        break;
+      case Op::Mul:
+        for (std::size_t k = 0; k < count; ++k) s[k] = a[k] * b[k];
+        break;
+      case Op::Div:
+        for (std::size_t k = 0; k < count; ++k) s[k] = a[k] / b[k];
+        break;
+      case Op::PowI:
+        for (std::size_t k = 0; k < count; ++k) s[k] = powInt(a[k], in.ival);
+        break;
       default:
         for (std::size_t k = 0; k < count; ++k)
           s[k] = applyScalar(in.op, a ? a[k] : 0.0, b ? b[k] : 0.0, in.ival, in.value);

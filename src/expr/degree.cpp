@@ -18,11 +18,15 @@ using Poly = std::map<Monomial, double>;
 constexpr std::size_t kMaxTerms = 4096;
 constexpr int kMaxDegree = 512;
 
-int degreeOf(const Monomial& m) { return m[0] + m[1] + m[2]; }
+int degreeOf(const Monomial& m) {
+  return m[0] + m[1] + m[2];
+}
 
 // Parameters stand for generic nonzero coefficients: distinct irrational-looking values make
 // an accidental cancellation vanishingly unlikely (the Schwartz-Zippel argument).
-double genericParamValue(int index) { return std::sqrt(2.0 + 3.0 * index) + 0.1234567; }
+double genericParamValue(int index) {
+  return std::sqrt(2.0 + 3.0 * index) + 0.1234567;
+}
 
 void prune(Poly& p) {
   double scale = 0;
@@ -107,15 +111,26 @@ std::optional<int> polynomialDegree(const Graph& g, NodeId root) {
     };
     std::optional<Poly> r;
     switch (n.op) {
-      case Op::Const: r = Poly{{Monomial{0, 0, 0}, n.value}}; break;
-      case Op::Param: r = Poly{{Monomial{0, 0, 0}, genericParamValue(n.ival)}}; break;
-      case Op::VarX: r = Poly{{Monomial{1, 0, 0}, 1.0}}; break;
-      case Op::VarY: r = Poly{{Monomial{0, 1, 0}, 1.0}}; break;
-      case Op::VarZ: r = Poly{{Monomial{0, 0, 1}, 1.0}}; break;
+      case Op::Const:
+        r = Poly{{Monomial{0, 0, 0}, n.value}};
+        break;
+      case Op::Param:
+        r = Poly{{Monomial{0, 0, 0}, genericParamValue(n.ival)}};
+        break;
+      case Op::VarX:
+        r = Poly{{Monomial{1, 0, 0}, 1.0}};
+        break;
+      case Op::VarY:
+        r = Poly{{Monomial{0, 1, 0}, 1.0}};
+        break;
+      case Op::VarZ:
+        r = Poly{{Monomial{0, 0, 1}, 1.0}};
+        break;
       case Op::Neg:
         if (at(n.a)) r = sum(Poly{}, *at(n.a), -1);
         break;
-      case Op::Add: case Op::Sub:
+      case Op::Add:
+      case Op::Sub:
         if (at(n.a) && at(n.b)) r = sum(*at(n.a), *at(n.b), n.op == Op::Add ? 1 : -1);
         break;
       case Op::Mul:
@@ -138,10 +153,28 @@ std::optional<int> polynomialDegree(const Graph& g, NodeId root) {
           if (n.ival == 0) r = acc;
         }
         break;
-      case Op::Pow: case Op::Sin: case Op::Cos: case Op::Tan: case Op::Asin: case Op::Acos:
-      case Op::Atan: case Op::Atan2: case Op::Sinh: case Op::Cosh: case Op::Tanh: case Op::Exp:
-      case Op::Log: case Op::Sqrt: case Op::Cbrt: case Op::Abs: case Op::Sign: case Op::Floor:
-      case Op::Ceil: case Op::Min: case Op::Max: case Op::IfDefined:
+      case Op::Pow:
+      case Op::Sin:
+      case Op::Cos:
+      case Op::Tan:
+      case Op::Asin:
+      case Op::Acos:
+      case Op::Atan:
+      case Op::Atan2:
+      case Op::Sinh:
+      case Op::Cosh:
+      case Op::Tanh:
+      case Op::Exp:
+      case Op::Log:
+      case Op::Sqrt:
+      case Op::Cbrt:
+      case Op::Abs:
+      case Op::Sign:
+      case Op::Floor:
+      case Op::Ceil:
+      case Op::Min:
+      case Op::Max:
+      case Op::IfDefined:
         // Not polynomial operations; a subexpression free of x, y, z is still a coefficient.
         if (g.isSpatiallyConstant(id)) r = Poly{{Monomial{0, 0, 0}, 1.0 + 0.5 * id}};
         break;

@@ -28,12 +28,20 @@ NodeId derive(Builder& B, NodeId self, const Node& n, NodeId da, NodeId db) {
   Graph& g = B.g;
   const NodeId a = n.a, b = n.b;
   switch (n.op) {
-    case Op::Const: case Op::Param: case Op::VarX: case Op::VarY: case Op::VarZ:
+    case Op::Const:
+    case Op::Param:
+    case Op::VarX:
+    case Op::VarY:
+    case Op::VarZ:
       return B.c(0);  // handled by the caller; kept for -Werror=switch
-    case Op::Neg: return B.neg(da);
-    case Op::Add: return B.add(da, db);
-    case Op::Sub: return B.sub(da, db);
-    case Op::Mul: return B.add(B.mul(da, b), B.mul(a, db));
+    case Op::Neg:
+      return B.neg(da);
+    case Op::Add:
+      return B.add(da, db);
+    case Op::Sub:
+      return B.sub(da, db);
+    case Op::Mul:
+      return B.add(B.mul(da, b), B.mul(a, db));
     case Op::Div:  // (da*b - a*db) / b^2
       if (B.zero(db)) return B.div(da, b);
       return B.div(B.sub(B.mul(da, b), B.mul(a, db)), B.sq(b));
@@ -44,33 +52,51 @@ NodeId derive(Builder& B, NodeId self, const Node& n, NodeId da, NodeId db) {
         return B.mul(B.mul(b, g.binary(Op::Pow, a, B.sub(b, B.c(1)))), da);
       // a^b * (db*log(a) + b*da/a)
       return B.mul(self, B.add(B.mul(db, B.fn(Op::Log, a)), B.div(B.mul(b, da), a)));
-    case Op::Sin: return B.mul(B.fn(Op::Cos, a), da);
-    case Op::Cos: return B.neg(B.mul(B.fn(Op::Sin, a), da));
-    case Op::Tan: return B.div(da, B.sq(B.fn(Op::Cos, a)));
-    case Op::Asin: return B.div(da, B.fn(Op::Sqrt, B.sub(B.c(1), B.sq(a))));
-    case Op::Acos: return B.neg(B.div(da, B.fn(Op::Sqrt, B.sub(B.c(1), B.sq(a)))));
-    case Op::Atan: return B.div(da, B.add(B.c(1), B.sq(a)));
+    case Op::Sin:
+      return B.mul(B.fn(Op::Cos, a), da);
+    case Op::Cos:
+      return B.neg(B.mul(B.fn(Op::Sin, a), da));
+    case Op::Tan:
+      return B.div(da, B.sq(B.fn(Op::Cos, a)));
+    case Op::Asin:
+      return B.div(da, B.fn(Op::Sqrt, B.sub(B.c(1), B.sq(a))));
+    case Op::Acos:
+      return B.neg(B.div(da, B.fn(Op::Sqrt, B.sub(B.c(1), B.sq(a)))));
+    case Op::Atan:
+      return B.div(da, B.add(B.c(1), B.sq(a)));
     case Op::Atan2:  // atan2(a, b) = angle of (b, a): (b*da - a*db) / (a^2 + b^2)
       return B.div(B.sub(B.mul(b, da), B.mul(a, db)), B.add(B.sq(a), B.sq(b)));
-    case Op::Sinh: return B.mul(B.fn(Op::Cosh, a), da);
-    case Op::Cosh: return B.mul(B.fn(Op::Sinh, a), da);
-    case Op::Tanh: return B.mul(B.sub(B.c(1), B.sq(self)), da);
-    case Op::Exp: return B.mul(self, da);
-    case Op::Log: return B.div(da, a);
-    case Op::Sqrt: return B.div(da, B.mul(B.c(2), self));
-    case Op::Cbrt: return B.div(da, B.mul(B.c(3), B.sq(self)));
-    case Op::Abs: return B.mul(B.fn(Op::Sign, a), da);
-    case Op::Sign: case Op::Floor: case Op::Ceil:
+    case Op::Sinh:
+      return B.mul(B.fn(Op::Cosh, a), da);
+    case Op::Cosh:
+      return B.mul(B.fn(Op::Sinh, a), da);
+    case Op::Tanh:
+      return B.mul(B.sub(B.c(1), B.sq(self)), da);
+    case Op::Exp:
+      return B.mul(self, da);
+    case Op::Log:
+      return B.div(da, a);
+    case Op::Sqrt:
+      return B.div(da, B.mul(B.c(2), self));
+    case Op::Cbrt:
+      return B.div(da, B.mul(B.c(3), B.sq(self)));
+    case Op::Abs:
+      return B.mul(B.fn(Op::Sign, a), da);
+    case Op::Sign:
+    case Op::Floor:
+    case Op::Ceil:
       return B.c(0);  // piecewise constant: zero wherever differentiable
-    case Op::Min: case Op::Max: {
+    case Op::Min:
+    case Op::Max: {
       // min/max = (a+b)/2 -/+ |a-b|/2, so d = (da+db)/2 -/+ sign(a-b) (da-db)/2
       const NodeId mean = B.mul(B.c(0.5), B.add(da, db));
-      const NodeId half = B.mul(B.c(0.5), B.mul(B.fn(Op::Sign, g.binary(Op::Sub, a, b)),
-                                                B.sub(da, db)));
+      const NodeId half =
+          B.mul(B.c(0.5), B.mul(B.fn(Op::Sign, g.binary(Op::Sub, a, b)), B.sub(da, db)));
       return n.op == Op::Min ? B.sub(mean, half) : B.add(mean, half);
     }
     // 0 where a is undefined, a constant there: b's derivative where a is defined.
-    case Op::IfDefined: return g.binary(Op::IfDefined, a, db);
+    case Op::IfDefined:
+      return g.binary(Op::IfDefined, a, db);
   }
   return B.c(0);
 }

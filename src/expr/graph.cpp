@@ -29,14 +29,39 @@ namespace {
 // Operations that are defined (never NaN from a domain restriction) for every finite input.
 bool opIsTotal(Op op) {
   switch (op) {
-    case Op::Div: case Op::Pow: case Op::Tan: case Op::Asin: case Op::Acos: case Op::Log:
+    case Op::Div:
+    case Op::Pow:
+    case Op::Tan:
+    case Op::Asin:
+    case Op::Acos:
+    case Op::Log:
     case Op::Sqrt:
       return false;
-    case Op::Const: case Op::VarX: case Op::VarY: case Op::VarZ: case Op::Param:
-    case Op::Neg: case Op::Add: case Op::Sub: case Op::Mul: case Op::PowI: case Op::Sin:
-    case Op::Cos: case Op::Atan: case Op::Atan2: case Op::Sinh: case Op::Cosh: case Op::Tanh:
-    case Op::Exp: case Op::Cbrt: case Op::Abs: case Op::Sign: case Op::Floor: case Op::Ceil:
-    case Op::Min: case Op::Max:
+    case Op::Const:
+    case Op::VarX:
+    case Op::VarY:
+    case Op::VarZ:
+    case Op::Param:
+    case Op::Neg:
+    case Op::Add:
+    case Op::Sub:
+    case Op::Mul:
+    case Op::PowI:
+    case Op::Sin:
+    case Op::Cos:
+    case Op::Atan:
+    case Op::Atan2:
+    case Op::Sinh:
+    case Op::Cosh:
+    case Op::Tanh:
+    case Op::Exp:
+    case Op::Cbrt:
+    case Op::Abs:
+    case Op::Sign:
+    case Op::Floor:
+    case Op::Ceil:
+    case Op::Min:
+    case Op::Max:
     case Op::IfDefined:  // defined where b is (0 where a is not): total when its operands are
       return true;
   }
@@ -205,17 +230,28 @@ NodeId copyInto(Graph& to, const Graph& from, NodeId root) {
     const Node& n = from[id];
     NodeId m = kNoNode;
     switch (n.op) {
-      case Op::Const: m = to.constant(n.value); break;
-      case Op::VarX: m = to.var(0); break;
-      case Op::VarY: m = to.var(1); break;
-      case Op::VarZ: m = to.var(2); break;
-      case Op::Param: m = to.param(from.params()[static_cast<std::size_t>(n.ival)]); break;
-      case Op::PowI: m = to.powi(mapped[static_cast<std::size_t>(n.a)], n.ival); break;
+      case Op::Const:
+        m = to.constant(n.value);
+        break;
+      case Op::VarX:
+        m = to.var(0);
+        break;
+      case Op::VarY:
+        m = to.var(1);
+        break;
+      case Op::VarZ:
+        m = to.var(2);
+        break;
+      case Op::Param:
+        m = to.param(from.params()[static_cast<std::size_t>(n.ival)]);
+        break;
+      case Op::PowI:
+        m = to.powi(mapped[static_cast<std::size_t>(n.a)], n.ival);
+        break;
       default:
-        m = opInfo(n.op).arity == 1
-                ? to.unary(n.op, mapped[static_cast<std::size_t>(n.a)])
-                : to.binary(n.op, mapped[static_cast<std::size_t>(n.a)],
-                            mapped[static_cast<std::size_t>(n.b)]);
+        m = opInfo(n.op).arity == 1 ? to.unary(n.op, mapped[static_cast<std::size_t>(n.a)])
+                                    : to.binary(n.op, mapped[static_cast<std::size_t>(n.a)],
+                                                mapped[static_cast<std::size_t>(n.b)]);
     }
     mapped[static_cast<std::size_t>(id)] = m;
   }

@@ -22,10 +22,10 @@ inline constexpr NodeId kNoNode = -1;
 
 struct Node {
   Op op = Op::Const;
-  NodeId a = kNoNode;      // first operand
-  NodeId b = kNoNode;      // second operand
-  double value = 0.0;      // Const: its value
-  std::int32_t ival = 0;   // PowI: the exponent; Param: index into Graph::params()
+  NodeId a = kNoNode;     // first operand
+  NodeId b = kNoNode;     // second operand
+  double value = 0.0;     // Const: its value
+  std::int32_t ival = 0;  // PowI: the exponent; Param: index into Graph::params()
 
   // Bitwise on `value`, so -0.0 and 0.0 stay distinct and NaN equals itself: hash-consing
   // must never merge two constants that print differently.

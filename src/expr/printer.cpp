@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <vector>
+
 #include "expr/number_text.hpp"
 
 namespace zs {
@@ -93,7 +94,8 @@ std::optional<std::string> print(const Graph& g, NodeId root, std::size_t maxCha
           p.text = std::string(info.spelling) + "(" + out[static_cast<std::size_t>(n.a)].text +
                    ", " + out[static_cast<std::size_t>(n.b)].text + ")";
           p.depth = std::max(out[static_cast<std::size_t>(n.a)].depth,
-                             out[static_cast<std::size_t>(n.b)].depth) + 1;
+                             out[static_cast<std::size_t>(n.b)].depth) +
+                    1;
         }
         break;
     }

@@ -7,38 +7,70 @@ namespace zs {
 
 double applyScalar(Op op, double a, double b, std::int32_t ival, double value) {
   switch (op) {
-    case Op::Const: return value;
-    case Op::VarX: case Op::VarY: case Op::VarZ: case Op::Param:
+    case Op::Const:
+      return value;
+    case Op::VarX:
+    case Op::VarY:
+    case Op::VarZ:
+    case Op::Param:
       assert(false && "leaves are loaded by the evaluator");
       return NAN;
-    case Op::Neg: return -a;
-    case Op::Add: return a + b;
-    case Op::Sub: return a - b;
-    case Op::Mul: return a * b;
-    case Op::Div: return a / b;
-    case Op::PowI: return powInt(a, ival);
-    case Op::Pow: return std::pow(a, b);
-    case Op::Sin: return std::sin(a);
-    case Op::Cos: return std::cos(a);
-    case Op::Tan: return std::tan(a);
-    case Op::Asin: return std::asin(a);
-    case Op::Acos: return std::acos(a);
-    case Op::Atan: return std::atan(a);
-    case Op::Atan2: return std::atan2(a, b);
-    case Op::Sinh: return std::sinh(a);
-    case Op::Cosh: return std::cosh(a);
-    case Op::Tanh: return std::tanh(a);
-    case Op::Exp: return std::exp(a);
-    case Op::Log: return a < 0 ? NAN : std::log(a);
-    case Op::Sqrt: return std::sqrt(a);
-    case Op::Cbrt: return std::cbrt(a);
-    case Op::Abs: return std::fabs(a);
-    case Op::Sign: return std::isnan(a) ? a : double((a > 0) - (a < 0));
-    case Op::Floor: return std::floor(a);
-    case Op::Ceil: return std::ceil(a);
-    case Op::Min: return std::isnan(a) || std::isnan(b) ? NAN : std::fmin(a, b);
-    case Op::Max: return std::isnan(a) || std::isnan(b) ? NAN : std::fmax(a, b);
-    case Op::IfDefined: return std::isnan(a) ? 0.0 : b;
+    case Op::Neg:
+      return -a;
+    case Op::Add:
+      return a + b;
+    case Op::Sub:
+      return a - b;
+    case Op::Mul:
+      return a * b;
+    case Op::Div:
+      return a / b;
+    case Op::PowI:
+      return powInt(a, ival);
+    case Op::Pow:
+      return std::pow(a, b);
+    case Op::Sin:
+      return std::sin(a);
+    case Op::Cos:
+      return std::cos(a);
+    case Op::Tan:
+      return std::tan(a);
+    case Op::Asin:
+      return std::asin(a);
+    case Op::Acos:
+      return std::acos(a);
+    case Op::Atan:
+      return std::atan(a);
+    case Op::Atan2:
+      return std::atan2(a, b);
+    case Op::Sinh:
+      return std::sinh(a);
+    case Op::Cosh:
+      return std::cosh(a);
+    case Op::Tanh:
+      return std::tanh(a);
+    case Op::Exp:
+      return std::exp(a);
+    case Op::Log:
+      return a < 0 ? NAN : std::log(a);
+    case Op::Sqrt:
+      return std::sqrt(a);
+    case Op::Cbrt:
+      return std::cbrt(a);
+    case Op::Abs:
+      return std::fabs(a);
+    case Op::Sign:
+      return std::isnan(a) ? a : double((a > 0) - (a < 0));
+    case Op::Floor:
+      return std::floor(a);
+    case Op::Ceil:
+      return std::ceil(a);
+    case Op::Min:
+      return std::isnan(a) || std::isnan(b) ? NAN : std::fmin(a, b);
+    case Op::Max:
+      return std::isnan(a) || std::isnan(b) ? NAN : std::fmax(a, b);
+    case Op::IfDefined:
+      return std::isnan(a) ? 0.0 : b;
   }
   return NAN;
 }
@@ -72,9 +104,15 @@ void PointEvaluator::eval(double x, double y, double z, std::span<const double> 
   for (std::size_t i = 0; i < n; ++i) {
     const Instr& in = code[i];
     switch (in.op) {
-      case Op::VarX: s[i] = x; break;
-      case Op::VarY: s[i] = y; break;
-      case Op::VarZ: s[i] = z; break;
+      case Op::VarX:
+        s[i] = x;
+        break;
+      case Op::VarY:
+        s[i] = y;
+        break;
+      case Op::VarZ:
+        s[i] = z;
+        break;
       case Op::Param:
         s[i] = static_cast<std::size_t>(in.ival) < params.size() ? params[in.ival] : NAN;
         break;

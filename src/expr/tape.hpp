@@ -13,10 +13,10 @@ namespace zs {
 
 struct Instr {
   Op op;
-  std::int32_t a = -1;   // operand slots
+  std::int32_t a = -1;  // operand slots
   std::int32_t b = -1;
-  double value = 0.0;    // Const
-  std::int32_t ival = 0; // PowI exponent / Param index
+  double value = 0.0;     // Const
+  std::int32_t ival = 0;  // PowI exponent / Param index
 };
 
 struct Tape {

@@ -32,11 +32,21 @@ std::optional<std::string> quoted(std::string_view line, std::string& error) {
     }
     if (++i >= line.size()) break;
     switch (line[i]) {
-      case 'n': out += '\n'; break;
-      case 't': out += '\t'; break;
-      case 'r': out += '\r'; break;
-      case '"': out += '"'; break;
-      case '\\': out += '\\'; break;
+      case 'n':
+        out += '\n';
+        break;
+      case 't':
+        out += '\t';
+        break;
+      case 'r':
+        out += '\r';
+        break;
+      case '"':
+        out += '"';
+        break;
+      case '\\':
+        out += '\\';
+        break;
       default:
         error = std::string("unknown escape \\") + line[i];
         return std::nullopt;
@@ -81,9 +91,12 @@ std::variant<Catalog, PoError> parsePo(std::string_view text) {
   std::optional<int> duplicate;  // the line of the first msgid seen twice
   auto finish = [&]() {
     if (haveId && haveStr) {
-      if (id.empty()) header = str;
-      else if (!seen.insert(id).second) duplicate = duplicate.value_or(idLine);
-      else if (!fuzzy && !str.empty()) catalog.messages[id] = str;
+      if (id.empty())
+        header = str;
+      else if (!seen.insert(id).second)
+        duplicate = duplicate.value_or(idLine);
+      else if (!fuzzy && !str.empty())
+        catalog.messages[id] = str;
     }
     id.clear();
     str.clear();
@@ -94,13 +107,16 @@ std::variant<Catalog, PoError> parsePo(std::string_view text) {
   std::size_t at = 0;
   while (at <= text.size()) {
     const std::size_t end = text.find('\n', at);
-    std::string_view line = text.substr(at, (end == std::string_view::npos ? text.size() : end) - at);
+    std::string_view line =
+        text.substr(at, (end == std::string_view::npos ? text.size() : end) - at);
     at = end == std::string_view::npos ? text.size() + 1 : end + 1;
     ++lineNumber;
     while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.remove_suffix(1);
     if (line.empty()) {  // messages are separated by blank lines: flags do not carry over
-      if (haveStr) finish();
-      else if (!haveId) fuzzy = false;
+      if (haveStr)
+        finish();
+      else if (!haveId)
+        fuzzy = false;
       continue;
     }
     std::string error;
@@ -115,8 +131,9 @@ std::variant<Catalog, PoError> parsePo(std::string_view text) {
     }
     if (startsWith(line, "msgctxt") || startsWith(line, "msgid_plural") ||
         startsWith(line, "msgstr[")) {
-      return PoError{lineNumber, "contexts and plural forms are not used by zeroset's "
-                                 "messages; write one msgid and one msgstr"};
+      return PoError{lineNumber,
+                     "contexts and plural forms are not used by zeroset's "
+                     "messages; write one msgid and one msgstr"};
     }
     if (startsWith(line, "msgid")) {
       if (haveId) {
@@ -141,9 +158,12 @@ std::variant<Catalog, PoError> parsePo(std::string_view text) {
     if (line[0] == '"') {
       auto s = quoted(line, error);
       if (!s) return PoError{lineNumber, error};
-      if (haveStr) str += *s;  // continues the msgstr, or the msgid before it
-      else if (haveId) id += *s;
-      else return PoError{lineNumber, "a continued string outside a msgid or msgstr"};
+      if (haveStr)
+        str += *s;  // continues the msgstr, or the msgid before it
+      else if (haveId)
+        id += *s;
+      else
+        return PoError{lineNumber, "a continued string outside a msgid or msgstr"};
       continue;
     }
     return PoError{lineNumber, "expected msgid, msgstr, a quoted string or a # comment"};

@@ -22,7 +22,7 @@ template <class Value>
 using StringMap = std::unordered_map<std::string, Value, StringHash, std::equal_to<>>;
 
 struct Catalog {
-  std::string language;  // from the header's "Language:" line ("es"); "" when absent
+  std::string language;             // from the header's "Language:" line ("es"); "" when absent
   StringMap<std::string> messages;  // English -> translation
 };
 

@@ -31,8 +31,8 @@ const Loaded& loaded() {
     for (const EmbeddedCatalog& e : embeddedCatalogs()) {
       auto parsed = parsePo(e.text);
       if (auto* error = std::get_if<PoError>(&parsed))
-        throw std::logic_error("po/" + std::string(e.code) + ".po:" +
-                               std::to_string(error->line) + ": " + error->message);
+        throw std::logic_error("po/" + std::string(e.code) + ".po:" + std::to_string(error->line) +
+                               ": " + error->message);
       l.catalogs.emplace(std::string(e.code), std::move(std::get<Catalog>(parsed)));
       l.languages.push_back({e.code, e.name});
     }
@@ -55,7 +55,9 @@ State& state() {
 
 }  // namespace
 
-std::span<const Language> languages() { return loaded().languages; }
+std::span<const Language> languages() {
+  return loaded().languages;
+}
 
 namespace {
 
@@ -139,7 +141,9 @@ const char* tr(const char* english) {
   return translated(s, english);
 }
 
-std::string tr(const std::string& english) { return tr(english.c_str()); }
+std::string tr(const std::string& english) {
+  return tr(english.c_str());
+}
 
 const char* label(const char* english) {
   State& s = state();

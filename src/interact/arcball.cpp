@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -13,8 +12,12 @@
 namespace zs::interact {
 namespace {
 
-glm::dvec3 toGlm(const Vec3& v) { return {v[0], v[1], v[2]}; }
-Vec3 fromGlm(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+glm::dvec3 toGlm(const Vec3& v) {
+  return {v[0], v[1], v[2]};
+}
+Vec3 fromGlm(const glm::dvec3& v) {
+  return {v.x, v.y, v.z};
+}
 
 // Cursor -> point on the unit sphere (inside) or on the hyperbolic sheet (outside), so
 // dragging past the sphere's rim keeps turning smoothly instead of snapping.
@@ -36,8 +39,8 @@ bool dragRotation(const Camera& view, const DragPoints& drag, glm::dquat& out) {
   if (s < 1e-12) return false;
   const double angle = std::atan2(s, glm::dot(p0, p1));
   const CameraBasis b = cameraBasis(view);
-  const glm::dvec3 axis = axisCam.x * toGlm(b.right) + axisCam.y * toGlm(b.up) -
-                          axisCam.z * toGlm(b.forward);
+  const glm::dvec3 axis =
+      axisCam.x * toGlm(b.right) + axisCam.y * toGlm(b.up) - axisCam.z * toGlm(b.forward);
   out = glm::angleAxis(angle, glm::normalize(axis));
   return true;
 }

@@ -1,8 +1,8 @@
 #pragma once
-// Mouse and touch motion to camera motion, for the viewer and the web page: takes the camera at the start of a drag and
-// two cursor positions in window pixels (origin top-left), puts out the camera orbited about
-// its target (Shoemake's arcball: the cursor lies on a virtual sphere filling the window,
-// and the surface turns as if that sphere were dragged), a point (the point light) turned
+// Mouse and touch motion to camera motion, for the viewer and the web page: takes the camera at the
+// start of a drag and two cursor positions in window pixels (origin top-left), puts out the camera
+// orbited about its target (Shoemake's arcball: the cursor lies on a virtual sphere filling the
+// window, and the surface turns as if that sphere were dragged), a point (the point light) turned
 // about the target the same way, or the camera moved along its line of sight by wheel steps.
 // Pure math on doubles; degenerate input (zero-size window, eye on the target) is a no-op.
 #include "render/settings.hpp"

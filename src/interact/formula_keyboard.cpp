@@ -17,8 +17,8 @@ constexpr FormulaKeyRows kRows{{
     {"1", "2", "3", "0", ".", "b", "c", "e", N_("draw")},
 }};
 
-constexpr std::array<std::string_view, 8> kFunctions{"sin", "cos", "tan", "sqrt", "exp",
-                                                     "log", "abs", "atan"};
+constexpr std::array<std::string_view, 8> kFunctions{"sin", "cos", "tan", "sqrt",
+                                                     "exp", "log", "abs", "atan"};
 
 bool isFunction(std::string_view key) {
   return std::find(kFunctions.begin(), kFunctions.end(), key) != kFunctions.end();
@@ -35,7 +35,9 @@ std::pair<int, int> findFormulaKey(std::string_view label) {
   return {-1, -1};
 }
 
-const FormulaKeyRows& formulaKeyRows() { return kRows; }
+const FormulaKeyRows& formulaKeyRows() {
+  return kRows;
+}
 
 std::string pressFormulaKey(const std::string& text, std::string_view key) {
   if (key == "clear") return "";

@@ -11,7 +11,6 @@
 
 #include "i18n/translate.hpp"
 
-
 namespace zs::interact {
 namespace {
 
@@ -37,7 +36,8 @@ constexpr std::array<KeyBinding, 26> kBindings{{
     {GLFW_KEY_C, S, Action::WindowShot, "Shift+C", N_("screenshot of the window, panel included")},
     {GLFW_KEY_S, C, Action::SaveScene, "Ctrl+S", N_("save the current view as a .surf")},
     {GLFW_KEY_M, 0, Action::ExportMesh, "M", N_("export a mesh (.stl) at the panel's mesh level")},
-    {GLFW_KEY_P, C, Action::PrintPage, "Ctrl+P", N_("print: a PDF page with the picture, the typeset formula and the values")},
+    {GLFW_KEY_P, C, Action::PrintPage, "Ctrl+P",
+     N_("print: a PDF page with the picture, the typeset formula and the values")},
     {GLFW_KEY_F, 0, Action::FocusFormula, "F", N_("type a formula (focus the text box)")},
     {GLFW_KEY_H, 0, Action::TogglePanel, "H", N_("hide / show the panel")},
     {GLFW_KEY_G, 0, Action::ToggleGallery, "G", N_("gallery: search the examples, pick one")},
@@ -61,7 +61,9 @@ bool step(double& value, double delta, const char* what, std::string& message) {
 
 }  // namespace
 
-std::span<const KeyBinding> keyBindings() { return kBindings; }
+std::span<const KeyBinding> keyBindings() {
+  return kBindings;
+}
 
 const KeyBinding* findBinding(int key, int mods) {
   mods &= GLFW_MOD_SHIFT | GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER;

@@ -11,18 +11,35 @@
 namespace zs::interact {
 
 enum class Action {
-  NextExample, PrevExample,
-  DirLightUp, DirLightDown, PointLightUp, PointLightDown,
-  ToggleBorder, ToggleSilhouette,
-  EpsilonUp, EpsilonDown, LevelUp, LevelDown, IntervalsUp, IntervalsDown,
-  Screenshot, WindowShot, SaveScene, ExportMesh, PrintPage, FocusFormula, TogglePanel,
+  NextExample,
+  PrevExample,
+  DirLightUp,
+  DirLightDown,
+  PointLightUp,
+  PointLightDown,
+  ToggleBorder,
+  ToggleSilhouette,
+  EpsilonUp,
+  EpsilonDown,
+  LevelUp,
+  LevelDown,
+  IntervalsUp,
+  IntervalsDown,
+  Screenshot,
+  WindowShot,
+  SaveScene,
+  ExportMesh,
+  PrintPage,
+  FocusFormula,
+  TogglePanel,
   ToggleGallery,
-  ResetView, Quit,
+  ResetView,
+  Quit,
 };
 
 struct KeyBinding {
-  int key;     // GLFW_KEY_*
-  int mods;    // exact GLFW_MOD_SHIFT / GLFW_MOD_CONTROL bits required
+  int key;   // GLFW_KEY_*
+  int mods;  // exact GLFW_MOD_SHIFT / GLFW_MOD_CONTROL bits required
   Action action;
   const char* keyName;  // as shown to the user: "Shift+E"
   const char* description;

@@ -15,12 +15,16 @@ std::uint32_t bitsOf(float v) {
   return u;
 }
 
-std::uint32_t code(Op op) { return static_cast<std::uint32_t>(op); }
-std::uint32_t code(TapeCode c) { return static_cast<std::uint32_t>(c); }
+std::uint32_t code(Op op) {
+  return static_cast<std::uint32_t>(op);
+}
+std::uint32_t code(TapeCode c) {
+  return static_cast<std::uint32_t>(c);
+}
 
 // One instruction before registers are assigned: the values it defines and reads.
 struct Pending {
-  std::uint32_t x = 0;  // code and flag bits
+  std::uint32_t x = 0;               // code and flag bits
   std::int32_t def = -1, def2 = -1;  // def2: SinCos's second result
   std::int32_t useA = -1, useB = -1;
   std::uint32_t z = 0, w = 0;  // words that are not registers (when useB < 0 for z)
@@ -45,7 +49,8 @@ class Program {
         if (v >= 0) lastUse[std::size_t(v)] = i, used[std::size_t(v)] = true;
       }
     }
-    for (std::int32_t v : outputs) lastUse[std::size_t(v)] = code_.size(), used[std::size_t(v)] = true;
+    for (std::int32_t v : outputs)
+      lastUse[std::size_t(v)] = code_.size(), used[std::size_t(v)] = true;
     std::vector<std::int32_t> reg(valueCount, -1);
     std::vector<std::uint32_t> freeList;
     int next = 0;
@@ -74,8 +79,7 @@ class Program {
       if (!allocate(p.def)) return false;
       if (p.def2 >= 0 && !allocate(p.def2)) return false;
       std::uint32_t w = p.zIsDef2 ? std::uint32_t(reg[std::size_t(p.def2)]) : p.w;
-      texels.insert(texels.end(),
-                    {p.x | (std::uint32_t(reg[std::size_t(p.def)]) << 8), a, b, w});
+      texels.insert(texels.end(), {p.x | (std::uint32_t(reg[std::size_t(p.def)]) << 8), a, b, w});
       // A result nobody reads is free at once.
       for (std::int32_t v : {p.def, p.def2}) {
         if (v >= 0 && !used[std::size_t(v)]) {
@@ -112,13 +116,17 @@ bool emitPointProgram(const Graph& g, const std::vector<NodeId>& roots, NodeId f
     if (!inF.count(id)) p.x |= kTapeDerivativeBit;
     switch (n.op) {
       case Op::Const:
-        if (n.value != n.value) p.x |= kTapeUndefinedBit;
-        else p.w = bitsOf(static_cast<float>(n.value));
+        if (n.value != n.value)
+          p.x |= kTapeUndefinedBit;
+        else
+          p.w = bitsOf(static_cast<float>(n.value));
         break;
-      case Op::Param: case Op::PowI:
+      case Op::Param:
+      case Op::PowI:
         p.w = static_cast<std::uint32_t>(n.ival);
         break;
-      default: break;
+      default:
+        break;
     }
     if (opInfo(n.op).arity > 0) p.useA = n.a;
     if (n.b != kNoNode) p.useB = n.b;
@@ -158,9 +166,18 @@ bool emitAffineProgram(const AffineProgram& ap, std::vector<std::uint32_t>& texe
     p.def = std::int32_t(i);
     if (s.derivativeOnly) p.x |= kTapeDerivativeBit;
     switch (s.kind) {
-      case AffineStep::Kind::Coordinate: p.x |= code(TapeCode::Coordinate); p.w = std::uint32_t(s.ival); break;
-      case AffineStep::Kind::Direction: p.x |= code(TapeCode::Direction); p.w = std::uint32_t(s.ival); break;
-      case AffineStep::Kind::Param: p.x |= code(TapeCode::Param); p.w = std::uint32_t(s.ival); break;
+      case AffineStep::Kind::Coordinate:
+        p.x |= code(TapeCode::Coordinate);
+        p.w = std::uint32_t(s.ival);
+        break;
+      case AffineStep::Kind::Direction:
+        p.x |= code(TapeCode::Direction);
+        p.w = std::uint32_t(s.ival);
+        break;
+      case AffineStep::Kind::Param:
+        p.x |= code(TapeCode::Param);
+        p.w = std::uint32_t(s.ival);
+        break;
       case AffineStep::Kind::Constant:
         p.x |= code(TapeCode::Constant);
         if (s.nan) p.x |= kTapeUndefinedBit;
@@ -173,10 +190,21 @@ bool emitAffineProgram(const AffineProgram& ap, std::vector<std::uint32_t>& texe
         p.useB = s.b;
         p.w = std::uint32_t(s.ival);
         break;
-      case AffineStep::Kind::Scale: p.x |= code(TapeCode::Scale); p.useA = s.a; p.w = bitsOf(s.lo); break;
+      case AffineStep::Kind::Scale:
+        p.x |= code(TapeCode::Scale);
+        p.useA = s.a;
+        p.w = bitsOf(s.lo);
+        break;
       case AffineStep::Kind::ScaleDirection:
-        p.x |= code(TapeCode::ScaleDirection); p.useA = s.a; p.w = std::uint32_t(s.ival); break;
-      case AffineStep::Kind::MulK: p.x |= code(TapeCode::MulK); p.useA = s.a; p.useB = s.b; break;
+        p.x |= code(TapeCode::ScaleDirection);
+        p.useA = s.a;
+        p.w = std::uint32_t(s.ival);
+        break;
+      case AffineStep::Kind::MulK:
+        p.x |= code(TapeCode::MulK);
+        p.useA = s.a;
+        p.useB = s.b;
+        break;
       case AffineStep::Kind::SinCos:
         // Registers: the destination holds sin, the second (w) cos, whichever came first.
         p.x |= code(TapeCode::SinCos);
@@ -185,8 +213,13 @@ bool emitAffineProgram(const AffineProgram& ap, std::vector<std::uint32_t>& texe
         p.def2 = s.op == Op::Sin ? std::int32_t(i + 1) : std::int32_t(i);
         p.zIsDef2 = true;
         break;
-      case AffineStep::Kind::Settle: p.x |= code(TapeCode::Settle); p.useA = s.a; p.w = std::uint32_t(s.ival); break;
-      case AffineStep::Kind::Partner: break;
+      case AffineStep::Kind::Settle:
+        p.x |= code(TapeCode::Settle);
+        p.useA = s.a;
+        p.w = std::uint32_t(s.ival);
+        break;
+      case AffineStep::Kind::Partner:
+        break;
     }
     program.add(p);
     ++count;
@@ -199,8 +232,16 @@ bool emitAffineProgram(const AffineProgram& ap, std::vector<std::uint32_t>& texe
 
 bool isPolynomialOp(Op op) {
   switch (op) {
-    case Op::Const: case Op::VarX: case Op::VarY: case Op::VarZ: case Op::Param: case Op::Neg:
-    case Op::Add: case Op::Sub: case Op::Mul: case Op::PowI:
+    case Op::Const:
+    case Op::VarX:
+    case Op::VarY:
+    case Op::VarZ:
+    case Op::Param:
+    case Op::Neg:
+    case Op::Add:
+    case Op::Sub:
+    case Op::Mul:
+    case Op::PowI:
       return true;
     default:
       return false;
@@ -210,8 +251,7 @@ bool isPolynomialOp(Op op) {
 std::variant<GpuTape, std::string> encodeGpuTape(const Graph& g, NodeId f,
                                                  const std::array<NodeId, 3>& grad) {
   if (g.params().size() > std::size_t(kTapeMaxParams))
-    return "the tape interpreter takes at most " + std::to_string(kTapeMaxParams) +
-           " parameters";
+    return "the tape interpreter takes at most " + std::to_string(kTapeMaxParams) + " parameters";
   GpuTape tape;
   std::vector<std::uint32_t>& t = tape.texels;
   t.assign(kTapeHeaderTexels * 4, 0);
@@ -238,10 +278,10 @@ std::variant<GpuTape, std::string> encodeGpuTape(const Graph& g, NodeId f,
     return "the formula has more than " + std::to_string(kTapeMaxInstructions) +
            " operations, more than the tape interpreter runs";
   const std::uint32_t header[kTapeHeaderTexels * 4] = {
-      fBegin, gradBegin, gradBegin, affineBegin,
-      affineBegin, split, end, 0,
-      gradOut[0], gradOut[1], gradOut[2], gradOut[3],
-      fOut[0], affineOut[0], affineOut[1], std::uint32_t(g.params().size())};
+      fBegin,      gradBegin,    gradBegin,    affineBegin,
+      affineBegin, split,        end,          0,
+      gradOut[0],  gradOut[1],   gradOut[2],   gradOut[3],
+      fOut[0],     affineOut[0], affineOut[1], std::uint32_t(g.params().size())};
   std::copy(std::begin(header), std::end(header), t.begin());
   return tape;
 }

@@ -20,13 +20,21 @@
 
 namespace zs {
 
-inline constexpr int kTapeRegisters = 128;     // per register file (a power of two)
-inline constexpr int kTapeMaxParams = 32;      // the interpreter's zs_params[] length
+inline constexpr int kTapeRegisters = 128;  // per register file (a power of two)
+inline constexpr int kTapeMaxParams = 32;   // the interpreter's zs_params[] length
 inline constexpr int kTapeMaxInstructions = 4000;
 // Texel codes beyond the opcode table (its values are the codes of the operations
 // themselves): the affine program's leaves and its rules that are not one opcode's.
 enum class TapeCode : std::uint8_t {
-  Coordinate = 64, Constant, Param, Direction, Scale, ScaleDirection, MulK, SinCos, Settle,
+  Coordinate = 64,
+  Constant,
+  Param,
+  Direction,
+  Scale,
+  ScaleDirection,
+  MulK,
+  SinCos,
+  Settle,
 };
 // Bits of a texel's x beside the code (bits 0-7) and destination register (bits 8-19).
 inline constexpr std::uint32_t kTapeUndefinedBit = 1u << 30;   // a NaN constant
@@ -43,7 +51,7 @@ bool isPolynomialOp(Op op);
 
 struct GpuTape {
   std::vector<std::uint32_t> texels;  // 4 words per texel
-  bool polynomialOnly = true;  // every operation isPolynomialOp (interpreter_glsl.hpp)
+  bool polynomialOnly = true;         // every operation isPolynomialOp (interpreter_glsl.hpp)
   int pointRegisters = 0, affineRegisters = 0;  // the most live at once
   int instructions() const { return int(texels.size() / 4) - kTapeHeaderTexels; }
 };

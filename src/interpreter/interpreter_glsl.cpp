@@ -15,7 +15,9 @@ std::string constant(const char* name, long long value, const char* type = "int"
          (std::string(type) == "uint" ? "u" : "") + ";\n";
 }
 
-bool isLeaf(Op op) { return opInfo(op).arity == 0; }
+bool isLeaf(Op op) {
+  return opInfo(op).arity == 0;
+}
 
 // The layout of gpu_tape.hpp as GLSL constants: one definition of each code and bit.
 std::string tapeConstants() {
@@ -25,10 +27,14 @@ std::string tapeConstants() {
   s += constant("ZS_TAPE_UNDEFINED_BIT", kTapeUndefinedBit, "uint");
   s += constant("ZS_TAPE_DERIVATIVE_BIT", kTapeDerivativeBit, "uint");
   const std::pair<const char*, TapeCode> codes[] = {
-      {"ZS_TAPE_COORDINATE", TapeCode::Coordinate}, {"ZS_TAPE_CONSTANT", TapeCode::Constant},
-      {"ZS_TAPE_PARAM", TapeCode::Param}, {"ZS_TAPE_DIRECTION", TapeCode::Direction},
-      {"ZS_TAPE_SCALE", TapeCode::Scale}, {"ZS_TAPE_SCALE_DIRECTION", TapeCode::ScaleDirection},
-      {"ZS_TAPE_MULK", TapeCode::MulK}, {"ZS_TAPE_SINCOS", TapeCode::SinCos},
+      {"ZS_TAPE_COORDINATE", TapeCode::Coordinate},
+      {"ZS_TAPE_CONSTANT", TapeCode::Constant},
+      {"ZS_TAPE_PARAM", TapeCode::Param},
+      {"ZS_TAPE_DIRECTION", TapeCode::Direction},
+      {"ZS_TAPE_SCALE", TapeCode::Scale},
+      {"ZS_TAPE_SCALE_DIRECTION", TapeCode::ScaleDirection},
+      {"ZS_TAPE_MULK", TapeCode::MulK},
+      {"ZS_TAPE_SINCOS", TapeCode::SinCos},
       {"ZS_TAPE_SETTLE", TapeCode::Settle}};
   for (const auto& [name, code] : codes) s += constant(name, static_cast<int>(code));
   return s;
@@ -57,13 +63,20 @@ std::string pointDispatch(bool polynomialOnly) {
         if ((polynomialOnly && !isPolynomialOp(op)) || opInfo(op).kind == OpKind::Internal)
           return {};  // internal operations never reach a tape (gpu_tape.cpp)
         switch (op) {
-          case Op::Const: return "uintBitsToFloat(w)";
-          case Op::VarX: return "p.x";
-          case Op::VarY: return "p.y";
-          case Op::VarZ: return "p.z";
-          case Op::Param: return "zs_params[int(w) & " + std::to_string(kTapeMaxParams - 1) + "]";
-          case Op::PowI: return "zs_tapePowi(a, int(w), flag)";
-          default: return glslOpExpression(op, "a", "b", "flag");
+          case Op::Const:
+            return "uintBitsToFloat(w)";
+          case Op::VarX:
+            return "p.x";
+          case Op::VarY:
+            return "p.y";
+          case Op::VarZ:
+            return "p.z";
+          case Op::Param:
+            return "zs_params[int(w) & " + std::to_string(kTapeMaxParams - 1) + "]";
+          case Op::PowI:
+            return "zs_tapePowi(a, int(w), flag)";
+          default:
+            return glslOpExpression(op, "a", "b", "flag");
         }
       });
 }
@@ -112,13 +125,15 @@ const char* kPowi = R"(float zs_tapePowi(float base, int k, inout bool flag) {
 std::string interpreterFragmentShader(bool sampling, bool polynomialOnly, ShaderDialect dialect) {
   GlslFormula formula;
   formula.paramCount = kTapeMaxParams;
-  formula.source = "// zeroset tape interpreter block (src/interpreter): any formula, from its tape.\n";
+  formula.source =
+      "// zeroset tape interpreter block (src/interpreter): any formula, from its tape.\n";
   formula.source += "uniform float zs_params[" + std::to_string(kTapeMaxParams) + "];\n";
   formula.source += tapeConstants() + kPowi + pointDispatch(polynomialOnly);
   if (!polynomialOnly) formula.source += "#define ZS_TAPE_EVERY_OPERATION\n";
   formula.source += shaderTemplate(kTapePointTemplate);
   if (sampling) return assembleFragmentShader(formula, {}, dialect);
-  IntervalGlsl interval{affineDispatch(polynomialOnly) + std::string(shaderTemplate(kTapeAffineTemplate))};
+  IntervalGlsl interval{affineDispatch(polynomialOnly) +
+                        std::string(shaderTemplate(kTapeAffineTemplate))};
   return assembleFragmentShader(formula, interval, {}, dialect);
 }
 

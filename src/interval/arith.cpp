@@ -25,7 +25,9 @@ Interval intersect(Interval a, Interval b) {
 namespace {
 
 // A NaN endpoint only comes from inf - inf: the sum is then unbounded both ways.
-Interval finite(Interval r) { return (std::isnan(r.lo) || std::isnan(r.hi)) ? Interval::whole() : r; }
+Interval finite(Interval r) {
+  return (std::isnan(r.lo) || std::isnan(r.hi)) ? Interval::whole() : r;
+}
 
 // x^n for x >= 0, n >= 1, by binary powering with every product rounded the same way, so
 // powUp(x, n) >= the exact x^n and powDown(x, n) <= it.
@@ -53,11 +55,17 @@ double powDirected(double x, unsigned n) {
 
 namespace ia {
 
-Interval neg(Interval a) { return {-a.hi, -a.lo}; }
+Interval neg(Interval a) {
+  return {-a.hi, -a.lo};
+}
 
-Interval add(Interval a, Interval b) { return finite({down(a.lo + b.lo), up(a.hi + b.hi)}); }
+Interval add(Interval a, Interval b) {
+  return finite({down(a.lo + b.lo), up(a.hi + b.hi)});
+}
 
-Interval sub(Interval a, Interval b) { return finite({down(a.lo - b.hi), up(a.hi - b.lo)}); }
+Interval sub(Interval a, Interval b) {
+  return finite({down(a.lo - b.hi), up(a.hi - b.lo)});
+}
 
 Interval mul(Interval a, Interval b) {
   // A corner 0 * inf is the limit of products whose value is 0 at every finite point.
@@ -93,8 +101,12 @@ Interval powi(Interval a, int n) {
     const double magHi = std::max(std::fabs(a.lo), std::fabs(a.hi));
     p = {powDirected<false>(magLo, m), powDirected<true>(magHi, m)};
   } else {
-    auto lower = [m](double x) { return x >= 0 ? powDirected<false>(x, m) : -powDirected<true>(-x, m); };
-    auto upper = [m](double x) { return x >= 0 ? powDirected<true>(x, m) : -powDirected<false>(-x, m); };
+    auto lower = [m](double x) {
+      return x >= 0 ? powDirected<false>(x, m) : -powDirected<true>(-x, m);
+    };
+    auto upper = [m](double x) {
+      return x >= 0 ? powDirected<true>(x, m) : -powDirected<false>(-x, m);
+    };
     p = {lower(a.lo), upper(a.hi)};
   }
   if (n > 0) return p;
@@ -116,11 +128,19 @@ Interval sign(Interval a) {
   auto s = [](double v) { return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0); };
   return {s(a.lo), s(a.hi)};
 }
-Interval floor(Interval a) { return {std::floor(a.lo), std::floor(a.hi)}; }
-Interval ceil(Interval a) { return {std::ceil(a.lo), std::ceil(a.hi)}; }
+Interval floor(Interval a) {
+  return {std::floor(a.lo), std::floor(a.hi)};
+}
+Interval ceil(Interval a) {
+  return {std::ceil(a.lo), std::ceil(a.hi)};
+}
 
-Interval min(Interval a, Interval b) { return {std::min(a.lo, b.lo), std::min(a.hi, b.hi)}; }
-Interval max(Interval a, Interval b) { return {std::max(a.lo, b.lo), std::max(a.hi, b.hi)}; }
+Interval min(Interval a, Interval b) {
+  return {std::min(a.lo, b.lo), std::min(a.hi, b.hi)};
+}
+Interval max(Interval a, Interval b) {
+  return {std::max(a.lo, b.lo), std::max(a.hi, b.hi)};
+}
 
 }  // namespace ia
 }  // namespace zs

@@ -52,9 +52,14 @@ Interval sqrt(Interval a) {
   return {std::max(0.0, down(std::sqrt(d.lo))), up(std::sqrt(d.hi))};
 }
 
-Interval cbrt(Interval a) { return increasing(a, [](double v) { return std::cbrt(v); }); }
+Interval cbrt(Interval a) {
+  return increasing(a, [](double v) { return std::cbrt(v); });
+}
 
-Interval exp(Interval a) { return increasing(a, [](double v) { return std::exp(v); }, 0.0); }
+Interval exp(Interval a) {
+  return increasing(
+      a, [](double v) { return std::exp(v); }, 0.0);
+}
 
 Interval log(Interval a) {
   const Interval d = intersect(a, {0.0, kInf});
@@ -62,19 +67,25 @@ Interval log(Interval a) {
   return increasing(d, [](double v) { return std::log(v); });  // log(0) = -inf
 }
 
-Interval sinh(Interval a) { return increasing(a, [](double v) { return std::sinh(v); }); }
+Interval sinh(Interval a) {
+  return increasing(a, [](double v) { return std::sinh(v); });
+}
 
 Interval cosh(Interval a) {
   const Interval m = abs(a);
   return {std::max(1.0, libmDown(std::cosh(m.lo))), libmUp(std::cosh(m.hi))};
 }
 
-Interval tanh(Interval a) { return increasing(a, [](double v) { return std::tanh(v); }, -1.0, 1.0); }
+Interval tanh(Interval a) {
+  return increasing(
+      a, [](double v) { return std::tanh(v); }, -1.0, 1.0);
+}
 
 Interval asin(Interval a) {
   const Interval d = intersect(a, {-1.0, 1.0});
   if (d.isEmpty()) return d;
-  return increasing(d, [](double v) { return std::asin(v); }, -kHalfPiUp, kHalfPiUp);
+  return increasing(
+      d, [](double v) { return std::asin(v); }, -kHalfPiUp, kHalfPiUp);
 }
 
 Interval acos(Interval a) {
@@ -84,7 +95,8 @@ Interval acos(Interval a) {
 }
 
 Interval atan(Interval a) {
-  return increasing(a, [](double v) { return std::atan(v); }, -kHalfPiUp, kHalfPiUp);
+  return increasing(
+      a, [](double v) { return std::atan(v); }, -kHalfPiUp, kHalfPiUp);
 }
 
 Interval atan2(Interval y, Interval x) {

@@ -18,7 +18,9 @@ struct Tmp {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-Box emptyBox() { return {{kInf, kInf, kInf}, {-kInf, -kInf, -kInf}}; }
+Box emptyBox() {
+  return {{kInf, kInf, kInf}, {-kInf, -kInf, -kInf}};
+}
 
 void grow(Box& into, const Box& b) {
   for (std::size_t i = 0; i < 3; ++i) {
@@ -52,7 +54,8 @@ std::vector<Tmp> rebuildTree(const Octree& tree, const Box* clip) {
     while (!path.empty() && !isAncestor(path.back(), leaf)) path.pop_back();
     for (int level = path.empty() ? 0 : path.back().level + 1; level < leaf.level; ++level) {
       const int shift = leaf.level - level;
-      PathEntry e{level, {leaf.cell[0] >> shift, leaf.cell[1] >> shift, leaf.cell[2] >> shift},
+      PathEntry e{level,
+                  {leaf.cell[0] >> shift, leaf.cell[1] >> shift, leaf.cell[2] >> shift},
                   std::int32_t(nodes.size())};
       nodes.push_back({emptyBox(), path.empty() ? -1 : path.back().index, 0, false});
       path.push_back(e);

@@ -35,7 +35,9 @@ struct Interval {
   constexpr bool isPoint() const { return lo == hi; }
 };
 
-constexpr bool operator==(Interval a, Interval b) { return a.lo == b.lo && a.hi == b.hi; }
+constexpr bool operator==(Interval a, Interval b) {
+  return a.lo == b.lo && a.hi == b.hi;
+}
 
 // Smallest interval holding both (the empty interval is the identity).
 Interval hull(Interval a, Interval b);

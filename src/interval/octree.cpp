@@ -19,7 +19,7 @@ namespace zs {
 
 namespace {
 
-constexpr int kSplitLevel = 2;           // 64 tasks: enough to keep 2..16 cores busy
+constexpr int kSplitLevel = 2;              // 64 tasks: enough to keep 2..16 cores busy
 constexpr std::size_t kBudgetBatch = 1024;  // tested boxes counted locally before sharing
 
 struct Cell {
@@ -62,7 +62,8 @@ class Walker {
       eval_.evalRest(s_.params, out);
       // An undefined gradient component proves nothing, so it does not stop subdivision.
       for (int k = 1; k < 4; ++k)
-        if (!out[std::size_t(k)].isEmpty() && !out[std::size_t(k)].containsZero()) d = Decision::Leaf;
+        if (!out[std::size_t(k)].isEmpty() && !out[std::size_t(k)].containsZero())
+          d = Decision::Leaf;
     }
     if (d == Decision::Leaf) ++st.leaves;
     return d;
@@ -82,12 +83,14 @@ class Walker {
         continue;
       }
       const Decision d = decide(cell);
-      if (d == Decision::Leaf) leaves.push_back({cellBox(s_.domain, cell.c, cell.level), cell.level, cell.c});
+      if (d == Decision::Leaf)
+        leaves.push_back({cellBox(s_.domain, cell.c, cell.level), cell.level, cell.c});
       if (d != Decision::Subdivide) continue;
       for (int child = 7; child >= 0; --child) {  // reversed, so child 0 is walked first
         Cell ch{cell.level + 1, {}};
         for (int axis = 0; axis < 3; ++axis)
-          ch.c[std::size_t(axis)] = 2 * cell.c[std::size_t(axis)] + std::uint32_t((child >> axis) & 1);
+          ch.c[std::size_t(axis)] =
+              2 * cell.c[std::size_t(axis)] + std::uint32_t((child >> axis) & 1);
         stack.push_back(ch);
       }
     }
@@ -228,7 +231,8 @@ OctreeResult buildOctree(const Formula& formula, std::span<const double> params,
       std::vector<OctreeLeaf>().swap(sub);  // release as we go: the leaves can be large
     }
   }
-  tree.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  tree.buildSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return tree;
 }
 

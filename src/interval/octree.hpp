@@ -34,9 +34,9 @@ struct OctreeLeaf {
 };
 
 struct LevelStats {
-  std::size_t tested = 0;      // boxes evaluated at this level
-  std::size_t kept = 0;        // of those, boxes where 0 may be in F
-  std::size_t leaves = 0;      // of the kept, boxes not subdivided further
+  std::size_t tested = 0;  // boxes evaluated at this level
+  std::size_t kept = 0;    // of those, boxes where 0 may be in F
+  std::size_t leaves = 0;  // of the kept, boxes not subdivided further
 };
 
 // A clipping ball: boxes wholly outside it are discarded like boxes where 0 is not in F.
@@ -76,8 +76,7 @@ Box cellBox(const Box& domain, const std::array<std::uint32_t, 3>& cell, int lev
 // settings.nodeBudget boxes, gives an OctreeError with a message for the user.
 // With `ball`, the domain is that ball and `domain` should be its bounding box: boxes wholly
 // outside the ball are discarded before F is evaluated on them.
-OctreeResult buildOctree(const Formula& formula, std::span<const double> params,
-                         const Box& domain, const OctreeSettings& settings,
-                         std::optional<Ball> ball = std::nullopt);
+OctreeResult buildOctree(const Formula& formula, std::span<const double> params, const Box& domain,
+                         const OctreeSettings& settings, std::optional<Ball> ball = std::nullopt);
 
 }  // namespace zs

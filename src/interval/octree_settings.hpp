@@ -11,7 +11,7 @@ struct OctreeSettings {
   int level = 1;  // maximum subdivision level; the domain box is level 0
   Criteria criteria = Criteria::Thesis;
   std::size_t nodeBudget = 20'000'000;  // stop with an error instead of exhausting memory
-  unsigned threads = 0;                   // worker threads for the octree; 0 = every core
+  unsigned threads = 0;                 // worker threads for the octree; 0 = every core
 
   bool operator==(const OctreeSettings&) const = default;
 };

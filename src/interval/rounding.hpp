@@ -6,10 +6,11 @@
 // every double-precision result at points of the operands. glibc's elementary functions
 // are not correctly rounded (its documented errors for double are at most a few ulps), so
 // their endpoints move kLibmUlps outward.
-#include "expr/bit_cast.hpp"
 #include <cmath>
 #include <cstdint>
 #include <limits>
+
+#include "expr/bit_cast.hpp"
 
 namespace zs::detail {
 
@@ -24,7 +25,9 @@ inline double up(double v) {
   const auto bits = bitCast<std::uint64_t>(v);
   return bitCast<double>(v > 0 ? bits + 1 : bits - 1);
 }
-inline double down(double v) { return -up(-v); }
+inline double down(double v) {
+  return -up(-v);
+}
 
 inline double down(double v, int ulps) {
   for (int i = 0; i < ulps; ++i) v = down(v);

@@ -22,7 +22,7 @@
 namespace zs {
 
 struct SurfaceBoundsSettings {
-  int level = 6;                    // the grid: 2^level cells per axis of the domain
+  int level = 6;  // the grid: 2^level cells per axis of the domain
   // Interval evaluations per face, then the bound so far; fewer for a formula whose tape
   // is longer than 256 instructions (2^20 instructions per face at most).
   std::size_t faceBudget = 4096;

@@ -4,8 +4,7 @@
 
 namespace zs {
 
-IntervalEvaluator::IntervalEvaluator(const Tape& tape)
-    : tape_(tape), slots_(tape.code.size()) {
+IntervalEvaluator::IntervalEvaluator(const Tape& tape) : tape_(tape), slots_(tape.code.size()) {
   firstEnd_ = tape.outputs.empty() ? 0 : static_cast<std::size_t>(tape.outputs.front()) + 1;
 }
 
@@ -15,14 +14,23 @@ void IntervalEvaluator::run(std::size_t begin, std::size_t end, std::span<const 
     const Instr& in = tape_.code[i];
     Interval a{}, b{};
     switch (opInfo(in.op).arity) {
-      case 2: b = slots_[static_cast<std::size_t>(in.b)]; [[fallthrough]];
-      case 1: a = slots_[static_cast<std::size_t>(in.a)]; break;
-      default: break;
+      case 2:
+        b = slots_[static_cast<std::size_t>(in.b)];
+        [[fallthrough]];
+      case 1:
+        a = slots_[static_cast<std::size_t>(in.a)];
+        break;
+      default:
+        break;
     }
-    if (in.op == Op::VarX) a = {box_.min[0], box_.max[0]};
-    else if (in.op == Op::VarY) a = {box_.min[1], box_.max[1]};
-    else if (in.op == Op::VarZ) a = {box_.min[2], box_.max[2]};
-    else if (in.op == Op::Param) a = Interval::point(params[static_cast<std::size_t>(in.ival)]);
+    if (in.op == Op::VarX)
+      a = {box_.min[0], box_.max[0]};
+    else if (in.op == Op::VarY)
+      a = {box_.min[1], box_.max[1]};
+    else if (in.op == Op::VarZ)
+      a = {box_.min[2], box_.max[2]};
+    else if (in.op == Op::Param)
+      a = Interval::point(params[static_cast<std::size_t>(in.ival)]);
     slots_[i] = applyInterval(in.op, a, b, in.ival, in.value);
   }
 }
@@ -40,7 +48,8 @@ void IntervalEvaluator::evalRest(std::span<const double> params, std::span<Inter
     out[k] = slots_[static_cast<std::size_t>(tape_.outputs[k])];
 }
 
-void IntervalEvaluator::eval(const Box& box, std::span<const double> params, std::span<Interval> out) {
+void IntervalEvaluator::eval(const Box& box, std::span<const double> params,
+                             std::span<Interval> out) {
   evalFirst(box, params);
   evalRest(params, out);
 }

@@ -37,11 +37,13 @@ Interval periodic(Interval a, F f, double maxPhase, double minPhase) {
 }  // namespace
 
 Interval sin(Interval a) {
-  return periodic(a, [](double v) { return std::sin(v); }, kPi / 2, -kPi / 2);
+  return periodic(
+      a, [](double v) { return std::sin(v); }, kPi / 2, -kPi / 2);
 }
 
 Interval cos(Interval a) {
-  return periodic(a, [](double v) { return std::cos(v); }, 0.0, kPi);
+  return periodic(
+      a, [](double v) { return std::cos(v); }, 0.0, kPi);
 }
 
 Interval tan(Interval a) {

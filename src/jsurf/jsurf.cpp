@@ -93,8 +93,7 @@ SurferFormula surferFormula(const std::string& formula, std::vector<std::string>
 
 std::variant<Exported, std::string> exportJsurf(const Scene& scene) {
   if (surfaceCount(scene) > 1) {
-    return "error: cannot export to SURFER: this scene has " +
-           std::to_string(surfaceCount(scene)) +
+    return "error: cannot export to SURFER: this scene has " + std::to_string(surfaceCount(scene)) +
            " surfaces, and a SURFER scene draws one\n"
            "hint: export one surface at a time (keep one [[surface]]), or draw their union as "
            "one formula, the product F*G\n";

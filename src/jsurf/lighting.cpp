@@ -5,10 +5,10 @@
 // and stay there (lights.space = "camera"): they turn with the view, as in SURFER.
 #include "jsurf/lighting.hpp"
 
-#include "render/camera.hpp"
-
 #include <algorithm>
 #include <cmath>
+
+#include "render/camera.hpp"
 
 namespace zs::jsurf {
 namespace {

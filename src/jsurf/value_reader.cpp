@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+
 #include "expr/number_text.hpp"
 
 namespace zs::jsurf {

@@ -2,8 +2,8 @@
 
 #include <charconv>
 
-#include "jsurf/properties.hpp"
 #include "expr/number_text.hpp"
+#include "jsurf/properties.hpp"
 
 namespace zs::jsurf {
 namespace {

@@ -11,8 +11,12 @@ namespace zs::mesh {
 
 namespace {
 
-double dot(const P3& a, const P3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-P3 minus(const P3& a, const P3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+double dot(const P3& a, const P3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+P3 minus(const P3& a, const P3& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
 
 // The point where the segment from p (inside) to q (outside) meets the sphere.
 P3 segmentOnSphere(const P3& p, const P3& q, const Ball& ball) {
@@ -29,7 +33,8 @@ P3 ontoSurfaceAndSphere(const P3& start, const Ball& ball, double cellSize, Fiel
   P3 x = start;
   for (int it = 0; it < 12; ++it) {
     const std::array<double, 4> fg = ev.fAndGradient(x);
-    const P3 g1{fg[1], fg[2], fg[3]}, rel = minus(x, ball.center), g2{2 * rel[0], 2 * rel[1], 2 * rel[2]};
+    const P3 g1{fg[1], fg[2], fg[3]}, rel = minus(x, ball.center),
+                                      g2{2 * rel[0], 2 * rel[1], 2 * rel[2]};
     const double r1 = fg[0], r2 = dot(rel, rel) - ball.radius * ball.radius;
     const double a = dot(g1, g1), b = dot(g1, g2), c = dot(g2, g2), det = a * c - b * b;
     if (!std::isfinite(det) || det <= 1e-14 * a * c) return start;
@@ -62,9 +67,10 @@ void clipBall(const Ball& ball, double cellSize, FieldEvaluator& ev, Mesh& mesh)
       const std::array<double, 4> fg = ev.fAndGradient(p);
       const double len = std::sqrt(fg[1] * fg[1] + fg[2] * fg[2] + fg[3] * fg[3]);
       mesh.positions.push_back(p);
-      mesh.normals.push_back(len > 0 && std::isfinite(len)
-                                 ? std::array<float, 3>{float(fg[1] / len), float(fg[2] / len), float(fg[3] / len)}
-                                 : mesh.normals[in]);
+      mesh.normals.push_back(
+          len > 0 && std::isfinite(len)
+              ? std::array<float, 3>{float(fg[1] / len), float(fg[2] / len), float(fg[3] / len)}
+              : mesh.normals[in]);
       mesh.kinds.push_back(VertexKind::Surface);
     }
     return v;
@@ -82,7 +88,8 @@ void clipBall(const Ball& ball, double cellSize, FieldEvaluator& ev, Mesh& mesh)
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t a = t[std::size_t(k)], b = t[std::size_t((k + 1) % 3)];
       if (inside[a]) poly[std::size_t(n++)] = a;
-      if (inside[a] != inside[b]) poly[std::size_t(n++)] = inside[a] ? cutVertex(a, b) : cutVertex(b, a);
+      if (inside[a] != inside[b])
+        poly[std::size_t(n++)] = inside[a] ? cutVertex(a, b) : cutVertex(b, a);
     }
     kept.push_back({poly[0], poly[1], poly[2]});
     if (n == 4) kept.push_back({poly[0], poly[2], poly[3]});

@@ -60,8 +60,8 @@ BoxFaces::BoxFaces(const Grid& grid, FieldEvaluator& evaluator)
 
 bool BoxFaces::negative(int face, std::uint64_t key) const {
   const Face f = faces()[std::size_t(face)];
-  return values_[std::size_t(face) * (n_ + 1) * (n_ + 1) + std::size_t(keyAxis(key, f.v)) * (n_ + 1) +
-                 keyAxis(key, f.u)] < 0;
+  return values_[std::size_t(face) * (n_ + 1) * (n_ + 1) +
+                 std::size_t(keyAxis(key, f.v)) * (n_ + 1) + keyAxis(key, f.u)] < 0;
 }
 
 std::vector<std::uint64_t> BoxFaces::bricksBesideCrossedSquares() const {
@@ -94,7 +94,8 @@ void capBox(const Grid& grid, const BoxFaces& boxFaces, const Marched& marched, 
     outward[std::size_t(f.axis)] = f.side ? 1.0f : -1.0f;
     auto corner = [&](std::uint64_t key) {
       bool inserted;
-      const std::uint32_t v = cornerVertex.insert(key, std::uint32_t(mesh.positions.size()), inserted);
+      const std::uint32_t v =
+          cornerVertex.insert(key, std::uint32_t(mesh.positions.size()), inserted);
       if (inserted) {
         mesh.positions.push_back(grid.position(key));
         mesh.normals.push_back(outward);
@@ -117,8 +118,10 @@ void capBox(const Grid& grid, const BoxFaces& boxFaces, const Marched& marched, 
           if (count < 3) continue;
           // Side 0 faces look along -e_axis: reverse the counter-clockwise order.
           auto emit = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-            if (f.side) mesh.triangles.push_back({a, b, c});
-            else mesh.triangles.push_back({a, c, b});
+            if (f.side)
+              mesh.triangles.push_back({a, b, c});
+            else
+              mesh.triangles.push_back({a, c, b});
           };
           emit(poly[0], poly[1], poly[2]);
           if (count == 4) emit(poly[0], poly[2], poly[3]);

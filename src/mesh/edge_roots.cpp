@@ -48,7 +48,8 @@ bool update(Bracket& k, double v) {
 }
 
 P3 along(const FieldEvaluator::Edge& e, double t) {
-  return {e.a[0] + (e.b[0] - e.a[0]) * t, e.a[1] + (e.b[1] - e.a[1]) * t, e.a[2] + (e.b[2] - e.a[2]) * t};
+  return {e.a[0] + (e.b[0] - e.a[0]) * t, e.a[1] + (e.b[1] - e.a[1]) * t,
+          e.a[2] + (e.b[2] - e.a[2]) * t};
 }
 
 constexpr int kMaxSteps = 100;

@@ -7,8 +7,11 @@ namespace zs::mesh {
 
 FieldEvaluator::FieldEvaluator(const Tape& value, const Tape& withGradient,
                                std::span<const double> params, std::optional<Ball> capBall)
-    : gradient_(withGradient), batch_(value), batchGradient_(withGradient),
-      params_(params.begin(), params.end()), capBall_(capBall) {}
+    : gradient_(withGradient),
+      batch_(value),
+      batchGradient_(withGradient),
+      params_(params.begin(), params.end()),
+      capBall_(capBall) {}
 
 double FieldEvaluator::ballDistance(const P3& p) const {
   const double dx = p[0] - capBall_->center[0], dy = p[1] - capBall_->center[1],

@@ -30,7 +30,7 @@ class FieldEvaluator {
 
   struct Root {
     P3 position{};
-    P3 gradient{};     // of the piece that vanishes there (F, or the ball's distance)
+    P3 gradient{};        // of the piece that vanishes there (F, or the ball's distance)
     double residual = 0;  // |F| / |grad F| there; 0 on the ball's sphere
     bool onBall = false;  // the ball's sphere, not F, vanishes here (the cap)
     bool pole = false;    // F changes sign here without vanishing (VertexKind::Pole)

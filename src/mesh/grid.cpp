@@ -18,22 +18,26 @@ std::uint64_t Grid::brickOrigin(std::uint64_t brick) const {
                  std::uint64_t(keyAxis(brick, 2)) * b_);
 }
 
-void Grid::evaluateBrick(std::uint64_t brick, FieldEvaluator& evaluator, std::span<double> values) const {
+void Grid::evaluateBrick(std::uint64_t brick, FieldEvaluator& evaluator,
+                         std::span<double> values) const {
   constexpr std::size_t kMaxCorners = 5;
   const std::uint32_t m = b_ + 1;
   const std::uint64_t origin = brickOrigin(brick);
   double axis[3][kMaxCorners];
   for (int a = 0; a < 3; ++a)
-    for (std::uint32_t k = 0; k < m; ++k) axis[a][k] = cellCoordinate(box_, a, keyAxis(origin, a) + k, level_);
+    for (std::uint32_t k = 0; k < m; ++k)
+      axis[a][k] = cellCoordinate(box_, a, keyAxis(origin, a) + k, level_);
   double xs[kMaxCorners * kMaxCorners * kMaxCorners], ys[std::size(xs)], zs[std::size(xs)];
   std::size_t at = 0;
   for (std::uint32_t z = 0; z < m; ++z)
     for (std::uint32_t y = 0; y < m; ++y)
-      for (std::uint32_t x = 0; x < m; ++x, ++at) xs[at] = axis[0][x], ys[at] = axis[1][y], zs[at] = axis[2][z];
+      for (std::uint32_t x = 0; x < m; ++x, ++at)
+        xs[at] = axis[0][x], ys[at] = axis[1][y], zs[at] = axis[2][z];
   evaluator.values({xs, at}, {ys, at}, {zs, at}, values.first(at));
 }
 
-void Grid::crossedNeighbours(std::uint64_t brick, const double* values, std::vector<std::uint64_t>& out) const {
+void Grid::crossedNeighbours(std::uint64_t brick, const double* values,
+                             std::vector<std::uint64_t>& out) const {
   const std::uint32_t m = b_ + 1;
   const std::size_t stride[3] = {1, m, std::size_t(m) * m};
   for (int axis = 0; axis < 3; ++axis) {
@@ -45,7 +49,8 @@ void Grid::crossedNeighbours(std::uint64_t brick, const double* values, std::vec
       const bool first = face[0] < 0;
       bool mixed = false;
       for (std::uint32_t j = 0; j < m && !mixed; ++j)
-        for (std::uint32_t i = 0; i < m && !mixed; ++i) mixed = (face[i * stride[u] + j * stride[v]] < 0) != first;
+        for (std::uint32_t i = 0; i < m && !mixed; ++i)
+          mixed = (face[i * stride[u] + j * stride[v]] < 0) != first;
       if (!mixed) continue;
       const std::uint64_t step = std::uint64_t(1) << (kKeyBits * axis);
       out.push_back(side == 0 ? brick - step : brick + step);

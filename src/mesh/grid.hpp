@@ -30,7 +30,9 @@ inline std::uint64_t cornerOffset(int c) {
 }
 
 // The octree level whose boxes are the grid's bricks.
-inline int brickLevel(int gridLevel) { return gridLevel > 2 ? gridLevel - 2 : 0; }
+inline int brickLevel(int gridLevel) {
+  return gridLevel > 2 ? gridLevel - 2 : 0;
+}
 
 class Grid {
  public:
@@ -46,10 +48,12 @@ class Grid {
 
   // The field at the brick's corners, x fastest then y then z (brickCornerCount() values),
   // at the coordinates position() gives, so every user of a corner sees one value.
-  void evaluateBrick(std::uint64_t brick, FieldEvaluator& evaluator, std::span<double> values) const;
+  void evaluateBrick(std::uint64_t brick, FieldEvaluator& evaluator,
+                     std::span<double> values) const;
   // The bricks beside this one across the faces the zero set crosses (its corners there
   // are not all of one sign), inside the domain.
-  void crossedNeighbours(std::uint64_t brick, const double* values, std::vector<std::uint64_t>& out) const;
+  void crossedNeighbours(std::uint64_t brick, const double* values,
+                         std::vector<std::uint64_t>& out) const;
 
  private:
   Box box_;

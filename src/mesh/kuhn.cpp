@@ -9,13 +9,19 @@ namespace {
 
 using I3 = std::array<int, 3>;
 
-I3 corner(int c) { return {c & 1, (c >> 1) & 1, (c >> 2) & 1}; }
+I3 corner(int c) {
+  return {c & 1, (c >> 1) & 1, (c >> 2) & 1};
+}
 
-I3 sub(const I3& a, const I3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+I3 sub(const I3& a, const I3& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
 I3 cross(const I3& a, const I3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
-int dot(const I3& a, const I3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+int dot(const I3& a, const I3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 
 struct Tables {
   std::array<CellEdge, kCellEdges> edges{};
@@ -36,7 +42,8 @@ struct Tables {
     for (int t = 0; t < 6; ++t) {
       const int c1 = 1 << perms[t][0], c2 = c1 | (1 << perms[t][1]);
       tets[std::size_t(t)] = {0, c1, c2, 7};
-      for (int mask = 0; mask < 256; ++mask) pieces[std::size_t(t)][std::size_t(mask)] = build(t, mask);
+      for (int mask = 0; mask < 256; ++mask)
+        pieces[std::size_t(t)][std::size_t(mask)] = build(t, mask);
     }
   }
 
@@ -85,7 +92,9 @@ const Tables& tables() {
 
 }  // namespace
 
-const std::array<CellEdge, kCellEdges>& cellEdges() { return tables().edges; }
+const std::array<CellEdge, kCellEdges>& cellEdges() {
+  return tables().edges;
+}
 
 const TetPiece& tetPiece(int tet, int negativeCorners) {
   return tables().pieces[std::size_t(tet)][std::size_t(negativeCorners)];

@@ -44,7 +44,9 @@ void marchChunk(const Grid& grid, std::span<const std::uint64_t> bricks, FieldEv
   const std::uint32_t b = grid.brickCells(), m = b + 1;
   const std::size_t stride[3] = {1, m, std::size_t(m) * m};
   std::array<std::size_t, 8> cornerAt{};
-  for (int c = 0; c < 8; ++c) cornerAt[std::size_t(c)] = (c & 1) * stride[0] + ((c >> 1) & 1) * stride[1] + ((c >> 2) & 1) * stride[2];
+  for (int c = 0; c < 8; ++c)
+    cornerAt[std::size_t(c)] =
+        (c & 1) * stride[0] + ((c >> 1) & 1) * stride[1] + ((c >> 2) & 1) * stride[2];
   // Per brick: (corner, axes) -> local edge id, so a brick looks each edge up once.
   std::vector<std::uint32_t> seen(stride[2] * m * 8, FlatIndex::kAbsent);
   std::vector<std::size_t> touched;
@@ -76,22 +78,27 @@ void marchChunk(const Grid& grid, std::span<const std::uint64_t> bricks, FieldEv
               touched.push_back(at);
               const int n = loNeg ? ce.lo : ce.hi, p = loNeg ? ce.hi : ce.lo;
               out.edges.push_back({cell + cornerOffset(n), cell + cornerOffset(p),
-                                   v[base + cornerAt[std::size_t(n)]], v[base + cornerAt[std::size_t(p)]]});
+                                   v[base + cornerAt[std::size_t(n)]],
+                                   v[base + cornerAt[std::size_t(p)]]});
               // On a brick face: it stays in a plane x_a = 0 or b of the brick.
-              const std::uint32_t lo[3] = {x + (ce.lo & 1), y + ((ce.lo >> 1) & 1), z + ((ce.lo >> 2) & 1)};
+              const std::uint32_t lo[3] = {x + (ce.lo & 1), y + ((ce.lo >> 1) & 1),
+                                           z + ((ce.lo >> 2) & 1)};
               bool onFace = false;
-              for (int a = 0; a < 3; ++a) onFace |= !((axes >> a) & 1) && (lo[a] == 0 || lo[a] == b);
-              out.faceKeys.push_back(onFace ? edgeKeyAt(cell + cornerOffset(ce.lo), axes) : Chunk::kInside);
+              for (int a = 0; a < 3; ++a)
+                onFace |= !((axes >> a) & 1) && (lo[a] == 0 || lo[a] == b);
+              out.faceKeys.push_back(onFace ? edgeKeyAt(cell + cornerOffset(ce.lo), axes)
+                                            : Chunk::kInside);
             }
             local[std::size_t(e)] = slot;
           }
           for (int t = 0; t < 6; ++t) {
             const TetPiece& piece = tetPiece(t, neg);
             if (piece.count == 3) {
-              out.triangles.push_back({local[piece.edges[0]], local[piece.edges[1]], local[piece.edges[2]]});
+              out.triangles.push_back(
+                  {local[piece.edges[0]], local[piece.edges[1]], local[piece.edges[2]]});
             } else if (piece.count == 4) {
-              out.quads.push_back({local[piece.edges[0]], local[piece.edges[1]], local[piece.edges[2]],
-                                   local[piece.edges[3]]});
+              out.quads.push_back({local[piece.edges[0]], local[piece.edges[1]],
+                                   local[piece.edges[2]], local[piece.edges[3]]});
             }
           }
         }
@@ -108,11 +115,15 @@ void merge(const Chunk& chunk, Marched& m) {
   for (std::size_t e = 0; e < chunk.edges.size(); ++e) {
     bool inserted = true;
     const std::uint32_t next = std::uint32_t(m.edges.size());
-    global[e] = chunk.faceKeys[e] == Chunk::kInside ? next : m.edgeIndex.insert(chunk.faceKeys[e], next, inserted);
+    global[e] = chunk.faceKeys[e] == Chunk::kInside
+                    ? next
+                    : m.edgeIndex.insert(chunk.faceKeys[e], next, inserted);
     if (inserted) m.edges.push_back(chunk.edges[e]);
   }
-  for (const auto& t : chunk.triangles) m.triangles.push_back({global[t[0]], global[t[1]], global[t[2]]});
-  for (const auto& q : chunk.quads) m.quads.push_back({global[q[0]], global[q[1]], global[q[2]], global[q[3]]});
+  for (const auto& t : chunk.triangles)
+    m.triangles.push_back({global[t[0]], global[t[1]], global[t[2]]});
+  for (const auto& q : chunk.quads)
+    m.quads.push_back({global[q[0]], global[q[1]], global[q[2]], global[q[3]]});
   m.cells += chunk.cells;
 }
 
@@ -134,20 +145,24 @@ Marched marchBricks(const Grid& grid, std::vector<std::uint64_t> seeds,
   std::vector<Chunk> group(kGroupChunks);
   std::vector<std::uint64_t> nextWave;
   while (!wave.empty()) {
-    for (std::size_t groupStart = 0; groupStart < wave.size(); groupStart += kGroupChunks * kChunkBricks) {
+    for (std::size_t groupStart = 0; groupStart < wave.size();
+         groupStart += kGroupChunks * kChunkBricks) {
       const std::size_t bricks = std::min(kGroupChunks * kChunkBricks, wave.size() - groupStart);
       const std::size_t chunks = (bricks + kChunkBricks - 1) / kChunkBricks;
       parallelFor(chunks, evaluators.size(), [&](std::size_t c, std::size_t worker) {
         const std::size_t first = groupStart + c * kChunkBricks;
         group[c].clear();
-        marchChunk(grid, std::span(wave).subspan(first, std::min(kChunkBricks, groupStart + bricks - first)),
-                   evaluators[worker], group[c]);
+        marchChunk(
+            grid,
+            std::span(wave).subspan(first, std::min(kChunkBricks, groupStart + bricks - first)),
+            evaluators[worker], group[c]);
       });
       if (m.bricks == 0) {
         // Room for all the seeds' edges and faces at this group's rate, in advised storage.
         std::size_t edges = 0, triangles = 0, quads = 0;
         for (std::size_t c = 0; c < chunks; ++c)
-          edges += group[c].edges.size(), triangles += group[c].triangles.size(), quads += group[c].quads.size();
+          edges += group[c].edges.size(), triangles += group[c].triangles.size(),
+              quads += group[c].quads.size();
         const double scale = 1.1 * double(wave.size()) / double(bricks);
         reserveHuge(m.edges, std::size_t(scale * double(edges)));
         reserveHuge(m.triangles, std::size_t(scale * double(triangles)));
@@ -210,7 +225,8 @@ double placeRoots(const Grid& grid, const Marched& marched, std::span<FieldEvalu
     queries.clear();
     for (std::size_t i = first; i < last; ++i) {
       const GridEdge& e = marched.edges[i];
-      queries.push_back({grid.position(e.negativeKey), grid.position(e.positiveKey), e.negativeValue, e.positiveValue});
+      queries.push_back({grid.position(e.negativeKey), grid.position(e.positiveKey),
+                         e.negativeValue, e.positiveValue});
     }
     roots.assign(queries.size(), {});
     evaluators[worker].rootsOnEdges(queries, roots);
@@ -220,9 +236,11 @@ double placeRoots(const Grid& grid, const Marched& marched, std::span<FieldEvalu
       mesh.positions[i] = r.position;
       // Where the gradient vanishes or is undefined, the edge's direction (negative to
       // positive) still points out of the solid.
-      const std::array<float, 3> along = unit({q.b[0] - q.a[0], q.b[1] - q.a[1], q.b[2] - q.a[2]}, {0, 0, 1});
+      const std::array<float, 3> along =
+          unit({q.b[0] - q.a[0], q.b[1] - q.a[1], q.b[2] - q.a[2]}, {0, 0, 1});
       mesh.normals[i] = unit(r.gradient, along);
-      mesh.kinds[i] = r.onBall ? VertexKind::Cap : (r.pole ? VertexKind::Pole : VertexKind::Surface);
+      mesh.kinds[i] =
+          r.onBall ? VertexKind::Cap : (r.pole ? VertexKind::Pole : VertexKind::Surface);
       if (mesh.kinds[i] == VertexKind::Surface) worst[worker] = std::max(worst[worker], r.residual);
     }
   });
@@ -232,12 +250,14 @@ double placeRoots(const Grid& grid, const Marched& marched, std::span<FieldEvalu
 }
 
 void addTriangles(const Marched& marched, Mesh& mesh) {
-  reserveHuge(mesh.triangles, mesh.triangles.size() + marched.triangles.size() + 2 * marched.quads.size());
+  reserveHuge(mesh.triangles,
+              mesh.triangles.size() + marched.triangles.size() + 2 * marched.quads.size());
   mesh.triangles.insert(mesh.triangles.end(), marched.triangles.begin(), marched.triangles.end());
   for (const auto& q : marched.quads) {
     // Either diagonal keeps both triangles inside the tetrahedron; the shorter one gives
     // better-shaped triangles.
-    if (dist2(mesh.positions[q[0]], mesh.positions[q[2]]) <= dist2(mesh.positions[q[1]], mesh.positions[q[3]])) {
+    if (dist2(mesh.positions[q[0]], mesh.positions[q[2]]) <=
+        dist2(mesh.positions[q[1]], mesh.positions[q[3]])) {
       mesh.triangles.push_back({q[0], q[1], q[2]});
       mesh.triangles.push_back({q[0], q[2], q[3]});
     } else {

@@ -24,9 +24,9 @@
 namespace zs {
 
 struct MeshSettings {
-  int level = 7;         // 2^level grid cells per axis of the domain's bounding box
-  unsigned threads = 2;  // for the octree, the vertex evaluations and the edge roots
-  bool cap = false;      // close the solid {F < 0} along the domain boundary
+  int level = 7;                        // 2^level grid cells per axis of the domain's bounding box
+  unsigned threads = 2;                 // for the octree, the vertex evaluations and the edge roots
+  bool cap = false;                     // close the solid {F < 0} along the domain boundary
   std::size_t nodeBudget = 50'000'000;  // octree boxes tested before giving up
 };
 
@@ -47,12 +47,12 @@ struct Mesh {
 };
 
 struct MeshStats {
-  std::size_t cells = 0;          // grid cells the zero set crosses, marched
-  std::size_t gridValues = 0;     // F evaluated at brick corners
+  std::size_t cells = 0;       // grid cells the zero set crosses, marched
+  std::size_t gridValues = 0;  // F evaluated at brick corners
   double octreeSeconds = 0, gridSeconds = 0, rootSeconds = 0, totalSeconds = 0;
-  double cellSize = 0;            // the grid's smallest cell edge
-  double maxResidual = 0;         // largest |F| / |grad F| at a surface vertex
-  std::size_t poleVertices = 0;   // sign changes without a root (VertexKind::Pole)
+  double cellSize = 0;           // the grid's smallest cell edge
+  double maxResidual = 0;        // largest |F| / |grad F| at a surface vertex
+  std::size_t poleVertices = 0;  // sign changes without a root (VertexKind::Pole)
 };
 
 struct MeshResult {

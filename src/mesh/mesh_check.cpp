@@ -41,13 +41,15 @@ MeshTopology checkMesh(const Mesh& mesh) {
     const auto& q = mesh.positions[t[1]];
     const auto& r = mesh.positions[t[2]];
     top.volume += (p[0] * (q[1] * r[2] - q[2] * r[1]) - p[1] * (q[0] * r[2] - q[2] * r[0]) +
-                   p[2] * (q[0] * r[1] - q[1] * r[0])) / 6.0;
+                   p[2] * (q[0] * r[1] - q[1] * r[0])) /
+                  6.0;
   }
   // The half-edges in order: a counting sort on the lower vertex, then each vertex's few by
   // the upper one (millions of them: a comparison sort of the lot costs several times more).
   std::vector<std::uint32_t> bucket = mesh::hugeVector<std::uint32_t>(nv + 1, 0);
   for (const auto& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) ++bucket[std::min(t[std::size_t(k)], t[std::size_t((k + 1) % 3)]) + 1];
+    for (int k = 0; k < 3; ++k)
+      ++bucket[std::min(t[std::size_t(k)], t[std::size_t((k + 1) % 3)]) + 1];
   std::partial_sum(bucket.begin(), bucket.end(), bucket.begin());
   std::vector<HalfEdge> halves = mesh::hugeVector<HalfEdge>(3 * mesh.triangles.size());
   {
@@ -60,7 +62,8 @@ MeshTopology checkMesh(const Mesh& mesh) {
       }
     }
   }
-  for (std::size_t v = 0; v < nv; ++v) std::sort(halves.begin() + bucket[v], halves.begin() + bucket[v + 1]);
+  for (std::size_t v = 0; v < nv; ++v)
+    std::sort(halves.begin() + bucket[v], halves.begin() + bucket[v + 1]);
   for (std::size_t i = 0; i < halves.size();) {
     std::size_t j = i;
     while (j < halves.size() && halves[j].lo == halves[i].lo && halves[j].hi == halves[i].hi) ++j;

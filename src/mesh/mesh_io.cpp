@@ -49,8 +49,10 @@ std::array<float, 3> facetNormal(const Mesh& m, const std::array<std::uint32_t, 
     return std::array<double, 3>{double(float(p[0])), double(float(p[1])), double(float(p[2]))};
   };
   const auto a = stored(t[0]), b = stored(t[1]), c = stored(t[2]);
-  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-  const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]},
+               v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                       u[0] * v[1] - u[1] * v[0]};
   const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   if (!(len > 0)) return {0, 0, 0};
   return {float(n[0] / len), float(n[1] / len), float(n[2] / len)};
@@ -98,10 +100,14 @@ void writeObj(const Mesh& m, std::ostream& out) {
       << " triangles\n";
   Bytes bytes(out);
   char line[128];
-  auto put = [&](int length) { bytes.put(line, std::size_t(std::clamp(length, 0, int(sizeof line) - 1))); };
-  for (const auto& p : m.positions) put(std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", p[0], p[1], p[2]));
+  auto put = [&](int length) {
+    bytes.put(line, std::size_t(std::clamp(length, 0, int(sizeof line) - 1)));
+  };
+  for (const auto& p : m.positions)
+    put(std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", p[0], p[1], p[2]));
   for (const auto& n : m.normals)
-    put(std::snprintf(line, sizeof line, "vn %.6g %.6g %.6g\n", double(n[0]), double(n[1]), double(n[2])));
+    put(std::snprintf(line, sizeof line, "vn %.6g %.6g %.6g\n", double(n[0]), double(n[1]),
+                      double(n[2])));
   for (const auto& t : m.triangles)  // OBJ counts from 1
     put(std::snprintf(line, sizeof line, "f %u//%u %u//%u %u//%u\n", t[0] + 1, t[0] + 1, t[1] + 1,
                       t[1] + 1, t[2] + 1, t[2] + 1));
@@ -113,7 +119,8 @@ std::optional<MeshFormat> meshFormatFor(const std::string& path) {
   const auto dot = path.find_last_of('.');
   if (dot == std::string::npos) return std::nullopt;
   std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
   if (ext == "stl") return MeshFormat::Stl;
   if (ext == "ply") return MeshFormat::Ply;
   if (ext == "obj") return MeshFormat::Obj;
@@ -124,9 +131,15 @@ std::string writeMesh(const Mesh& mesh, const std::string& path, MeshFormat form
   std::ofstream out(path, std::ios::binary);
   if (!out) return "cannot write " + path + ": " + std::strerror(errno);
   switch (format) {
-    case MeshFormat::Stl: writeStl(mesh, out); break;
-    case MeshFormat::Ply: writePly(mesh, out); break;
-    case MeshFormat::Obj: writeObj(mesh, out); break;
+    case MeshFormat::Stl:
+      writeStl(mesh, out);
+      break;
+    case MeshFormat::Ply:
+      writePly(mesh, out);
+      break;
+    case MeshFormat::Obj:
+      writeObj(mesh, out);
+      break;
   }
   out.close();
   if (!out) return "error while writing " + path + " (disk full?)";

@@ -14,7 +14,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 std::string format(const char* fmt, auto... args) {
   char buf[256];
@@ -25,12 +27,17 @@ std::string format(const char* fmt, auto... args) {
 // The bricks (of b^3 cells) holding the grid cells the sphere passes through (a capped
 // ball's cap lies there), column by column, each brick once, in the order first met:
 // generous by a cell on each side, which only costs a few evaluations.
-std::vector<std::uint64_t> bricksOnSphere(const Box& box, int level, std::uint32_t b, const Ball& ball) {
+std::vector<std::uint64_t> bricksOnSphere(const Box& box, int level, std::uint32_t b,
+                                          const Ball& ball) {
   const std::uint32_t n = 1u << level;
   std::array<double, 3> h{};
   for (std::size_t a = 0; a < 3; ++a) h[a] = (box.max[a] - box.min[a]) / n;
-  auto nearest = [](double lo, double hi, double c) { return c < lo ? lo - c : (c > hi ? c - hi : 0.0); };
-  auto farthest = [](double lo, double hi, double c) { return std::max(std::abs(lo - c), std::abs(hi - c)); };
+  auto nearest = [](double lo, double hi, double c) {
+    return c < lo ? lo - c : (c > hi ? c - hi : 0.0);
+  };
+  auto farthest = [](double lo, double hi, double c) {
+    return std::max(std::abs(lo - c), std::abs(hi - c));
+  };
   std::vector<std::uint64_t> bricks;
   mesh::FlatIndex seen(1 << 12);
   const double r2 = ball.radius * ball.radius;
@@ -38,8 +45,10 @@ std::vector<std::uint64_t> bricksOnSphere(const Box& box, int level, std::uint32
     const double x0 = box.min[0] + h[0] * i, x1 = x0 + h[0];
     for (std::uint32_t j = 0; j < n; ++j) {
       const double y0 = box.min[1] + h[1] * j, y1 = y0 + h[1];
-      const double near2 = std::pow(nearest(x0, x1, ball.center[0]), 2) + std::pow(nearest(y0, y1, ball.center[1]), 2);
-      const double far2 = std::pow(farthest(x0, x1, ball.center[0]), 2) + std::pow(farthest(y0, y1, ball.center[1]), 2);
+      const double near2 = std::pow(nearest(x0, x1, ball.center[0]), 2) +
+                           std::pow(nearest(y0, y1, ball.center[1]), 2);
+      const double far2 = std::pow(farthest(x0, x1, ball.center[0]), 2) +
+                          std::pow(farthest(y0, y1, ball.center[1]), 2);
       if (near2 > r2 * (1 + 1e-9)) continue;
       // z cells with some point within r, minus those wholly inside the ball.
       const double reach = std::sqrt(r2 - std::min(near2, r2));
@@ -100,13 +109,15 @@ std::variant<MeshResult, std::string> buildMesh(const Formula& formula,
   const Tape gradientTape = compileTape(graph, {formula.root, grad[0], grad[1], grad[2]});
   const std::optional<Ball> capBall = settings.cap ? ball : std::nullopt;
   std::vector<mesh::FieldEvaluator> evaluators;
-  for (unsigned t = 0; t < threads; ++t) evaluators.emplace_back(valueTape, gradientTape, params, capBall);
+  for (unsigned t = 0; t < threads; ++t)
+    evaluators.emplace_back(valueTape, gradientTape, params, capBall);
 
   auto t0 = Clock::now();
   const mesh::Grid grid(box, settings.level);
   std::vector<std::uint64_t> seeds;
   seeds.reserve(tree.leaves.size());
-  for (const OctreeLeaf& leaf : tree.leaves) seeds.push_back(mesh::packKey(leaf.cell[0], leaf.cell[1], leaf.cell[2]));
+  for (const OctreeLeaf& leaf : tree.leaves)
+    seeds.push_back(mesh::packKey(leaf.cell[0], leaf.cell[1], leaf.cell[2]));
   const bool capBoxFaces = settings.cap && !ball;
   if (capBall) {
     const auto onSphere = bricksOnSphere(box, settings.level, grid.brickCells(), *ball);
@@ -122,7 +133,9 @@ std::variant<MeshResult, std::string> buildMesh(const Formula& formula,
   stats.gridValues = marched.bricks * grid.brickCornerCount();
   stats.cells = marched.cells;
   stats.gridSeconds = since(t0);
-  say(format("grid: %zu bricks of %u^3 cells, F at %zu corners, %zu cells and %zu edges cross the surface (%.3f s)",
+  say(
+      format("grid: %zu bricks of %u^3 cells, F at %zu corners, %zu cells and %zu edges cross the "
+             "surface (%.3f s)",
              marched.bricks, grid.brickCells(), stats.gridValues, stats.cells, marched.edges.size(),
              stats.gridSeconds));
 
@@ -132,7 +145,8 @@ std::variant<MeshResult, std::string> buildMesh(const Formula& formula,
   mesh::addTriangles(marched, out);
   if (boxFaces) mesh::capBox(grid, *boxFaces, marched, out);
   // Sign changes without a root bound the capped solid; they are not part of F = 0.
-  stats.poleVertices = std::size_t(std::count(out.kinds.begin(), out.kinds.end(), VertexKind::Pole));
+  stats.poleVertices =
+      std::size_t(std::count(out.kinds.begin(), out.kinds.end(), VertexKind::Pole));
   if (!settings.cap) mesh::dropPoleTriangles(out);
   // Without a cap the evaluators' field is F itself.
   if (ball && !settings.cap) mesh::clipBall(*ball, stats.cellSize, evaluators.front(), out);
@@ -142,8 +156,10 @@ std::variant<MeshResult, std::string> buildMesh(const Formula& formula,
   say(format("surface: %zu vertices on their edges' roots, %zu triangles (%.3f s)",
              out.positions.size(), out.triangles.size(), stats.rootSeconds));
   if (stats.poleVertices > 0)
-    say(format("%zu grid edges change sign without a root (a pole, a jump or the edge of F's domain): %s",
-               stats.poleVertices, settings.cap ? "they bound the capped solid" : "not part of the surface, left out"));
+    say(format(
+        "%zu grid edges change sign without a root (a pole, a jump or the edge of F's domain): %s",
+        stats.poleVertices,
+        settings.cap ? "they bound the capped solid" : "not part of the surface, left out"));
   return result;
 }
 

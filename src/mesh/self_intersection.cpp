@@ -22,13 +22,16 @@ double orient(const P& a, const P& b, const P& c, const P& d) {
   return ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx);
 }
 
-int sign(double v) { return (v > 0) - (v < 0); }
+int sign(double v) {
+  return (v > 0) - (v < 0);
+}
 
 // Does the segment pq cross the triangle abc (a proper crossing, not a touch)?
 bool segmentCrossesTriangle(const P& p, const P& q, const P& a, const P& b, const P& c) {
   const int sp = sign(orient(a, b, c, p)), sq = sign(orient(a, b, c, q));
   if (sp == 0 || sq == 0 || sp == sq) return false;
-  const int s1 = sign(orient(p, q, a, b)), s2 = sign(orient(p, q, b, c)), s3 = sign(orient(p, q, c, a));
+  const int s1 = sign(orient(p, q, a, b)), s2 = sign(orient(p, q, b, c)),
+            s3 = sign(orient(p, q, c, a));
   return s1 != 0 && s1 == s2 && s2 == s3;
 }
 
@@ -36,8 +39,12 @@ bool trianglesCross(const Mesh& m, const std::array<std::uint32_t, 3>& s,
                     const std::array<std::uint32_t, 3>& t) {
   const auto& P = m.positions;
   for (int k = 0; k < 3; ++k) {
-    if (segmentCrossesTriangle(P[s[std::size_t(k)]], P[s[std::size_t((k + 1) % 3)]], P[t[0]], P[t[1]], P[t[2]])) return true;
-    if (segmentCrossesTriangle(P[t[std::size_t(k)]], P[t[std::size_t((k + 1) % 3)]], P[s[0]], P[s[1]], P[s[2]])) return true;
+    if (segmentCrossesTriangle(P[s[std::size_t(k)]], P[s[std::size_t((k + 1) % 3)]], P[t[0]],
+                               P[t[1]], P[t[2]]))
+      return true;
+    if (segmentCrossesTriangle(P[t[std::size_t(k)]], P[t[std::size_t((k + 1) % 3)]], P[s[0]],
+                               P[s[1]], P[s[2]]))
+      return true;
   }
   return false;
 }
@@ -53,13 +60,16 @@ std::size_t countSelfIntersections(const Mesh& mesh) {
     for (int k = 0; k < 3; ++k) {
       const P& a = mesh.positions[t[std::size_t(k)]];
       const P& b = mesh.positions[t[std::size_t((k + 1) % 3)]];
-      mean += std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+      mean += std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                        (a[2] - b[2]) * (a[2] - b[2]));
       for (std::size_t i = 0; i < 3; ++i) lo[i] = std::min(lo[i], a[i]);
     }
   }
   const double bin = std::max(2 * mean / double(3 * tris.size()), 1e-12);
   auto binOf = [&](double v, std::size_t axis) { return long(std::floor((v - lo[axis]) / bin)); };
-  auto key = [](long x, long y, long z) { return (std::uint64_t(x) << 42) ^ (std::uint64_t(y) << 21) ^ std::uint64_t(z); };
+  auto key = [](long x, long y, long z) {
+    return (std::uint64_t(x) << 42) ^ (std::uint64_t(y) << 21) ^ std::uint64_t(z);
+  };
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> bins;
   std::vector<std::array<long, 6>> range(tris.size());
   for (std::uint32_t f = 0; f < tris.size(); ++f) {

@@ -9,7 +9,9 @@ namespace {
 
 constexpr std::size_t kWindow = 72;  // characters of formula shown around a long error
 
-bool isContinuationByte(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
+bool isContinuationByte(char c) {
+  return (static_cast<unsigned char>(c) & 0xC0) == 0x80;
+}
 
 // One display column per code point; control bytes shown as '?', so the caret stays aligned.
 struct Display {
@@ -65,8 +67,8 @@ std::string formatError(std::string_view text, const ParseError& error) {
   std::string out = "  " + prefix + columns(d.text, from, to) + suffix + "\n";
   const std::size_t caretStart = c0 - from + prefix.size();
   const std::size_t caretLen = std::min(c1, to + 1) - c0;
-  out += "  " + std::string(caretStart, ' ') + std::string(std::max<std::size_t>(caretLen, 1), '^') +
-         "\n";
+  out += "  " + std::string(caretStart, ' ') +
+         std::string(std::max<std::size_t>(caretLen, 1), '^') + "\n";
   out += i18n::format(i18n::tr("error: %s (at column %zu)"), error.message.c_str(), c0 + 1) + "\n";
   if (!error.hint.empty()) out += i18n::format(i18n::tr("hint: %s"), error.hint.c_str()) + "\n";
   return out;

@@ -11,9 +11,15 @@ namespace zs {
 
 namespace {
 
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
-bool isIdentStart(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
-bool isIdentChar(char c) { return isIdentStart(c) || isDigit(c); }
+bool isDigit(char c) {
+  return c >= '0' && c <= '9';
+}
+bool isIdentStart(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
+bool isIdentChar(char c) {
+  return isIdentStart(c) || isDigit(c);
+}
 
 // Length of the UTF-8 sequence starting with lead byte c (1 for invalid bytes).
 std::size_t utf8Length(unsigned char c) {
@@ -74,7 +80,10 @@ std::vector<Token> tokenize(std::string_view s) {
   std::size_t i = 0;
   while (i < s.size()) {
     const char c = s[i];
-    if (c == ' ' || c == '\t' || c == '\n' || c == '\r') { ++i; continue; }
+    if (c == ' ' || c == '\t' || c == '\n' || c == '\r') {
+      ++i;
+      continue;
+    }
     if (isDigit(c) || (c == '.' && i + 1 < s.size() && isDigit(s[i + 1]))) {
       out.push_back(lexNumber(s, i));
       continue;
@@ -88,27 +97,51 @@ std::vector<Token> tokenize(std::string_view s) {
     const std::size_t begin = i;
     Tok kind;
     switch (c) {
-      case '+': kind = Tok::Plus; break;
-      case '-': kind = Tok::Minus; break;
-      case '*':
-        if (i + 1 < s.size() && s[i + 1] == '*') { ++i; kind = Tok::Caret; } else kind = Tok::Star;
+      case '+':
+        kind = Tok::Plus;
         break;
-      case '/': kind = Tok::Slash; break;
-      case '^': kind = Tok::Caret; break;
-      case '(': kind = Tok::LParen; break;
-      case ')': kind = Tok::RParen; break;
-      case '[': kind = Tok::LBracket; break;
-      case ']': kind = Tok::RBracket; break;
-      case ',': kind = Tok::Comma; break;
-      case '=': kind = Tok::Equals; break;
+      case '-':
+        kind = Tok::Minus;
+        break;
+      case '*':
+        if (i + 1 < s.size() && s[i + 1] == '*') {
+          ++i;
+          kind = Tok::Caret;
+        } else
+          kind = Tok::Star;
+        break;
+      case '/':
+        kind = Tok::Slash;
+        break;
+      case '^':
+        kind = Tok::Caret;
+        break;
+      case '(':
+        kind = Tok::LParen;
+        break;
+      case ')':
+        kind = Tok::RParen;
+        break;
+      case '[':
+        kind = Tok::LBracket;
+        break;
+      case ']':
+        kind = Tok::RBracket;
+        break;
+      case ',':
+        kind = Tok::Comma;
+        break;
+      case '=':
+        kind = Tok::Equals;
+        break;
       case '.':
         out.push_back(error(i, i + 1, i18n::tr("a '.' must be part of a number"),
                             i18n::tr("write 0.5 or .5")));
         ++i;
         continue;
       case '\0':
-        out.push_back(error(i, i + 1, i18n::tr("the formula contains a NUL byte"),
-                            i18n::tr("remove it")));
+        out.push_back(
+            error(i, i + 1, i18n::tr("the formula contains a NUL byte"), i18n::tr("remove it")));
         ++i;
         continue;
       default: {
@@ -143,21 +176,36 @@ std::vector<Token> tokenize(std::string_view s) {
 
 const char* describe(Tok kind) {
   switch (kind) {
-    case Tok::Number: return N_("a number");
-    case Tok::Ident: return N_("a name");
-    case Tok::Plus: return "'+'";
-    case Tok::Minus: return "'-'";
-    case Tok::Star: return "'*'";
-    case Tok::Slash: return "'/'";
-    case Tok::Caret: return "'^'";
-    case Tok::LParen: return "'('";
-    case Tok::RParen: return "')'";
-    case Tok::LBracket: return "'['";
-    case Tok::RBracket: return "']'";
-    case Tok::Comma: return "','";
-    case Tok::Equals: return "'='";
-    case Tok::End: return N_("the end of the formula");
-    case Tok::Error: return N_("an invalid character");
+    case Tok::Number:
+      return N_("a number");
+    case Tok::Ident:
+      return N_("a name");
+    case Tok::Plus:
+      return "'+'";
+    case Tok::Minus:
+      return "'-'";
+    case Tok::Star:
+      return "'*'";
+    case Tok::Slash:
+      return "'/'";
+    case Tok::Caret:
+      return "'^'";
+    case Tok::LParen:
+      return "'('";
+    case Tok::RParen:
+      return "')'";
+    case Tok::LBracket:
+      return "'['";
+    case Tok::RBracket:
+      return "']'";
+    case Tok::Comma:
+      return "','";
+    case Tok::Equals:
+      return "'='";
+    case Tok::End:
+      return N_("the end of the formula");
+    case Tok::Error:
+      return N_("an invalid character");
   }
   return "?";
 }

@@ -9,13 +9,28 @@
 
 namespace zs {
 
-enum class Tok { Number, Ident, Plus, Minus, Star, Slash, Caret, LParen, RParen, LBracket,
-                 RBracket, Comma, Equals, End, Error };
+enum class Tok {
+  Number,
+  Ident,
+  Plus,
+  Minus,
+  Star,
+  Slash,
+  Caret,
+  LParen,
+  RParen,
+  LBracket,
+  RBracket,
+  Comma,
+  Equals,
+  End,
+  Error
+};
 
 struct Token {
   Tok kind;
   Span span;
-  double number = 0.0;   // Number
+  double number = 0.0;    // Number
   std::string message{};  // Error: what is wrong
   std::string hint{};     // Error: how to fix it
 };

@@ -39,12 +39,19 @@ struct SyntaxBuilder {
     t->nodes.push_back(std::move(n));
     return int(t->nodes.size()) - 1;
   }
-  Id number(double, std::string_view text) { return add({SyntaxNode::Kind::Number, Op::Const, std::string(text)}); }
-  Id variable(int axis) {
-    return add({SyntaxNode::Kind::Variable, Op(int(Op::VarX) + axis), std::string(1, char('x' + axis))});
+  Id number(double, std::string_view text) {
+    return add({SyntaxNode::Kind::Number, Op::Const, std::string(text)});
   }
-  Id namedConstant(std::string_view name, double) { return add({SyntaxNode::Kind::Constant, Op::Const, std::string(name)}); }
-  Id param(std::string_view name) { return add({SyntaxNode::Kind::Param, Op::Param, std::string(name)}); }
+  Id variable(int axis) {
+    return add(
+        {SyntaxNode::Kind::Variable, Op(int(Op::VarX) + axis), std::string(1, char('x' + axis))});
+  }
+  Id namedConstant(std::string_view name, double) {
+    return add({SyntaxNode::Kind::Constant, Op::Const, std::string(name)});
+  }
+  Id param(std::string_view name) {
+    return add({SyntaxNode::Kind::Param, Op::Param, std::string(name)});
+  }
   Id unary(Op op, Id a) { return add({SyntaxNode::Kind::Operation, op, "", a}); }
   Id binary(Op op, Id a, Id b, bool implicit = false) {
     return add({SyntaxNode::Kind::Operation, op, "", a, b, implicit});
@@ -108,8 +115,9 @@ class Parser {
   void unexpected(const char* expected) {
     const Token& t = peek();
     if (t.kind == Tok::Error) return fail(t.span, t.message, t.hint);
-    fail(t.span, i18n::format(i18n::tr("expected %s, found %s"), i18n::tr(expected),
-                              i18n::tr(describe(t.kind))),
+    fail(t.span,
+         i18n::format(i18n::tr("expected %s, found %s"), i18n::tr(expected),
+                      i18n::tr(describe(t.kind))),
          t.kind == Tok::Caret ? i18n::tr("'^' needs a base and an exponent, e.g. x^2") : "");
   }
 
@@ -226,22 +234,31 @@ class Parser {
   NodeId atom() {
     const Token& t = peek();
     switch (t.kind) {
-      case Tok::Number: next(); return b_.number(t.number, text_.substr(t.span.begin, t.span.end - t.span.begin));
-      case Tok::LParen: return group(Tok::RParen, "')'");
-      case Tok::LBracket: return group(Tok::RBracket, "']'");
-      case Tok::Ident: return name();
+      case Tok::Number:
+        next();
+        return b_.number(t.number, text_.substr(t.span.begin, t.span.end - t.span.begin));
+      case Tok::LParen:
+        return group(Tok::RParen, "')'");
+      case Tok::LBracket:
+        return group(Tok::RBracket, "']'");
+      case Tok::Ident:
+        return name();
       case Tok::End:
         if (pos_ == 0) {
           fail(t.span, i18n::tr("the formula is empty"),
                i18n::tr("type an expression such as x^2 + y^2 + z^2 - 1"));
         } else {
           const Token& prev = toks_[pos_ - 1];
-          fail(prev.span,
-               i18n::format(i18n::tr("expected an operand after %s"), i18n::tr(describe(prev.kind))),
-               i18n::tr("complete the expression"));
+          fail(
+              prev.span,
+              i18n::format(i18n::tr("expected an operand after %s"), i18n::tr(describe(prev.kind))),
+              i18n::tr("complete the expression"));
         }
         return kNoNode;
-      case Tok::Caret: case Tok::Star: case Tok::Slash: case Tok::Equals:
+      case Tok::Caret:
+      case Tok::Star:
+      case Tok::Slash:
+      case Tok::Equals:
         if (pos_ > 0 && (toks_[pos_ - 1].kind == Tok::Caret || toks_[pos_ - 1].kind == Tok::Star ||
                          toks_[pos_ - 1].kind == Tok::Slash)) {
           fail(t.span,
@@ -291,7 +308,8 @@ class Parser {
     for (int k = 0; k < arity; ++k) {
       if (k > 0) {
         if (peek().kind != Tok::Comma) {
-          const std::string fn(text_.substr(nameTok.span.begin, nameTok.span.end - nameTok.span.begin));
+          const std::string fn(
+              text_.substr(nameTok.span.begin, nameTok.span.end - nameTok.span.begin));
           fail(peek().kind == Tok::End ? open.span : peek().span,
                i18n::format(i18n::tr("%s() takes %d arguments"), fn.c_str(), int(arity)),
                i18n::format(i18n::tr("write %s(a, b)"), fn.c_str()));

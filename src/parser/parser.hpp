@@ -38,9 +38,9 @@ ParseResult parseFormula(std::string_view text);
 struct SyntaxNode {
   enum class Kind { Number, Variable, Constant, Param, Operation, Equation };
   Kind kind;
-  Op op;             // Operation: Neg, Add, Sub, Mul, Div, Pow or a function
-  std::string text;  // Number: as typed; Variable, Constant (pi, e), Param: the name
-  int a = -1, b = -1;  // operands: indices into SyntaxTree::nodes
+  Op op;                  // Operation: Neg, Add, Sub, Mul, Div, Pow or a function
+  std::string text;       // Number: as typed; Variable, Constant (pi, e), Param: the name
+  int a = -1, b = -1;     // operands: indices into SyntaxTree::nodes
   bool implicit = false;  // Mul written without '*': 2x, x y, (x+1)(x-1)
 };
 struct SyntaxTree {

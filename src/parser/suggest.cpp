@@ -42,7 +42,8 @@ std::optional<std::string> closestName(std::string_view word,
   for (std::string_view c : candidates) {
     // The distance is at least the difference in length: a candidate that cannot come
     // closer than the best so far is skipped unmeasured (a long mistyped line costs nothing).
-    const std::size_t gap = word.size() > c.size() ? word.size() - c.size() : c.size() - word.size();
+    const std::size_t gap =
+        word.size() > c.size() ? word.size() - c.size() : c.size() - word.size();
     if (gap >= bestDistance) continue;
     const std::size_t dist = editDistance(word, c, bestDistance - 1);
     if (dist < bestDistance) {
@@ -80,24 +81,24 @@ std::vector<std::string_view> functionNames() {
 
 std::optional<NameProblem> diagnoseName(std::string_view name, bool call) {
   if (name.size() > 1 && onlyCoordinates(name)) {
-    return NameProblem{
-        i18n::format(i18n::tr("'%s' is not a name"), std::string(name).c_str()),
-        i18n::format(i18n::tr("write %s for a product of coordinates"), spelledProduct(name).c_str())};
+    return NameProblem{i18n::format(i18n::tr("'%s' is not a name"), std::string(name).c_str()),
+                       i18n::format(i18n::tr("write %s for a product of coordinates"),
+                                    spelledProduct(name).c_str())};
   }
   if (name.size() > 1 && onlyCoordinates(name.substr(0, 1)) &&
       std::all_of(name.begin() + 1, name.end(), [](char c) { return c >= '0' && c <= '9'; })) {
     const std::string v(name.substr(0, 1)), n(name.substr(1));
-    return NameProblem{
-        i18n::format(i18n::tr("'%s' is not a name"), std::string(name).c_str()),
-        i18n::format(i18n::tr("write %s for a power or %s for a product"), (v + "^" + n).c_str(),
-                     (v + "*" + n).c_str())};
+    return NameProblem{i18n::format(i18n::tr("'%s' is not a name"), std::string(name).c_str()),
+                       i18n::format(i18n::tr("write %s for a power or %s for a product"),
+                                    (v + "^" + n).c_str(), (v + "*" + n).c_str())};
   }
   for (std::string_view fn : functionNames()) {
     if (name.size() > fn.size() && name.substr(0, fn.size()) == fn &&
         onlyCoordinates(name.substr(fn.size()))) {
       const std::string arg = spelledProduct(name.substr(fn.size()));
-      return NameProblem{i18n::format(i18n::tr("'%s' is not a name"), std::string(name).c_str()),
-                         i18n::format(i18n::tr("write %s"), (std::string(fn) + "(" + arg + ")").c_str())};
+      return NameProblem{
+          i18n::format(i18n::tr("'%s' is not a name"), std::string(name).c_str()),
+          i18n::format(i18n::tr("write %s"), (std::string(fn) + "(" + arg + ")").c_str())};
     }
   }
   if (call && name.size() >= 2) {

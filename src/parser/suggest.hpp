@@ -2,9 +2,9 @@
 // Names that parse but almost surely are typos (xy, x2, sinx, sinn(...)) and what to say
 // about them; plus the edit distance used for "did you mean" hints.
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
-#include <limits>
 #include <string_view>
 #include <vector>
 

@@ -26,7 +26,8 @@ std::string buildInterpreter(RayTracer& tracer, bool sampling, bool polynomialOn
 }
 
 std::string loadQuickSurface(RayTracer& tracer, const QuickSurface& surface) {
-  if (std::string err = tracer.setTape(surface.tape.texels); !err.empty()) return "error: " + err + "\n";
+  if (std::string err = tracer.setTape(surface.tape.texels); !err.empty())
+    return "error: " + err + "\n";
   if (std::string err = tracer.setHierarchy(surface.hierarchy.packed()); !err.empty())
     return "error: " + err + "\n";
   tracer.setParams(std::vector<float>(surface.params.begin(), surface.params.end()));

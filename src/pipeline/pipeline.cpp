@@ -70,9 +70,10 @@ TracingMethod resolveMethod(TracingMethod asked, const Formula& formula, std::st
               ", the highest the exact Bernstein method compiles for (its shader grows as the "
               "degree squared); using interval arithmetic (tracing.method = \"interval\")\n";
   } else if (asked == TracingMethod::Bernstein) {
-    warning = "warning: tracing.method = \"bernstein\" needs a polynomial in x, y, z; this "
-              "formula is not one, so it is traced with interval arithmetic "
-              "(tracing.method = \"interval\")\n";
+    warning =
+        "warning: tracing.method = \"bernstein\" needs a polynomial in x, y, z; this "
+        "formula is not one, so it is traced with interval arithmetic "
+        "(tracing.method = \"interval\")\n";
   }
   return TracingMethod::Interval;
 }
@@ -85,8 +86,8 @@ void findMarkedPoints(const Scene& scene, PreparedSurface& s) {
   SingularSettings settings;
   settings.maxDepth = 12;
   settings.boxBudget = 500'000;
-  auto found = findSingularPoints(s.formula, s.params, toBox(scene.domain), toBall(scene.domain),
-                                  settings);
+  auto found =
+      findSingularPoints(s.formula, s.params, toBox(scene.domain), toBall(scene.domain), settings);
   if (auto* err = std::get_if<std::string>(&found)) {
     s.singularNote = "note: no singular points marked: " + *err + "\n";
     return;
@@ -136,7 +137,9 @@ std::variant<PreparedSurface, std::string> prepareGeometry(const Scene& scene,
     return formatSceneFormulaError(scene, failedSurface, *err);
   if (surfaceCount(scene) > 1 && scene.render.mode == RenderMode::Volume)
     return "error: render.mode = \"volume\" draws the field of one function, and this scene "
-           "has " + std::to_string(surfaceCount(scene)) + " surfaces\n"
+           "has " +
+           std::to_string(surfaceCount(scene)) +
+           " surfaces\n"
            "hint: keep one [[surface]], or draw them as surfaces (render.mode = \"surface\")\n";
   s.formula = std::get<Formula>(std::move(parsed));
   s.gradient = gradient(s.formula.graph, s.formula.root);
@@ -152,8 +155,9 @@ std::variant<PreparedSurface, std::string> prepareGeometry(const Scene& scene,
   // Above the limit only where "bernstein" is asked for: Auto keeps the limit either way.
   const bool anyDegree =
       options.bernsteinAboveLimit && scene.render.tracing.method == TracingMethod::Bernstein;
-  s.method = resolveMethod(scene.render.tracing.method, s.formula, s.methodWarning,
-                           anyDegree ? std::numeric_limits<int>::max() : maxBernsteinDegree(options));
+  s.method =
+      resolveMethod(scene.render.tracing.method, s.formula, s.methodWarning,
+                    anyDegree ? std::numeric_limits<int>::max() : maxBernsteinDegree(options));
   // A volume finds no roots; it skips the stretches of its rays where F is proven far from
   // the level (raytrace_volume.frag.glsl): by the control points of the ray polynomial for a
   // polynomial within the Bernstein method's degree limit, else by the interval method's
@@ -191,15 +195,17 @@ std::string prepareShader(const Scene& scene, PreparedSurface& s, const PrepareO
     s.glsl.source += surfacesBlock(scene, s.formula.graph, s.surfaceRoots);
   std::string markers;
   if (scene.render.singular.enabled) {
-    if (options.markedPoints) s.singularPoints = *options.markedPoints;
-    else findMarkedPoints(scene, s);
-    markers = markerBlock(s.singularPoints, scene.render.singular.threshold,
-                          scene.render.singular.color);
+    if (options.markedPoints)
+      s.singularPoints = *options.markedPoints;
+    else
+      findMarkedPoints(scene, s);
+    markers =
+        markerBlock(s.singularPoints, scene.render.singular.threshold, scene.render.singular.color);
   }
   const ShaderDialect dialect = options.dialect;
   if (s.method == TracingMethod::Bernstein) {
-    s.rayPolynomial = emitRayPolynomialGlsl(s.formula.graph, s.formula.root,
-                                            dialect == ShaderDialect::Gl330);
+    s.rayPolynomial =
+        emitRayPolynomialGlsl(s.formula.graph, s.formula.root, dialect == ShaderDialect::Gl330);
     s.fragmentShader = assembleFragmentShader(s.glsl, *s.rayPolynomial, markers, dialect);
   } else if (s.method == TracingMethod::Interval) {
     s.fragmentShader = assembleFragmentShader(

@@ -29,8 +29,8 @@ std::variant<QuickSurface, std::string> prepareQuickSurface(const Scene& scene) 
   q.params = paramValues(scene, formula.graph);
   OctreeSettings shallow = scene.octree;
   shallow.level = std::min(shallow.level, kQuickOctreeLevel);
-  OctreeResult tree = buildOctree(formula, q.params, toBox(scene.domain), shallow,
-                                  toBall(scene.domain));
+  OctreeResult tree =
+      buildOctree(formula, q.params, toBox(scene.domain), shallow, toBall(scene.domain));
   if (auto* err = std::get_if<OctreeError>(&tree)) return "error: " + err->message + "\n";
   // A volume skips stretches by the affine form, which only the interval program has.
   q.sampling = scene.render.tracing.method == TracingMethod::Sampling &&

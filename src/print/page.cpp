@@ -51,8 +51,10 @@ std::vector<std::string> wrap(cairo_t* cr, const std::string& text, double width
     word.clear();
   };
   for (char c : text) {
-    if (std::isspace(static_cast<unsigned char>(c))) flushWord();
-    else word += c;
+    if (std::isspace(static_cast<unsigned char>(c)))
+      flushWord();
+    else
+      word += c;
   }
   flushWord();
   if (!line.empty()) lines.push_back(line);
@@ -60,8 +62,8 @@ std::vector<std::string> wrap(cairo_t* cr, const std::string& text, double width
 }
 
 // Draws `lines` from the baseline at y, centred on the page; returns the next baseline.
-double centredLines(cairo_t* cr, const std::vector<std::string>& lines, double pageWidth,
-                    double y, double leading) {
+double centredLines(cairo_t* cr, const std::vector<std::string>& lines, double pageWidth, double y,
+                    double leading) {
   for (const std::string& l : lines) {
     cairo_move_to(cr, (pageWidth - advance(cr, l)) / 2, y);
     cairo_show_text(cr, l.c_str());
@@ -109,16 +111,16 @@ std::vector<MathBox> formulaLines(cairo_t* cr, const std::string& formula, doubl
     // The level set drawn: F = c, or for F = G, F = G ± |c|.
     const SyntaxNode root = syntax.nodes[std::size_t(syntax.root)];
     const bool equation = root.kind == SyntaxNode::Kind::Equation;
-    syntax.nodes.push_back({SyntaxNode::Kind::Number, Op::Const,
-                            shortestText(equation ? std::fabs(level) : level)});
+    syntax.nodes.push_back(
+        {SyntaxNode::Kind::Number, Op::Const, shortestText(equation ? std::fabs(level) : level)});
     int right = int(syntax.nodes.size()) - 1;
     if (equation) {
-      syntax.nodes.push_back({SyntaxNode::Kind::Operation, level > 0 ? Op::Add : Op::Sub, "",
-                              root.b, right});
+      syntax.nodes.push_back(
+          {SyntaxNode::Kind::Operation, level > 0 ? Op::Add : Op::Sub, "", root.b, right});
       right = int(syntax.nodes.size()) - 1;
     }
-    syntax.nodes.push_back({SyntaxNode::Kind::Equation, Op::Sub, "",
-                            equation ? root.a : syntax.root, right});
+    syntax.nodes.push_back(
+        {SyntaxNode::Kind::Equation, Op::Sub, "", equation ? root.a : syntax.root, right});
     syntax.root = int(syntax.nodes.size()) - 1;
   }
   constexpr double kLargest = 20, kSmallest = 11;
@@ -156,9 +158,12 @@ cairo_surface_t* pictureSurface(const Image& picture) {
 
 PaperSize paperSize(Paper paper) {
   switch (paper) {
-    case Paper::A3: return {841.89, 1190.55};
-    case Paper::Letter: return {612, 792};
-    case Paper::A4: break;
+    case Paper::A3:
+      return {841.89, 1190.55};
+    case Paper::Letter:
+      return {612, 792};
+    case Paper::A4:
+      break;
   }
   return {595.28, 841.89};
 }
@@ -166,14 +171,20 @@ PaperSize paperSize(Paper paper) {
 bool parsePaper(const std::string& name, Paper& paper) {
   std::string lower;
   for (char c : name) lower += char(std::tolower(static_cast<unsigned char>(c)));
-  if (lower == "a4") paper = Paper::A4;
-  else if (lower == "a3") paper = Paper::A3;
-  else if (lower == "letter") paper = Paper::Letter;
-  else return false;
+  if (lower == "a4")
+    paper = Paper::A4;
+  else if (lower == "a3")
+    paper = Paper::A3;
+  else if (lower == "letter")
+    paper = Paper::Letter;
+  else
+    return false;
   return true;
 }
 
-double pictureSide(Paper paper) { return paperSize(paper).width - 2 * kMargin; }
+double pictureSide(Paper paper) {
+  return paperSize(paper).width - 2 * kMargin;
+}
 
 namespace {
 
@@ -190,14 +201,16 @@ bool isPageFile(const std::filesystem::path& path) {
   return ext == ".pdf" || ext == ".svg";
 }
 
-std::string writePage(const std::filesystem::path& path, const PageContent& content,
-                      Paper paper) {
+std::string writePage(const std::filesystem::path& path, const PageContent& content, Paper paper) {
   const PaperSize page = paperSize(paper);
   const std::string ext = lowerExtension(path);
   cairo_surface_t* target = nullptr;
-  if (ext == ".pdf") target = cairo_pdf_surface_create(path.c_str(), page.width, page.height);
-  else if (ext == ".svg") target = cairo_svg_surface_create(path.c_str(), page.width, page.height);
-  else return "print: " + path.string() + ": the page is written as .pdf or .svg";
+  if (ext == ".pdf")
+    target = cairo_pdf_surface_create(path.c_str(), page.width, page.height);
+  else if (ext == ".svg")
+    target = cairo_svg_surface_create(path.c_str(), page.width, page.height);
+  else
+    return "print: " + path.string() + ": the page is written as .pdf or .svg";
   if (cairo_surface_status(target) != CAIRO_STATUS_SUCCESS) {
     const std::string why = cairo_status_to_string(cairo_surface_status(target));
     cairo_surface_destroy(target);
@@ -249,7 +262,8 @@ std::string writePage(const std::filesystem::path& path, const PageContent& cont
     for (const auto& [name, value] : content.params) {
       char number[32];
       std::snprintf(number, sizeof number, "%.6g", std::fabs(value));
-      values += (values.empty() ? "" : ",   ") + name + " = " + (value < 0 ? "\u2212" : "") + number;
+      values +=
+          (values.empty() ? "" : ",   ") + name + " = " + (value < 0 ? "\u2212" : "") + number;
     }
     setFont(c, kSerif, false, false, 12);
     y = centredLines(c, wrap(c, values, textWidth), page.width, y, 16);
@@ -257,8 +271,8 @@ std::string writePage(const std::filesystem::path& path, const PageContent& cont
 
   setFont(c, kSans, false, false, 8);
   cairo_set_source_rgb(c, 0.45, 0.45, 0.45);
-  centredLines(c, {"drawn by zeroset: the surface F(x, y, z) = 0, ray-traced exactly"},
-               page.width, page.height - kMargin / 2, 10);
+  centredLines(c, {"drawn by zeroset: the surface F(x, y, z) = 0, ray-traced exactly"}, page.width,
+               page.height - kMargin / 2, 10);
   cairo_show_page(c);
   cr.reset();
   cairo_surface_finish(target);

@@ -27,7 +27,7 @@ bool parsePaper(const std::string& name, Paper& paper);
 double pictureSide(Paper paper);
 
 struct PageContent {
-  Image picture;  // square, RGBA8, top row first
+  Image picture;            // square, RGBA8, top row first
   std::string title;        // the surface's name
   std::string description;  // one line or a few sentences
   // One line per surface of the scene: the formula as written (parser/parser.hpp

@@ -41,7 +41,7 @@ constexpr double kScriptScale = 0.7, kFractionScale = 0.9, kMinSize = 5.0;
 struct Typeset {
   MathBox box;
   int prec = kAtom;
-  bool fraction = false;     // a fraction needs parentheses as the base of a power
+  bool fraction = false;  // a fraction needs parentheses as the base of a power
   bool startsWithDigit = false, endsWithDigit = false;  // for 2·3 against 2x
 };
 
@@ -248,8 +248,10 @@ class Setter {
         for (std::size_t i = 1; i < links.size(); ++i) {
           const Typeset b = slot(links[i].operand, kPower, size);
           // Before a number a dot (2·3, x·2); elsewhere a thin space (2x, x y, 2 sin x).
-          if (b.startsWithDigit) append(t.box, text("\u00b7", false, size));
-          else t.box.width += 0.12 * size;
+          if (b.startsWithDigit)
+            append(t.box, text("\u00b7", false, size));
+          else
+            t.box.width += 0.12 * size;
           append(t.box, b.box);
           t.endsWithDigit = b.endsWithDigit;
         }

@@ -17,7 +17,7 @@ namespace zs::printing {
 struct TextRun {
   std::string text;  // UTF-8
   bool italic = false;
-  double size = 0;  // font size, points
+  double size = 0;      // font size, points
   double x = 0, y = 0;  // where the run's baseline starts
 };
 

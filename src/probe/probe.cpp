@@ -126,9 +126,12 @@ std::variant<ProbeResult, std::string> SurfaceProbe::ray(std::span<const double>
       no += plane.normal[a] * ray.origin[a];
     }
     const double room = plane.offset - no;
-    if (nd > 0) tb = std::min(tb, room / nd);
-    else if (nd < 0) ta = std::max(ta, room / nd);
-    else if (room < 0) return result;
+    if (nd > 0)
+      tb = std::min(tb, room / nd);
+    else if (nd < 0)
+      ta = std::max(ta, room / nd);
+    else if (room < 0)
+      return result;
   }
   if (!(ta <= tb)) return result;
   // The tracer's tangent tolerance (1e-5 of the domain's diagonal): a stretch that short on
@@ -278,13 +281,13 @@ bool SceneProbe::sameSurfaces(const Scene& scene) const {
   return functions_ == functionsOf(scene);
 }
 
-std::variant<ProbeResult, std::string> SceneProbe::pixel(const Scene& scene, int width,
-                                                         int height, int x, int y) {
+std::variant<ProbeResult, std::string> SceneProbe::pixel(const Scene& scene, int width, int height,
+                                                         int x, int y) {
   if (!error_.empty()) return error_;
   ProbeResult nearest;
   for (std::size_t i = 0; i < probes_.size(); ++i) {
-    auto result = probes_[i]->pixel(paramValues(scene, formulas_[i].graph), scene, width, height,
-                                    x, y);
+    auto result =
+        probes_[i]->pixel(paramValues(scene, formulas_[i].graph), scene, width, height, x, y);
     if (std::holds_alternative<std::string>(result)) return result;
     const ProbeResult& r = std::get<ProbeResult>(result);
     if (r.hit && (!nearest.hit || r.t < nearest.t)) {
@@ -304,8 +307,8 @@ std::variant<ProbeResult, std::string> probeRay(const Formula& formula,
 
 std::variant<ProbeResult, std::string> probePixel(const Formula& formula,
                                                   std::span<const double> params,
-                                                  const Scene& scene, int width, int height,
-                                                  int x, int y) {
+                                                  const Scene& scene, int width, int height, int x,
+                                                  int y) {
   return SurfaceProbe(formula).pixel(params, scene, width, height, x, y);
 }
 
@@ -343,11 +346,11 @@ std::string probeJson(const ProbeResult& r) {
   };
   const std::string surface =
       r.surfaces > 1 ? ", \"surface\": " + std::to_string(r.surface + 1) : "";
-  return "{\"hit\": true" + surface + ", \"t\": " + jsonNumber(r.t) + ", \"point\": " + arr(r.point) +
-         ", \"F\": " + jsonNumber(r.value) + ", \"gradient\": " + arr(r.gradient) +
-         ", \"normal\": " + arr(r.normal) + ", \"K\": " + jsonNumber(r.gaussian) +
-         ", \"H\": " + jsonNumber(r.mean) + ", \"k1\": " + jsonNumber(r.k1) +
-         ", \"k2\": " + jsonNumber(r.k2) + "}\n";
+  return "{\"hit\": true" + surface + ", \"t\": " + jsonNumber(r.t) +
+         ", \"point\": " + arr(r.point) + ", \"F\": " + jsonNumber(r.value) +
+         ", \"gradient\": " + arr(r.gradient) + ", \"normal\": " + arr(r.normal) +
+         ", \"K\": " + jsonNumber(r.gaussian) + ", \"H\": " + jsonNumber(r.mean) +
+         ", \"k1\": " + jsonNumber(r.k1) + ", \"k2\": " + jsonNumber(r.k2) + "}\n";
 }
 
 }  // namespace zs

@@ -46,12 +46,10 @@ class SurfaceProbe {
 
   // probeRay and probePixel below, for this formula.
   // `clip`: the scene's clip planes, which cut the ray as they cut the tracer's.
-  std::variant<ProbeResult, std::string> ray(std::span<const double> params,
-                                             const Domain& domain, const Ray& ray,
-                                             std::span<const ClipPlane> clip = {});
-  std::variant<ProbeResult, std::string> pixel(std::span<const double> params,
-                                               const Scene& scene, int width, int height, int x,
-                                               int y);
+  std::variant<ProbeResult, std::string> ray(std::span<const double> params, const Domain& domain,
+                                             const Ray& ray, std::span<const ClipPlane> clip = {});
+  std::variant<ProbeResult, std::string> pixel(std::span<const double> params, const Scene& scene,
+                                               int width, int height, int x, int y);
 
  private:
   struct Evaluators;

@@ -6,7 +6,9 @@
 
 namespace zs {
 
-bool beamTileIsClear(float start) { return start >= std::numeric_limits<float>::max(); }
+bool beamTileIsClear(float start) {
+  return start >= std::numeric_limits<float>::max();
+}
 
 std::vector<float> clearTileRuns(std::span<const float> beam, int tilesX, int tilesY, int tile,
                                  int width, int height) {

@@ -7,12 +7,18 @@
 namespace zs {
 namespace {
 
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3 sub(const Vec3& a, const Vec3& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
 Vec3 cross(const Vec3& a, const Vec3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
-double length(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
-Vec3 scaled(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
+double length(const Vec3& a) {
+  return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+}
+Vec3 scaled(const Vec3& a, double s) {
+  return {a[0] * s, a[1] * s, a[2] * s};
+}
 Vec3 axpy(const Vec3& a, double s, const Vec3& b) {  // a + s*b
   return {a[0] + s * b[0], a[1] + s * b[1], a[2] + s * b[2]};
 }
@@ -43,8 +49,7 @@ CameraBasis cameraBasis(const Camera& camera) {
 }
 
 double imagePlaneHalfHeight(const Camera& camera) {
-  if (camera.projection == Projection::Orthographic)
-    return std::max(camera.height, 1e-9) / 2;
+  if (camera.projection == Projection::Orthographic) return std::max(camera.height, 1e-9) / 2;
   double fov = std::clamp(camera.fovY, 1e-6, 180.0 - 1e-6);
   return std::tan(fov * std::numbers::pi / 360.0);
 }
@@ -67,8 +72,8 @@ Ray primaryRay(const Camera& camera, int width, int height, double i, double j) 
   return ray;
 }
 
-std::array<float, 16> viewProjection(const Camera& camera, int width, int height,
-                                     double nearDist, double farDist) {
+std::array<float, 16> viewProjection(const Camera& camera, int width, int height, double nearDist,
+                                     double farDist) {
   const CameraBasis b = cameraBasis(camera);
   const double s = imagePlaneHalfHeight(camera), aspect = double(width) / double(height);
   const bool ortho = camera.projection == Projection::Orthographic;
@@ -82,8 +87,9 @@ std::array<float, 16> viewProjection(const Camera& camera, int width, int height
        -dot(b.right, b.eye) / (s * aspect)},
       {b.up[0] / s, b.up[1] / s, b.up[2] / s, -dot(b.up, b.eye) / s},
       {zA * b.forward[0], zA * b.forward[1], zA * b.forward[2], -zA * dot(b.forward, b.eye) + zB},
-      ortho ? std::array<double, 4>{0, 0, 0, 1}
-            : std::array<double, 4>{b.forward[0], b.forward[1], b.forward[2], -dot(b.forward, b.eye)},
+      ortho
+          ? std::array<double, 4>{0, 0, 0, 1}
+          : std::array<double, 4>{b.forward[0], b.forward[1], b.forward[2], -dot(b.forward, b.eye)},
   }};
   std::array<float, 16> m{};
   for (int r = 0; r < 4; ++r)

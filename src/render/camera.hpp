@@ -43,7 +43,7 @@ double imagePlaneHalfHeight(const Camera& camera);
 // of pixel (i, j)'s ray at that pixel's center: rasterizing geometry with it starts exactly
 // the fragments whose rays meet the geometry. Depth maps [nearDist, farDist] along forward
 // (perspective) or [0, farDist] (orthographic) to [-1, 1].
-std::array<float, 16> viewProjection(const Camera& camera, int width, int height,
-                                     double nearDist, double farDist);
+std::array<float, 16> viewProjection(const Camera& camera, int width, int height, double nearDist,
+                                     double farDist);
 
 }  // namespace zs

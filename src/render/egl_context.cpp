@@ -88,9 +88,13 @@ ContextResult contextOn(EGLDisplay display, const char* name) {
     if (!eglChooseConfig(display, wanted, &config, 1, &found) || found < 1)
       return {nullptr, "no OpenGL-renderable EGL config"};
   }
-  const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+  const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                            3,
+                            EGL_CONTEXT_MINOR_VERSION,
+                            3,
                             EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                            EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+                            EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                            EGL_NONE};
   EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, attribs);
   if (context == EGL_NO_CONTEXT) return {nullptr, eglErrorText("eglCreateContext(core 3.3)")};
 

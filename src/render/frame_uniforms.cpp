@@ -70,7 +70,8 @@ int proxyUniforms(UniformList& u, const Camera& camera, const Domain& domain,
   u.vec3("rtBoxMin", lo);
   u.vec3("rtBoxMax", hi);
   const double farDist = 2 * farthest + 1;
-  std::array<float, 16> viewProj = viewProjection(camera, in.width, in.height, farDist * 1e-7, farDist);
+  std::array<float, 16> viewProj =
+      viewProjection(camera, in.width, in.height, farDist * 1e-7, farDist);
   if (in.bandHeight > 0) {
     // The band's rows fill the target: clip y' = (y - c w) / k, column-major rows 1 and 3.
     const double k = double(in.bandHeight) / in.height;
@@ -166,7 +167,8 @@ FrameUniforms frameUniforms(const RenderSettings& s, const Domain& clip, const F
   u.real("rtCutThreshold", s.cut.threshold);
   u.vec3("rtCutColor", s.cut.color);
   const Contours& contours = s.shading.contours;
-  u.real("rtContourSpacing", contours.spacing > 0 && std::isfinite(contours.spacing) ? contours.spacing : 1.0);
+  u.real("rtContourSpacing",
+         contours.spacing > 0 && std::isfinite(contours.spacing) ? contours.spacing : 1.0);
   u.real("rtContourWidth", std::max(contours.width, 0.0));
   u.vec3("rtContourColor", contours.color);
   const Volume& volume = s.volume;

@@ -13,7 +13,6 @@ bool loadGlEntryPoints(void* (*getProcAddress)(const char*)) {
   return gladLoadGL(reinterpret_cast<GLADloadfunc>(getProcAddress)) != 0;
 }
 
-
 std::string GlContext::describeCurrent() {
   auto text = [](GLenum name) {
     const auto* s = reinterpret_cast<const char*>(glGetString(name));

@@ -1,11 +1,11 @@
 #pragma once
 // GL contexts: takes a backend choice, puts out a current OpenGL 3.3+ core context whose
 // entry points are loaded through glad. Three backends: EGL (the headless default,
-// Mesa's surfaceless platform or else an EGL device; renders into FBOs only), OSMesa (core profile, software only) and a GLFW window
-// (glfw_context.hpp, for the viewer). Every makeCurrent() reloads the glad function
-// pointers from that context's own get-proc-address, because libOSMesa and libOpenGL both
-// export gl* symbols and whichever the linker picked may be the wrong one.
-// Creation never aborts: failures come back as an error string.
+// Mesa's surfaceless platform or else an EGL device; renders into FBOs only), OSMesa (core profile,
+// software only) and a GLFW window (glfw_context.hpp, for the viewer). Every makeCurrent() reloads
+// the glad function pointers from that context's own get-proc-address, because libOSMesa and
+// libOpenGL both export gl* symbols and whichever the linker picked may be the wrong one. Creation
+// never aborts: failures come back as an error string.
 #include <memory>
 #include <string>
 

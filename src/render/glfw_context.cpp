@@ -18,12 +18,11 @@ void onGlfwError(int code, const char* text) {
 
 }  // namespace
 
-GlfwWindowContext::Result GlfwWindowContext::create(int width, int height,
-                                                    const std::string& title, bool visible) {
+GlfwWindowContext::Result GlfwWindowContext::create(int width, int height, const std::string& title,
+                                                    bool visible) {
   if (width <= 0 || height <= 0) return {nullptr, "window size must be positive"};
   glfwSetErrorCallback(onGlfwError);
-  if (g_liveWindows == 0 && !glfwInit())
-    return {nullptr, "glfwInit failed: " + g_lastGlfwError};
+  if (g_liveWindows == 0 && !glfwInit()) return {nullptr, "glfwInit failed: " + g_lastGlfwError};
   glfwDefaultWindowHints();
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
@@ -56,10 +55,16 @@ bool GlfwWindowContext::makeCurrent() {
   return true;
 }
 
-void GlfwWindowContext::releaseCurrent() { glfwMakeContextCurrent(nullptr); }
+void GlfwWindowContext::releaseCurrent() {
+  glfwMakeContextCurrent(nullptr);
+}
 
-void GlfwWindowContext::swapBuffers() { glfwSwapBuffers(window_); }
-bool GlfwWindowContext::shouldClose() const { return glfwWindowShouldClose(window_) != 0; }
+void GlfwWindowContext::swapBuffers() {
+  glfwSwapBuffers(window_);
+}
+bool GlfwWindowContext::shouldClose() const {
+  return glfwWindowShouldClose(window_) != 0;
+}
 void GlfwWindowContext::framebufferSize(int& width, int& height) const {
   glfwGetFramebufferSize(window_, &width, &height);
 }

@@ -15,9 +15,7 @@ struct Image {
   std::vector<std::uint8_t> rgba;  // width*height*4, top row first
 
   std::uint8_t* pixel(int x, int y) { return &rgba[(std::size_t(y) * width + x) * 4]; }
-  const std::uint8_t* pixel(int x, int y) const {
-    return &rgba[(std::size_t(y) * width + x) * 4];
-  }
+  const std::uint8_t* pixel(int x, int y) const { return &rgba[(std::size_t(y) * width + x) * 4]; }
 };
 
 struct DepthMap {

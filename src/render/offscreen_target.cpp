@@ -6,7 +6,9 @@
 
 namespace zs {
 
-OffscreenTarget::~OffscreenTarget() { release(); }
+OffscreenTarget::~OffscreenTarget() {
+  release();
+}
 
 void OffscreenTarget::release() {
   if (fbo_) glDeleteFramebuffers(1, &fbo_);

@@ -39,11 +39,16 @@ class OsMesaContext final : public GlContext {
 }  // namespace
 
 ContextResult createOsMesaContext() {
-  const int attribs[] = {OSMESA_FORMAT,       OSMESA_RGBA,
-                         OSMESA_DEPTH_BITS,   0,
-                         OSMESA_PROFILE,      OSMESA_CORE_PROFILE,
-                         OSMESA_CONTEXT_MAJOR_VERSION, 3,
-                         OSMESA_CONTEXT_MINOR_VERSION, 3,
+  const int attribs[] = {OSMESA_FORMAT,
+                         OSMESA_RGBA,
+                         OSMESA_DEPTH_BITS,
+                         0,
+                         OSMESA_PROFILE,
+                         OSMESA_CORE_PROFILE,
+                         OSMESA_CONTEXT_MAJOR_VERSION,
+                         3,
+                         OSMESA_CONTEXT_MINOR_VERSION,
+                         3,
                          0};
   OSMesaContext context = OSMesaCreateContextAttribs(attribs, nullptr);
   if (!context) return {nullptr, "OSMesaCreateContextAttribs(core 3.3) failed"};

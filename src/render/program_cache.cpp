@@ -9,7 +9,9 @@
 
 namespace zs {
 
-ProgramCache::~ProgramCache() { dropAll(); }
+ProgramCache::~ProgramCache() {
+  dropAll();
+}
 
 unsigned ProgramCache::rebuild(std::string_view vertex, std::string_view fragment,
                                const ProgramVariant& first, std::string& log) {
@@ -32,8 +34,9 @@ unsigned ProgramCache::rebuild(std::string_view vertex, std::string_view fragmen
 
 unsigned ProgramCache::get(const ProgramVariant& v, std::string& log) {
   if (auto it = programs_.find(v); it != programs_.end()) return it->second;
-  const unsigned p = compileProgram(withFrameStorage(vertex_, storage_),
-                                    withFrameStorage(withVariantDefines(fragment_, v), storage_), log);
+  const unsigned p =
+      compileProgram(withFrameStorage(vertex_, storage_),
+                     withFrameStorage(withVariantDefines(fragment_, v), storage_), log);
   if (!p) return 0;
   // Editing a light makes a new variant each time: keep only the current lighting's.
   for (auto it = programs_.begin(); it != programs_.end();) {

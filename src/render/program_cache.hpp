@@ -24,8 +24,8 @@ class ProgramCache {
 
   // New sources: compiles `first` of them at once, so a broken shader is reported here;
   // on failure returns 0 with `log` set and keeps the previous sources and programs.
-  unsigned rebuild(std::string_view vertex, std::string_view fragment,
-                   const ProgramVariant& first, std::string& log);
+  unsigned rebuild(std::string_view vertex, std::string_view fragment, const ProgramVariant& first,
+                   std::string& log);
   bool holds(std::string_view vertex, std::string_view fragment) const {
     return !programs_.empty() && vertex == vertex_ && fragment == fragment_;
   }

@@ -43,8 +43,9 @@ std::string withVariantDefines(std::string_view fragment, const ProgramVariant& 
 // FlatVaryings: the vertex stage reads the uniforms and hands them on as flat varyings,
 // because llvmpipe gathers a uniform at every use in the fragment shader, while it reads a
 // flat input once per group of pixels. The block needs more varying components (105) than
-// GL 3.3 promises (60), and more than NVIDIA's linker places. Uniforms: the fragment stage reads them itself, as on WebGL2; for
-// every other driver, where a uniform read costs no more than a varying.
+// GL 3.3 promises (60), and more than NVIDIA's linker places. Uniforms: the fragment stage reads
+// them itself, as on WebGL2; for every other driver, where a uniform read costs no more than a
+// varying.
 enum class FrameStorage { FlatVaryings, Uniforms };
 
 // FlatVaryings for Mesa's software rasterizers (GL_RENDERER names llvmpipe or softpipe),

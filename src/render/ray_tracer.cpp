@@ -80,8 +80,8 @@ std::string RayTracer::setHierarchy(std::span<const float> packed) {
   GLint maxTexels = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
   if (gpu.count > maxTexels)
-    return "hierarchy: " + std::to_string(gpu.count) + " nodes exceed GL_MAX_TEXTURE_BUFFER_SIZE (" +
-           std::to_string(maxTexels) + ")";
+    return "hierarchy: " + std::to_string(gpu.count) +
+           " nodes exceed GL_MAX_TEXTURE_BUFFER_SIZE (" + std::to_string(maxTexels) + ")";
   fillTextureBuffer(nodeBuffer_, nodeTexture_, gpu.texels);
   hierarchy_ = std::move(gpu);
   return {};
@@ -251,8 +251,8 @@ Frame RayTracer::renderBand(const RenderSettings& settings, const Domain& domain
   return frame;
 }
 
-Frame RayTracer::render(const RenderSettings& settings, const Domain& domain, int width,
-                        int height, const ProgressFn& progress, int tileSize) {
+Frame RayTracer::render(const RenderSettings& settings, const Domain& domain, int width, int height,
+                        const ProgressFn& progress, int tileSize) {
   Frame frame;
   if (std::string error = prepare(settings, domain, width, height, true); !error.empty()) {
     frame.error = error;

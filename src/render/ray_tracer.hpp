@@ -34,7 +34,7 @@ struct Frame {
   // hit of each pixel-center ray, NaN where nothing was hit; empty otherwise.
   DepthMap value;
   double curvatureRange = 0;  // the range the color map used (automatic or the scene's)
-  std::string error;  // non-empty: nothing was rendered
+  std::string error;          // non-empty: nothing was rendered
 };
 
 // Called after each tile; return false to stop (the frame then reports "cancelled").
@@ -108,12 +108,12 @@ class RayTracer {
   double curvatureRange() const { return curvatureRange_; }
 
  private:
-  std::string prepare(const RenderSettings& settings, const Domain& domain, int width,
-                      int height, bool offscreen);
+  std::string prepare(const RenderSettings& settings, const Domain& domain, int width, int height,
+                      bool offscreen);
   // Sets every uniform of `program` (in use) from frame_uniforms.hpp; returns the number of
   // vertices to draw (0: nothing can be hit).
-  int setUniforms(unsigned program, const RenderSettings& settings, const Domain& domain,
-                  int width, int height);
+  int setUniforms(unsigned program, const RenderSettings& settings, const Domain& domain, int width,
+                  int height);
   // Everything a draw needs besides the program, its uniforms and the cleared target: the
   // hierarchy texture, the proxy's vertex array and culling, the viewport.
   void setDrawState(int width, int height);

@@ -62,7 +62,7 @@ struct Light {
   LightKind kind = LightKind::Directional;
   bool enabled = true;
   Vec3 direction{-0.4, -0.6, -1.0};  // directional: the direction the light travels
-  Vec3 position{3, 3, 4};             // point
+  Vec3 position{3, 3, 4};            // point
   double intensity = 0.8;
   Vec3 color{1, 1, 1};
 
@@ -82,7 +82,7 @@ inline std::vector<Light> thesisLights() {
 }
 
 struct Lights {
-  double ambient = 0.15;                   // ambient light, weighted by each material's ambient
+  double ambient = 0.15;  // ambient light, weighted by each material's ambient
   // Where the lights' directions and positions are given: fixed in the world, or fixed to
   // the camera and turning with it, as SURFER's (camera coordinates: from the eye, x right,
   // y up, z towards the viewer, in the world's units; render/camera.hpp).
@@ -113,10 +113,10 @@ inline Light* keyLight(Lights& lights) {
 // the lights' n.l terms) + specular highlights (docs/renderer.md has the whole formula).
 struct Material {
   Vec3 color{0.85, 0.55, 0.2};
-  double specular = 0.5;   // weight of the specular highlights
+  double specular = 0.5;    // weight of the specular highlights
   double shininess = 40.0;  // Phong exponent
-  double ambient = 1.0;    // weight of lights.ambient
-  double diffuse = 1.0;    // weight of the lights' diffuse terms
+  double ambient = 1.0;     // weight of lights.ambient
+  double diffuse = 1.0;     // weight of the lights' diffuse terms
 
   bool operator==(const Material&) const = default;
 };
@@ -141,7 +141,9 @@ struct Materials {
 // diverging color map, or the unit normal as RGB (docs/curvature.md).
 enum class ColorMode { Material, Gauss, Mean, Normal };
 
-inline bool needsCurvature(ColorMode m) { return m == ColorMode::Gauss || m == ColorMode::Mean; }
+inline bool needsCurvature(ColorMode m) {
+  return m == ColorMode::Gauss || m == ColorMode::Mean;
+}
 
 // Contour lines on the surface: where a function g of x, y, z (a formula without parameters)
 // is a multiple of `spacing`, in a band `width` wide measured along the surface.
@@ -175,10 +177,14 @@ enum class TracingMethod { Auto, Bernstein, Sampling, Interval };
 // As tracing.method spells it in a scene (the schema's table lists them in this order).
 inline const char* tracingMethodName(TracingMethod m) {
   switch (m) {
-    case TracingMethod::Auto: return "auto";
-    case TracingMethod::Bernstein: return "bernstein";
-    case TracingMethod::Sampling: return "sampling";
-    case TracingMethod::Interval: return "interval";
+    case TracingMethod::Auto:
+      return "auto";
+    case TracingMethod::Bernstein:
+      return "bernstein";
+    case TracingMethod::Sampling:
+      return "sampling";
+    case TracingMethod::Interval:
+      return "interval";
   }
   return "auto";
 }
@@ -191,10 +197,10 @@ inline constexpr int kMaxBernsteinDegree = 20;
 
 struct Tracing {
   TracingMethod method = TracingMethod::Auto;
-  int intervals = 10;       // sampling: sign samples per leaf segment (thesis: "intervalos")
-  double epsilon = 0.001;   // root refinement stops when the bracket is below this
-  int maxBisections = 40;   // safety bound on refinement steps (both methods)
-  int hits = 4;             // n nearest hits kept per ray
+  int intervals = 10;      // sampling: sign samples per leaf segment (thesis: "intervalos")
+  double epsilon = 0.001;  // root refinement stops when the bracket is below this
+  int maxBisections = 40;  // safety bound on refinement steps (both methods)
+  int hits = 4;            // n nearest hits kept per ray
 
   bool operator==(const Tracing&) const = default;
 };
@@ -225,7 +231,8 @@ inline constexpr int kMaxClipPlanes = 4;
 inline std::vector<ClipPlane> cuttingPlanes(const std::vector<ClipPlane>& planes) {
   std::vector<ClipPlane> out;
   for (const ClipPlane& p : planes) {
-    const double n2 = p.normal[0] * p.normal[0] + p.normal[1] * p.normal[1] + p.normal[2] * p.normal[2];
+    const double n2 =
+        p.normal[0] * p.normal[0] + p.normal[1] * p.normal[1] + p.normal[2] * p.normal[2];
     if (p.enabled && n2 > 0 && std::isfinite(n2) && std::isfinite(p.offset) &&
         int(out.size()) < kMaxClipPlanes)
       out.push_back(p);

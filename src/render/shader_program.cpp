@@ -12,11 +12,15 @@ namespace {
 
 std::string infoLog(GLuint object, bool isProgram) {
   GLint length = 0;
-  if (isProgram) glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
-  else glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+  if (isProgram)
+    glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+  else
+    glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
   std::vector<char> text(std::size_t(std::max(length, 1)), '\0');
-  if (isProgram) glGetProgramInfoLog(object, length, nullptr, text.data());
-  else glGetShaderInfoLog(object, length, nullptr, text.data());
+  if (isProgram)
+    glGetProgramInfoLog(object, length, nullptr, text.data());
+  else
+    glGetShaderInfoLog(object, length, nullptr, text.data());
   return std::string(text.data());
 }
 
@@ -31,8 +35,8 @@ GLuint compileStage(GLenum stage, std::string_view source, std::string& log) {
   if (ok == GL_TRUE) return shader;
   const bool vertex = stage == GL_VERTEX_SHADER;
   log += formatDriverShaderError(vertex ? "vertex shader" : "fragment shader",
-                                 vertex ? Stage::Vertex : Stage::Fragment,
-                                 infoLog(shader, false), source);
+                                 vertex ? Stage::Vertex : Stage::Fragment, infoLog(shader, false),
+                                 source);
   glDeleteShader(shader);
   return 0;
 }

@@ -6,7 +6,9 @@
 
 namespace zs {
 
-ViewTarget::~ViewTarget() { release(); }
+ViewTarget::~ViewTarget() {
+  release();
+}
 
 void ViewTarget::release() {
   if (fbo_) glDeleteFramebuffers(1, &fbo_);

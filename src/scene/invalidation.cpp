@@ -19,8 +19,10 @@ bool sameValue(const KeySpec& spec, Scene& a, Scene& b) {
   return std::visit(
       [&](const auto& field) {
         using F = std::decay_t<decltype(field)>;
-        if constexpr (std::is_same_v<F, scene_detail::EnumRef>) return field.get(a) == field.get(b);
-        else return field(a) == field(b);
+        if constexpr (std::is_same_v<F, scene_detail::EnumRef>)
+          return field.get(a) == field.get(b);
+        else
+          return field(a) == field(b);
       },
       spec.field);
 }

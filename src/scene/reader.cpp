@@ -111,7 +111,8 @@ class Reader {
       const Range any{-std::numeric_limits<double>::infinity(),
                       std::numeric_limits<double>::infinity()};
       if (auto err = readNumber(*value, dotted, any, src_, v)) return err;
-      if (const auto read = paramsRead_.find(name); read != paramsRead_.end() && read->second != v) {
+      if (const auto read = paramsRead_.find(name);
+          read != paramsRead_.end() && read->second != v) {
         return src_.error(positionOf(*value), dotted,
                           "parameter " + name + " is " + formatDouble(v) + " here but " +
                               formatDouble(read->second) + " above",
@@ -163,8 +164,10 @@ class Reader {
           if (!findKey(name) && findListKey(spec, index->str())) {
             return src_.error(positionOf(*index), name,
                               name + " is a key of a [[" + key + "]] table, not of [" + key + "]",
-                              "write [[" + key + "]] (two brackets) above it, one such table "
-                              "per " + noun);
+                              "write [[" + key +
+                                  "]] (two brackets) above it, one such table "
+                                  "per " +
+                                  noun);
           }
           if (auto err = this->entry(name, *index, *value)) return err;
           continue;
@@ -173,9 +176,10 @@ class Reader {
         if (n == 0 || n > size) {
           return src_.error(positionOf(*index), name,
                             "the scene has no " + noun + " " + std::string(index->str()),
-                            size == 0 ? "the scene has no [[" + key + "]] entries yet: add one "
-                                        "as an array, e.g. --set '" + key + "=[" +
-                                        std::string(spec.example) + "]'"
+                            size == 0 ? "the scene has no [[" + key +
+                                            "]] entries yet: add one "
+                                            "as an array, e.g. --set '" +
+                                            key + "=[" + std::string(spec.example) + "]'"
                                       : noun + "s are numbered from 1 to " + std::to_string(size) +
                                             ", in the order of the [[" + key + "]] entries");
         }
@@ -185,7 +189,8 @@ class Reader {
     }
     const toml::array* array = node.as_array();
     if (!array) {
-      return src_.error(positionOf(node), key, key + " must be an array of tables, got " + typeName(node),
+      return src_.error(positionOf(node), key,
+                        key + " must be an array of tables, got " + typeName(node),
                         "write each " + noun + " as its own [[" + key + "]] table");
     }
     if (spec.name == kLightSourcesKey && legacyRead_) {
@@ -244,8 +249,9 @@ class Reader {
 
   SceneError outsideSurfaceList(Position pos, const std::string& key) const {
     return src_.error(pos, key,
-                      key + " describes the first surface, but this file lists its surfaces in "
-                            "[[surface]] tables",
+                      key +
+                          " describes the first surface, but this file lists its surfaces in "
+                          "[[surface]] tables",
                       "move it into the first [[surface]] table (formula = ..., front.color = "
                       "...)");
   }
@@ -269,15 +275,16 @@ class Reader {
                                   bool complete) {
     const toml::table* table = node.as_table();
     if (!table) {
-      return src_.error(positionOf(node), name, name + " must be a table, got " + typeName(node),
-                        "a " + std::string(spec.noun) + " is a table: " + std::string(spec.example));
+      return src_.error(
+          positionOf(node), name, name + " must be a table, got " + typeName(node),
+          "a " + std::string(spec.noun) + " is a table: " + std::string(spec.example));
     }
     if (complete && !spec.requiredKey.empty() && !table->contains(spec.requiredKey)) {
       const std::string required(spec.requiredKey);
-      return src_.error(positionOf(node), name + "." + required,
-                        "this " + std::string(spec.noun) + " has no " + required,
-                        "every [[" + std::string(spec.name) + "]] table needs one: " +
-                            std::string(spec.example));
+      return src_.error(
+          positionOf(node), name + "." + required,
+          "this " + std::string(spec.noun) + " has no " + required,
+          "every [[" + std::string(spec.name) + "]] table needs one: " + std::string(spec.example));
     }
     Scene scratch;
     spec.entry(target, i, scratch);
@@ -302,9 +309,9 @@ class Reader {
       const KeySpec* keySpec = findListKey(spec, local);
       const toml::table* sub = value->as_table();
       if (!keySpec && sub) {
-        const bool holdsKeys = std::any_of(spec.keys.begin(), spec.keys.end(), [&](const KeySpec& k) {
-          return k.name.starts_with(local + ".");
-        });
+        const bool holdsKeys =
+            std::any_of(spec.keys.begin(), spec.keys.end(),
+                        [&](const KeySpec& k) { return k.name.starts_with(local + "."); });
         if (holdsKeys) {
           if (auto err = entryKeys(spec, *sub, name, local + ".", scratch)) return err;
           continue;
@@ -326,8 +333,8 @@ class Reader {
   Scene& scene_;
   const SourceText& src_;
   KeyHistory& seen_;
-  bool legacyRead_ = false;  // this document set lights.directional.* or lights.point.*
-  bool listRead_ = false;    // this document replaced the list with [[lights.source]]
+  bool legacyRead_ = false;       // this document set lights.directional.* or lights.point.*
+  bool listRead_ = false;         // this document replaced the list with [[lights.source]]
   bool surfaceListRead_ = false;  // this document listed its surfaces as [[surface]]
   std::map<std::string, double> paramsRead_;  // the parameters this document gave, by name
 };
@@ -389,8 +396,9 @@ namespace {
 
 // An error about formula[span] at its place in the source, `byteOffsets` mapping the
 // formula's bytes to the source's.
-SceneError formulaError(Span span, const SourceText& src, const std::vector<std::size_t>& byteOffsets,
-                        std::string_view key, const std::string& message, const std::string& hint) {
+SceneError formulaError(Span span, const SourceText& src,
+                        const std::vector<std::size_t>& byteOffsets, std::string_view key,
+                        const std::string& message, const std::string& hint) {
   const std::size_t last = byteOffsets.size() - 1;
   const std::size_t begin = byteOffsets[std::min(span.begin, last)];
   const std::size_t end = std::max(begin, byteOffsets[std::min(span.end, last)]);
@@ -430,13 +438,14 @@ std::optional<SceneError> checkFunctionOfXyz(std::string_view text, const Source
     }
   }
   return formulaError({at, at + params[0].size()}, src, byteOffsets, key,
-                      "\"" + params[0] + "\" is a parameter; this function may use only x, y, z "
-                      "and constants",
+                      "\"" + params[0] +
+                          "\" is a parameter; this function may use only x, y, z "
+                          "and constants",
                       "write the value in its place, e.g. z - 0.5 rather than z - a");
 }
 
-std::optional<SceneError> applyDocument(Scene& scene, const toml::table& doc,
-                                        const SourceText& src, KeyHistory* history) {
+std::optional<SceneError> applyDocument(Scene& scene, const toml::table& doc, const SourceText& src,
+                                        KeyHistory* history) {
   KeyHistory own;
   KeyHistory& seen = history ? *history : own;
   Reader reader(scene, src, seen);

@@ -28,8 +28,8 @@ using KeyHistory = std::vector<KeySet>;
 // Without `history` the document is complete: the keys that constrain each other are
 // checked at its end. With it, the keys read are appended there and the check is left to
 // the caller (crossCheck), which runs it once after the last document.
-std::optional<SceneError> applyDocument(Scene& scene, const toml::table& doc,
-                                        const SourceText& src, KeyHistory* history = nullptr);
+std::optional<SceneError> applyDocument(Scene& scene, const toml::table& doc, const SourceText& src,
+                                        KeyHistory* history = nullptr);
 
 // Domain min below max, eye apart from target, up not along the view: an error points at the
 // latest-written of the keys involved (`fallback`'s start when no document wrote one).

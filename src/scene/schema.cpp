@@ -32,7 +32,7 @@ constexpr std::array<std::string_view, 2> kShapes{"box", "sphere"};  // order of
 // Order of TracingMethod (render/settings.hpp).
 constexpr std::array<std::string_view, 4> kMethods{"auto", "bernstein", "sampling", "interval"};
 constexpr std::array<std::string_view, 2> kLightKinds{"directional", "point"};  // LightKind
-constexpr std::array<std::string_view, 2> kLightSpaces{"world", "camera"};  // LightSpace
+constexpr std::array<std::string_view, 2> kLightSpaces{"world", "camera"};      // LightSpace
 constexpr std::array<std::string_view, 4> kColorModes{"material", "gauss", "mean", "normal"};
 constexpr std::array<std::string_view, 2> kRenderModes{"surface", "volume"};  // RenderMode
 
@@ -46,8 +46,8 @@ const EnumRef kCriteriaRef{[](const Scene& s) { return static_cast<int>(s.octree
                            [](Scene& s, int v) { s.octree.criteria = static_cast<Criteria>(v); },
                            kCriteria};
 const EnumRef kShapeRef{[](const Scene& s) { return static_cast<int>(s.domain.shape); },
-                         [](Scene& s, int v) { s.domain.shape = static_cast<DomainShape>(v); },
-                         kShapes};
+                        [](Scene& s, int v) { s.domain.shape = static_cast<DomainShape>(v); },
+                        kShapes};
 const EnumRef kMethodRef{
     [](const Scene& s) { return static_cast<int>(s.render.tracing.method); },
     [](Scene& s, int v) { s.render.tracing.method = static_cast<TracingMethod>(v); }, kMethods};
@@ -55,9 +55,9 @@ const EnumRef kMethodRef{
 const EnumRef kColorModeRef{
     [](const Scene& s) { return static_cast<int>(s.render.shading.color); },
     [](Scene& s, int v) { s.render.shading.color = static_cast<ColorMode>(v); }, kColorModes};
-const EnumRef kRenderModeRef{
-    [](const Scene& s) { return static_cast<int>(s.render.mode); },
-    [](Scene& s, int v) { s.render.mode = static_cast<RenderMode>(v); }, kRenderModes};
+const EnumRef kRenderModeRef{[](const Scene& s) { return static_cast<int>(s.render.mode); },
+                             [](Scene& s, int v) { s.render.mode = static_cast<RenderMode>(v); },
+                             kRenderModes};
 const EnumRef kLightSpaceRef{
     [](const Scene& s) { return static_cast<int>(s.render.lights.space); },
     [](Scene& s, int v) { s.render.lights.space = static_cast<LightSpace>(v); }, kLightSpaces};
@@ -98,22 +98,41 @@ const KeySpec kKeys[] = {
     {"lights.space", kVariant, kLightSpaceRef, kAny},
     // The thesis' two lights under their old names: sources[0] and [1] (reader.cpp checks
     // that they are still a directional and a point light first). Read, never written.
-    {"lights.directional.direction", kVariant, ZS_FIELD(render.lights.sources[0].direction), kAny, true, 0},
-    {"lights.directional.intensity", kVariant, ZS_FIELD(render.lights.sources[0].intensity), kNonNegative, false, 0},
-    {"lights.directional.color", kVariant, ZS_FIELD(render.lights.sources[0].color), kUnit, false, 0},
-    {"lights.point.position", kVariant, ZS_FIELD(render.lights.sources[1].position), kAny, false, 1},
-    {"lights.point.intensity", kVariant, ZS_FIELD(render.lights.sources[1].intensity), kNonNegative, false, 1},
+    {"lights.directional.direction", kVariant, ZS_FIELD(render.lights.sources[0].direction), kAny,
+     true, 0},
+    {"lights.directional.intensity", kVariant, ZS_FIELD(render.lights.sources[0].intensity),
+     kNonNegative, false, 0},
+    {"lights.directional.color", kVariant, ZS_FIELD(render.lights.sources[0].color), kUnit, false,
+     0},
+    {"lights.point.position", kVariant, ZS_FIELD(render.lights.sources[1].position), kAny, false,
+     1},
+    {"lights.point.intensity", kVariant, ZS_FIELD(render.lights.sources[1].intensity), kNonNegative,
+     false, 1},
     {"lights.point.color", kVariant, ZS_FIELD(render.lights.sources[1].color), kUnit, false, 1},
-    {"materials.front.color", kFrame | kShaderIfSeveral, ZS_FIELD(render.materials.front.color), kUnit},
-    {"materials.front.ambient", kFrame | kShaderIfSeveral, ZS_FIELD(render.materials.front.ambient), kUnit},
-    {"materials.front.diffuse", kFrame | kShaderIfSeveral, ZS_FIELD(render.materials.front.diffuse), kUnit},
-    {"materials.front.specular", kFrame | kShaderIfSeveral, ZS_FIELD(render.materials.front.specular), kUnit},
-    {"materials.front.shininess", kFrame | kShaderIfSeveral, ZS_FIELD(render.materials.front.shininess), {0, 10000}},
-    {"materials.back.color", kFrame | kShaderIfSeveral, ZS_FIELD(render.materials.back.color), kUnit},
-    {"materials.back.ambient", kFrame | kShaderIfSeveral, ZS_FIELD(render.materials.back.ambient), kUnit},
-    {"materials.back.diffuse", kFrame | kShaderIfSeveral, ZS_FIELD(render.materials.back.diffuse), kUnit},
-    {"materials.back.specular", kFrame | kShaderIfSeveral, ZS_FIELD(render.materials.back.specular), kUnit},
-    {"materials.back.shininess", kFrame | kShaderIfSeveral, ZS_FIELD(render.materials.back.shininess), {0, 10000}},
+    {"materials.front.color", kFrame | kShaderIfSeveral, ZS_FIELD(render.materials.front.color),
+     kUnit},
+    {"materials.front.ambient", kFrame | kShaderIfSeveral, ZS_FIELD(render.materials.front.ambient),
+     kUnit},
+    {"materials.front.diffuse", kFrame | kShaderIfSeveral, ZS_FIELD(render.materials.front.diffuse),
+     kUnit},
+    {"materials.front.specular", kFrame | kShaderIfSeveral,
+     ZS_FIELD(render.materials.front.specular), kUnit},
+    {"materials.front.shininess",
+     kFrame | kShaderIfSeveral,
+     ZS_FIELD(render.materials.front.shininess),
+     {0, 10000}},
+    {"materials.back.color", kFrame | kShaderIfSeveral, ZS_FIELD(render.materials.back.color),
+     kUnit},
+    {"materials.back.ambient", kFrame | kShaderIfSeveral, ZS_FIELD(render.materials.back.ambient),
+     kUnit},
+    {"materials.back.diffuse", kFrame | kShaderIfSeveral, ZS_FIELD(render.materials.back.diffuse),
+     kUnit},
+    {"materials.back.specular", kFrame | kShaderIfSeveral, ZS_FIELD(render.materials.back.specular),
+     kUnit},
+    {"materials.back.shininess",
+     kFrame | kShaderIfSeveral,
+     ZS_FIELD(render.materials.back.shininess),
+     {0, 10000}},
     {"shading.color", kVariant | kShader, kColorModeRef, kAny},
     {"shading.curvature_range", kFrame, ZS_FIELD(render.shading.curvatureRange), kNonNegative},
     {"shading.shadows", kVariant, ZS_FIELD(render.shading.shadows), kAny},
@@ -131,9 +150,12 @@ const KeySpec kKeys[] = {
     {"highlights.cut.enabled", kFrame, ZS_FIELD(render.cut.enabled), kAny},
     {"highlights.cut.tolerance", kFrame, ZS_FIELD(render.cut.threshold), kNonNegative},
     {"highlights.cut.color", kFrame, ZS_FIELD(render.cut.color), kUnit},
-    {"highlights.intersection.enabled", kFrame | kShaderIfSeveral, ZS_FIELD(render.intersection.enabled), kAny},
-    {"highlights.intersection.tolerance", kFrame | kShaderIfSeveral, ZS_FIELD(render.intersection.threshold), kNonNegative},
-    {"highlights.intersection.color", kFrame | kShaderIfSeveral, ZS_FIELD(render.intersection.color), kUnit},
+    {"highlights.intersection.enabled", kFrame | kShaderIfSeveral,
+     ZS_FIELD(render.intersection.enabled), kAny},
+    {"highlights.intersection.tolerance", kFrame | kShaderIfSeveral,
+     ZS_FIELD(render.intersection.threshold), kNonNegative},
+    {"highlights.intersection.color", kFrame | kShaderIfSeveral,
+     ZS_FIELD(render.intersection.color), kUnit},
     {"highlights.singular.enabled", kShader, ZS_FIELD(render.singular.enabled), kAny},
     {"highlights.singular.radius", kShader, ZS_FIELD(render.singular.threshold), kPositive},
     {"highlights.singular.color", kShader, ZS_FIELD(render.singular.color), kUnit},
@@ -174,7 +196,10 @@ const KeySpec kSurfaceKeys[] = {
     {"front.ambient", kFrame | kShaderIfSeveral, ZS_SURFACE(materials.front.ambient), kUnit},
     {"front.diffuse", kFrame | kShaderIfSeveral, ZS_SURFACE(materials.front.diffuse), kUnit},
     {"front.specular", kFrame | kShaderIfSeveral, ZS_SURFACE(materials.front.specular), kUnit},
-    {"front.shininess", kFrame | kShaderIfSeveral, ZS_SURFACE(materials.front.shininess), {0, 10000}},
+    {"front.shininess",
+     kFrame | kShaderIfSeveral,
+     ZS_SURFACE(materials.front.shininess),
+     {0, 10000}},
     {"back.color", kFrame | kShaderIfSeveral, ZS_SURFACE(materials.back.color), kUnit},
     {"back.ambient", kFrame | kShaderIfSeveral, ZS_SURFACE(materials.back.ambient), kUnit},
     {"back.diffuse", kFrame | kShaderIfSeveral, ZS_SURFACE(materials.back.diffuse), kUnit},

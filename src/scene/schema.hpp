@@ -67,7 +67,7 @@ struct ListSpec {
   std::string_view noun;          // "light"
   std::span<const KeySpec> keys;  // of one entry
   std::size_t maxSize;
-  std::string_view example;       // one entry as an inline table, for messages
+  std::string_view example;  // one entry as an inline table, for messages
   std::string_view tooManyHint;
   std::size_t (*size)(const Scene&);
   void (*resize)(Scene&, std::size_t);

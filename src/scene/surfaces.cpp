@@ -30,7 +30,8 @@ Materials surfaceMaterials(std::size_t i) {
 
 std::string addSurface(Scene& scene, std::string_view formula) {
   if (surfaceCount(scene) >= static_cast<std::size_t>(kMaxSurfaces)) {
-    return "error: at most " + std::to_string(kMaxSurfaces) + " surfaces in a scene\n"
+    return "error: at most " + std::to_string(kMaxSurfaces) +
+           " surfaces in a scene\n"
            "hint: combine surfaces into one formula (a product F*G draws both)\n";
   }
   const ParseResult parsed = parseFormula(formula);

@@ -5,10 +5,10 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "expr/number_text.hpp"
 #include "scene/hints.hpp"
 #include "scene/reader.hpp"
 #include "scene/string_map.hpp"
-#include "expr/number_text.hpp"
 
 namespace zs::scene_detail {
 

@@ -75,7 +75,8 @@ void SurfaceWorker::run() {
     lock.unlock();
     if (wake_) wake_();
     lock.lock();
-    if (later && !cv_.wait_for(lock, kLaterDelay, [this] { return stop_ || queued_.has_value(); })) {
+    if (later &&
+        !cv_.wait_for(lock, kLaterDelay, [this] { return stop_ || queued_.has_value(); })) {
       lock.unlock();
       later_(built);
       lock.lock();

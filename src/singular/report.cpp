@@ -16,7 +16,8 @@ std::string format(const char* fmt, double a, double b, double c) {
 
 std::string kind(const SingularPoint& p) {
   if (p.isNode()) return "A1 node";
-  return "degenerate (" + std::to_string(p.zero) + " zero eigenvalue" + (p.zero > 1 ? "s" : "") + ")";
+  return "degenerate (" + std::to_string(p.zero) + " zero eigenvalue" + (p.zero > 1 ? "s" : "") +
+         ")";
 }
 
 std::size_t find(std::vector<std::size_t>& parent, std::size_t i) {
@@ -37,7 +38,8 @@ std::vector<UncertifiedRegion> uncertifiedRegions(const SingularResult& result) 
   for (std::size_t i = 0; i < order.size(); ++i) {
     const Box& a = boxes[order[i]];
     const double slack = 1e-9 * (1 + std::abs(a.max[0]));
-    for (std::size_t j = i + 1; j < order.size() && boxes[order[j]].min[0] <= a.max[0] + slack; ++j) {
+    for (std::size_t j = i + 1; j < order.size() && boxes[order[j]].min[0] <= a.max[0] + slack;
+         ++j) {
       const Box& b = boxes[order[j]];
       bool touch = true;
       for (std::size_t k = 1; k < 3; ++k)
@@ -64,15 +66,18 @@ std::vector<UncertifiedRegion> uncertifiedRegions(const SingularResult& result) 
 }
 
 std::string singularTable(const SingularResult& result) {
-  std::string s = "   #            x            y            z    box width       F(p)   Hessian eigenvalues                     kind\n";
+  std::string s =
+      "   #            x            y            z    box width       F(p)   Hessian eigenvalues   "
+      "                  kind\n";
   int n = 0, nodes = 0;
   for (const SingularPoint& p : result.points) {
     char line[256];
-    std::snprintf(line, sizeof line, "%4d %12.8f %12.8f %12.8f %12.2e %10.2e   %s   %s\n", ++n,
-                  p.point[0], p.point[1], p.point[2], p.boxWidth, p.f,
-                  format("%11.4g %11.4g %11.4g", p.eigenvalues[0], p.eigenvalues[1],
-                         p.eigenvalues[2]).c_str(),
-                  kind(p).c_str());
+    std::snprintf(
+        line, sizeof line, "%4d %12.8f %12.8f %12.8f %12.2e %10.2e   %s   %s\n", ++n, p.point[0],
+        p.point[1], p.point[2], p.boxWidth, p.f,
+        format("%11.4g %11.4g %11.4g", p.eigenvalues[0], p.eigenvalues[1], p.eigenvalues[2])
+            .c_str(),
+        kind(p).c_str());
     s += line;
     nodes += p.isNode();
   }
@@ -82,9 +87,9 @@ std::string singularTable(const SingularResult& result) {
          "close to tell apart):\n";
     for (const UncertifiedRegion& r : regions) {
       char line[256];
-      std::snprintf(line, sizeof line, "  [%.6g, %.6g] x [%.6g, %.6g] x [%.6g, %.6g]  (%zu boxes)\n",
-                    r.box.min[0], r.box.max[0], r.box.min[1], r.box.max[1], r.box.min[2],
-                    r.box.max[2], r.boxes);
+      std::snprintf(line, sizeof line,
+                    "  [%.6g, %.6g] x [%.6g, %.6g] x [%.6g, %.6g]  (%zu boxes)\n", r.box.min[0],
+                    r.box.max[0], r.box.min[1], r.box.max[1], r.box.min[2], r.box.max[2], r.boxes);
       s += line;
     }
   }
@@ -102,8 +107,8 @@ std::string singularCsv(const SingularResult& result) {
   for (const SingularPoint& p : result.points) {
     std::snprintf(line, sizeof line, "%s,%.17g,%.17g,%.17g,%.3g,%.3g,%.10g,%.10g,%.10g,%d,%d,%d\n",
                   p.isNode() ? "node" : "degenerate", p.point[0], p.point[1], p.point[2],
-                  p.boxWidth, p.f, p.eigenvalues[0], p.eigenvalues[1], p.eigenvalues[2],
-                  p.positive, p.negative, p.zero);
+                  p.boxWidth, p.f, p.eigenvalues[0], p.eigenvalues[1], p.eigenvalues[2], p.positive,
+                  p.negative, p.zero);
     s += line;
   }
   for (const UncertifiedRegion& r : uncertifiedRegions(result)) {

@@ -69,14 +69,24 @@ class Problem {
     for (NodeId id : reachable(g, roots)) {
       const Node& n = g[id];
       switch (n.op) {
-        case Op::Abs: case Op::Sign: watch(Kink::AtZero, n.a); break;
-        case Op::Floor: case Op::Ceil: watch(Kink::AtInteger, n.a); break;
-        case Op::Min: case Op::Max: watch(Kink::AtZero, g.binary(Op::Sub, n.a, n.b)); break;
+        case Op::Abs:
+        case Op::Sign:
+          watch(Kink::AtZero, n.a);
+          break;
+        case Op::Floor:
+        case Op::Ceil:
+          watch(Kink::AtInteger, n.a);
+          break;
+        case Op::Min:
+        case Op::Max:
+          watch(Kink::AtZero, g.binary(Op::Sub, n.a, n.b));
+          break;
         case Op::Atan2:  // the cut: y = 0, x < 0
           watch(Kink::BranchCut, n.a);
           roots.push_back(n.b);
           break;
-        default: break;
+        default:
+          break;
       }
     }
     full_ = compileTape(g, roots);
@@ -121,16 +131,19 @@ class Problem {
     const Interval a = outputs_[at];
     if (a.isEmpty()) return true;
     switch (kind) {
-      case Kink::AtZero: return a.containsZero();
-      case Kink::AtInteger: return std::floor(a.lo) != std::floor(a.hi) || std::floor(a.lo) == a.lo;
-      case Kink::BranchCut: return a.containsZero() && !(outputs_[at + 1].lo > 0);
+      case Kink::AtZero:
+        return a.containsZero();
+      case Kink::AtInteger:
+        return std::floor(a.lo) != std::floor(a.hi) || std::floor(a.lo) == a.lo;
+      case Kink::BranchCut:
+        return a.containsZero() && !(outputs_[at + 1].lo > 0);
     }
     return true;
   }
 
   std::vector<double> params_;
   std::vector<std::pair<Kink, std::size_t>> kinks_;  // and the output of its argument
-  std::vector<Interval> outputs_;                     // every output of the full tape
+  std::vector<Interval> outputs_;                    // every output of the full tape
   Tape base_, full_;
   std::optional<IntervalEvaluator> overBoxes_, overPoints_;
   std::optional<PointEvaluator> points_;
@@ -158,7 +171,8 @@ double widest(const Box& b) {
 // Hessian at m): K = m - Y g(m) + (I - Y H(X)) (X - m). Every zero of grad F in X lies in K;
 // K inside the interior of X proves exactly one (Krawczyk 1969, Moore 1977).
 Box krawczyk(const Box& x, const std::array<double, 3>& m, const Mat3& y,
-             const std::array<Interval, kOutputs>& atM, const std::array<Interval, kOutputs>& overX) {
+             const std::array<Interval, kOutputs>& atM,
+             const std::array<Interval, kOutputs>& overX) {
   Box k;
   for (std::size_t i = 0; i < 3; ++i) {
     Interval acc = Interval::point(m[i]);
@@ -168,7 +182,8 @@ Box krawczyk(const Box& x, const std::array<double, 3>& m, const Mat3& y,
       Interval row = Interval::point(i == j ? 1.0 : 0.0);
       for (std::size_t c = 0; c < 3; ++c)
         row = ia::sub(row, ia::mul(Interval::point(y[i][c]), overX[kHess + 3 * c + j]));
-      acc = ia::add(acc, ia::mul(row, ia::sub(Interval{x.min[j], x.max[j]}, Interval::point(m[j]))));
+      acc =
+          ia::add(acc, ia::mul(row, ia::sub(Interval{x.min[j], x.max[j]}, Interval::point(m[j]))));
     }
     k.min[i] = acc.lo;
     k.max[i] = acc.hi;
@@ -188,7 +203,9 @@ bool within(const Box& inner, const Box& outer) {
   return true;
 }
 
-bool holds(const Box& b, const std::array<double, 3>& p) { return within(Box{p, p}, b); }
+bool holds(const Box& b, const std::array<double, 3>& p) {
+  return within(Box{p, p}, b);
+}
 
 Mat3 hessianAt(const std::array<double, kOutputs>& v) {
   Mat3 h;
@@ -281,7 +298,8 @@ Problem::OverBox tightened(Problem& problem, const Box& x, const std::array<doub
       const Interval square = ia::mul(Interval::point(0.5), ia::powi(d[j], 2));
       taylor = ia::add(taylor, ia::mul(over[derivativeOf(derivativeOf(o, j), j)], square));
       for (std::size_t k = j + 1; k < 3; ++k)
-        taylor = ia::add(taylor, ia::mul(over[derivativeOf(derivativeOf(o, j), k)], ia::mul(d[j], d[k])));
+        taylor = ia::add(taylor,
+                         ia::mul(over[derivativeOf(derivativeOf(o, j), k)], ia::mul(d[j], d[k])));
     }
     out.v[o] = narrowed(out.v[o], taylor);
   }
@@ -355,8 +373,8 @@ std::variant<SingularResult, std::string> findSingularPoints(const Formula& form
     if (!(std::abs(v[kF]) <= settings.fTolerance * scale)) return;
     // In the closed domain, to rounding: a node on a face of the domain is kept.
     const double slack = 1e-9 * size;
-    if (ball && std::hypot(p[0] - ball->center[0], p[1] - ball->center[1],
-                           p[2] - ball->center[2]) > ball->radius + slack)
+    if (ball && std::hypot(p[0] - ball->center[0], p[1] - ball->center[1], p[2] - ball->center[2]) >
+                    ball->radius + slack)
       return;
     for (std::size_t a = 0; a < 3; ++a)
       if (!(p[a] >= domain.min[a] - slack && p[a] <= domain.max[a] + slack)) return;
@@ -369,9 +387,12 @@ std::variant<SingularResult, std::string> findSingularPoints(const Formula& form
     sp.f = v[kF];
     sp.eigenvalues = lambda;
     for (double l : lambda) {
-      if (std::abs(l) <= 1e-9 * scale) ++sp.zero;
-      else if (l > 0) ++sp.positive;
-      else ++sp.negative;
+      if (std::abs(l) <= 1e-9 * scale)
+        ++sp.zero;
+      else if (l > 0)
+        ++sp.positive;
+      else
+        ++sp.negative;
     }
     result.points.push_back(sp);
   };

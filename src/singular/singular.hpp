@@ -27,16 +27,16 @@
 namespace zs {
 
 struct SingularSettings {
-  int maxDepth = 14;          // halvings of the domain per axis before a box is uncertified
-  double fTolerance = 1e-8;   // |F| at a certified critical point, relative to max(1, |F| scale)
+  int maxDepth = 14;         // halvings of the domain per axis before a box is uncertified
+  double fTolerance = 1e-8;  // |F| at a certified critical point, relative to max(1, |F| scale)
   std::size_t boxBudget = 4'000'000;  // boxes tested before giving up with an error
 };
 
 struct SingularPoint {
   std::array<double, 3> point{};
-  double boxWidth = 0;  // widest side of the box the Krawczyk test certified
-  double f = 0;         // F at the point (zero to the tolerance)
-  std::array<double, 3> eigenvalues{};  // of the Hessian at the point, ascending
+  double boxWidth = 0;                       // widest side of the box the Krawczyk test certified
+  double f = 0;                              // F at the point (zero to the tolerance)
+  std::array<double, 3> eigenvalues{};       // of the Hessian at the point, ascending
   int positive = 0, negative = 0, zero = 0;  // its signature (zero: |lambda| tiny)
   // Non-degenerate Hessian: an ordinary double point (node, A1).
   bool isNode() const { return zero == 0; }

@@ -57,8 +57,8 @@ TEST(Tiles, BandsAssembleIntoExactlyTheWholePicture) {
   std::vector<std::string> assemble{"assemble", "-o", (dir / "stacked.png").string()};
   for (int i = 0; i < 3; ++i) {
     const std::string band = (dir / ("band" + std::to_string(i) + ".png")).string();
-    ASSERT_EQ(runZeroset({"render", formula, "--size", "97x83", "--tile",
-                          std::to_string(i) + "/3", "-o", band},
+    ASSERT_EQ(runZeroset({"render", formula, "--size", "97x83", "--tile", std::to_string(i) + "/3",
+                          "-o", band},
                          dir, out),
               0)
         << out;
@@ -78,9 +78,9 @@ TEST(Tiles, BandsAssembleIntoExactlyTheWholePicture) {
       << out;
   EXPECT_EQ(load(dir / "tall.png").height, 8000) << out;
   // Bands of different widths are refused.
-  ASSERT_EQ(runZeroset({"render", "x", "--size", "40x32", "-o", (dir / "narrow.png").string()},
-                       dir, out),
-            0);
+  ASSERT_EQ(
+      runZeroset({"render", "x", "--size", "40x32", "-o", (dir / "narrow.png").string()}, dir, out),
+      0);
   EXPECT_NE(runZeroset({"assemble", "-o", (dir / "bad.png").string(), (dir / "whole.png").string(),
                         (dir / "narrow.png").string()},
                        dir, out),
@@ -129,11 +129,11 @@ TEST(Animate, LevelFramesAreEachThatLevelsPicture) {
   for (const std::string key : {"surface.level", "surface.2.level"}) {
     const fs::path frames = dir / (key == "surface.level" ? "first" : "second");
     std::string out;
-    ASSERT_EQ(runZeroset({"render", "x^2+y^2+z^2-1", "--surface", "z-0.25", "--animate",
-                          key + "=-0.5:0.5", "--frames", "3", "--size", "64x48", "-o",
-                          frames.string()},
-                         dir, out),
-              0)
+    ASSERT_EQ(
+        runZeroset({"render", "x^2+y^2+z^2-1", "--surface", "z-0.25", "--animate",
+                    key + "=-0.5:0.5", "--frames", "3", "--size", "64x48", "-o", frames.string()},
+                   dir, out),
+        0)
         << out;
     const Image first = load(frames / "frame-0000.png");
     const Image last = load(frames / "frame-0002.png");

@@ -72,7 +72,8 @@ TEST(Animation, SurfaceIsRebuiltOnlyWhenTheSchemaSaysSo) {
   base.moreSurfaces = {SurfaceEntry{"z - h", 0, {}}};
   EXPECT_TRUE(rebuildsEachFrame(*parseAnimation("params.h=0:1", 3, error), base));
   EXPECT_TRUE(rebuildsEachFrame(*parseAnimation("surface.2.level=0:1", 3, error), base));
-  EXPECT_TRUE(rebuildsEachFrame(*parseAnimation("highlights.intersection.tolerance=0:1", 3, error), base));
+  EXPECT_TRUE(
+      rebuildsEachFrame(*parseAnimation("highlights.intersection.tolerance=0:1", 3, error), base));
   EXPECT_TRUE(rebuildsEachFrame(*parseAnimation("lights.ambient=0:1", 3, error), base));
 }
 

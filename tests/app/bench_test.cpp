@@ -111,13 +111,15 @@ TEST(BenchReport, MarkdownPutsOursBesideTheThesisAndJudgesTheGoals) {
   // The first frame a user waits for is the default method's (200 ms here).
   EXPECT_NE(md.find("First frame <= 300 ms (issue 7): 1 of 1 surfaces - **met**; <= 150 ms "
                     "(goal): 0 of 1"),
-            std::string::npos) << md;
+            std::string::npos)
+      << md;
   EXPECT_NE(md.find("| 1 | sampling | 0.00 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| 92 |"), std::string::npos);  // JIT estimate: 100 - 8 ms (sampling)
   EXPECT_NE(md.find("| 98 |"), std::string::npos);  // 100 - 2 ms (bernstein)
   EXPECT_NE(md.find("Default method (bernstein), level 1, at >= 60 fps (issue 10): 1 of 1 - "
                     "**met**"),
-            std::string::npos) << md;
+            std::string::npos)
+      << md;
   // Levels table: sampling 8 ms beside bernstein 2 ms at level 1.
   EXPECT_NE(md.find("| 8.00 | 125 | 2.00 | 500 | 4.00x |"), std::string::npos) << md;
 }
@@ -140,7 +142,8 @@ TEST(BenchReport, InputReportPutsTheMethodsSideBySideAndExplainsAFallback) {
   std::string md = inputMarkdownReport(r);
   EXPECT_NE(md.find("# zeroset bench: x^4 + y^4 + z^4 - 1"), std::string::npos) << md;
   EXPECT_NE(md.find("| sampling | 60.00 | 16.7 | 58.00 | 70.00 | 250 | 220 | 8 |"),
-            std::string::npos) << md;
+            std::string::npos)
+      << md;
   EXPECT_NE(md.find("| bernstein | 15.00 | 66.7 |"), std::string::npos) << md;
   EXPECT_NE(md.find("bernstein is 4.00x the speed of sampling"), std::string::npos) << md;
 

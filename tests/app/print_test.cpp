@@ -14,7 +14,9 @@
 namespace zs::test {
 namespace {
 
-std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+std::string quoted(const std::filesystem::path& p) {
+  return "'" + p.string() + "'";
+}
 
 TEST(Print, ThePageHoldsTheFormulaTheValuesAndThePictureOfRender) {
   const auto dir = freshDir("print");
@@ -29,7 +31,8 @@ TEST(Print, ThePageHoldsTheFormulaTheValuesAndThePictureOfRender) {
                   std::to_string(side) + " -o " + quoted(dir / "render.png") + " > /dev/null"),
             0);
 
-  ASSERT_EQ(shell("pdftotext -raw " + quoted(dir / "page.pdf") + " " + quoted(dir / "page.txt")), 0);
+  ASSERT_EQ(shell("pdftotext -raw " + quoted(dir / "page.pdf") + " " + quoted(dir / "page.txt")),
+            0);
   const std::string text = readText(dir / "page.txt");
   EXPECT_NE(text.find("One sheet"), std::string::npos) << text;
   // Typeset, not typed: x², and a real minus sign (pdftotext writes a superscript inline).
@@ -59,11 +62,12 @@ TEST(Print, ThePageHoldsTheFormulaTheValuesAndThePictureOfRender) {
 // A scene of several surfaces: one equation per surface, in order, each at its level.
 TEST(Print, SeveralSurfacesHaveAnEquationEach) {
   const auto dir = freshDir("print_surfaces");
-  ASSERT_EQ(shell(std::string(ZS_ZEROSET_EXE) + " print 'x^2 + y^2 + z^2 - 1' --surface 'z' " +
-                  "--set surface.2.level=0.5 --dpi 30 -o " + quoted(dir / "page.pdf") +
-                  " > /dev/null"),
+  ASSERT_EQ(
+      shell(std::string(ZS_ZEROSET_EXE) + " print 'x^2 + y^2 + z^2 - 1' --surface 'z' " +
+            "--set surface.2.level=0.5 --dpi 30 -o " + quoted(dir / "page.pdf") + " > /dev/null"),
+      0);
+  ASSERT_EQ(shell("pdftotext -raw " + quoted(dir / "page.pdf") + " " + quoted(dir / "page.txt")),
             0);
-  ASSERT_EQ(shell("pdftotext -raw " + quoted(dir / "page.pdf") + " " + quoted(dir / "page.txt")), 0);
   const std::string text = readText(dir / "page.txt");
   const auto sphere = text.find("− 1 = 0");
   const auto plane = text.find("z = 0.5");
@@ -85,9 +89,9 @@ TEST(Print, SvgPagesAndBadPapersAndExtensions) {
                   quoted(dir / "paper.err")),
             0);
   EXPECT_NE(readText(dir / "paper.err").find("hint: A4, A3 or letter"), std::string::npos);
-  EXPECT_NE(shell(zeroset + " print x -o " + quoted(dir / "p.png") + " 2> " +
-                  quoted(dir / "ext.err")),
-            0);
+  EXPECT_NE(
+      shell(zeroset + " print x -o " + quoted(dir / "p.png") + " 2> " + quoted(dir / "ext.err")),
+      0);
   EXPECT_NE(readText(dir / "ext.err").find(".pdf or .svg"), std::string::npos)
       << readText(dir / "ext.err");
 }

@@ -25,10 +25,13 @@ double since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-[[noreturn]] void execChild(const std::vector<std::string>& argv, const std::vector<EnvChange>& env) {
+[[noreturn]] void execChild(const std::vector<std::string>& argv,
+                            const std::vector<EnvChange>& env) {
   for (const EnvChange& e : env) {
-    if (e.value.empty()) unsetenv(e.name.c_str());
-    else setenv(e.name.c_str(), e.value.c_str(), 1);
+    if (e.value.empty())
+      unsetenv(e.name.c_str());
+    else
+      setenv(e.name.c_str(), e.value.c_str(), 1);
   }
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
@@ -39,8 +42,8 @@ double since(Clock::time_point start) {
 
 }  // namespace
 
-Child::Child(const std::vector<std::string>& argv, const std::vector<EnvChange>& env,
-             Stdio stdio, const std::filesystem::path& outputFile) {
+Child::Child(const std::vector<std::string>& argv, const std::vector<EnvChange>& env, Stdio stdio,
+             const std::filesystem::path& outputFile) {
   if (stdio == Stdio::Pty) {
     int master = -1;
     pid_ = forkpty(&master, nullptr, nullptr, nullptr);

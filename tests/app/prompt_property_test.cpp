@@ -5,22 +5,21 @@
 // draws (the image tests' tolerance), and an edit it refused must leave the scene as it
 // was. The session stage's own, longer run is tests/session/session_property_test.cpp.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <random>
 #include <string>
-#include <unistd.h>
-
-#include <cstdio>
 #include <variant>
 
 #include "app/repl/command.hpp"
 #include "app/repl/headless_target.hpp"
 #include "process.hpp"
 #include "render/image.hpp"
-#include "support/random_edit.hpp"
 #include "scene/scene_io.hpp"
+#include "support/random_edit.hpp"
 
 namespace zs::app {
 namespace {
@@ -42,8 +41,8 @@ std::string pathAfterWrote(const std::string& out) {
 }
 
 TEST(PromptProperty, EveryEditDrawsWhatAFreshRenderOfTheSavedSceneDraws) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("zs-prompt-property-" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("zs-prompt-property-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   HeadlessTarget target(dir);
@@ -97,8 +96,7 @@ TEST(PromptProperty, EveryEditDrawsWhatAFreshRenderOfTheSavedSceneDraws) {
     ASSERT_EQ(readPng(picture, a), "");
     ASSERT_EQ(readPng(reference.string(), b), "");
     const ImageDiff diff = compareImages(a, b);
-    EXPECT_TRUE(withinTolerance(diff)) << diff.fractionOver * 100 << "% of pixels differ:\n"
-                                       << now;
+    EXPECT_TRUE(withinTolerance(diff)) << diff.fractionOver * 100 << "% of pixels differ:\n" << now;
     ++compared;
     before = now;
   }

@@ -15,7 +15,9 @@ namespace {
 constexpr const char* kPrompt = "F(x,y,z) = ";
 
 std::vector<EnvChange> headlessEnv(const std::filesystem::path& dir) {
-  return {{"DISPLAY", ""}, {"WAYLAND_DISPLAY", ""}, {"HOME", dir.string()},
+  return {{"DISPLAY", ""},
+          {"WAYLAND_DISPLAY", ""},
+          {"HOME", dir.string()},
           {"ZS_OUTPUT_DIR", dir.string()}};
 }
 
@@ -77,16 +79,21 @@ TEST(Prompt, PipeRunsScriptsWithoutPrompting) {
   const auto dir = freshDir("pipe");
   Child c({ZS_ZEROSET_EXE}, headlessEnv(dir), Stdio::Pipe);
   const auto png = dir / "cuboid.png", surf = dir / "cuboid.surf";
-  c.write("x^4 + y^4 + z^4 - a\n"
-          ":set params.a=0.5\n"
-          ":set tracing.epsilon=0.01\n"
-          ":set camera.eye=[1, 2, 4]\n"
-          "x^^2\n"
-          ":set tracing.epsilon=-1\n"
-          ":bogus\n"
-          ":png " + png.string() + "\n"
-          ":save " + surf.string() + "\n"
-          ":help\n");
+  c.write(
+      "x^4 + y^4 + z^4 - a\n"
+      ":set params.a=0.5\n"
+      ":set tracing.epsilon=0.01\n"
+      ":set camera.eye=[1, 2, 4]\n"
+      "x^^2\n"
+      ":set tracing.epsilon=-1\n"
+      ":bogus\n"
+      ":png " +
+      png.string() +
+      "\n"
+      ":save " +
+      surf.string() +
+      "\n"
+      ":help\n");
   c.closeInput();
   ASSERT_TRUE(c.readUntil(":quit", 120)) << c.output();  // the end of :help
   EXPECT_EQ(c.wait(30), 0);
@@ -112,15 +119,21 @@ TEST(Prompt, SaveLoadSaveRoundTripsEveryKey) {
   const auto dir = freshDir("roundtrip");
   Child c({ZS_ZEROSET_EXE}, headlessEnv(dir), Stdio::Pipe);
   const auto first = dir / "first.surf", second = dir / "second.surf";
-  c.write("sin(x*k) + y^2 + z^2 - 0.5\n"
-          ":set params.k=2.5\n"
-          ":set lights.point={position=[0.5, 3, 1], intensity=0.25, color=[1, 0.5, 0.5]}\n"
-          ":set highlights.silhouette.enabled=false\n"
-          ":set octree.criteria=\"uniform\"\n"
-          ":save " + first.string() + "\n"
-          "x^2 - 1\n"
-          ":load " + first.string() + "\n"
-          ":save " + second.string() + "\n");
+  c.write(
+      "sin(x*k) + y^2 + z^2 - 0.5\n"
+      ":set params.k=2.5\n"
+      ":set lights.point={position=[0.5, 3, 1], intensity=0.25, color=[1, 0.5, 0.5]}\n"
+      ":set highlights.silhouette.enabled=false\n"
+      ":set octree.criteria=\"uniform\"\n"
+      ":save " +
+      first.string() +
+      "\n"
+      "x^2 - 1\n"
+      ":load " +
+      first.string() +
+      "\n"
+      ":save " +
+      second.string() + "\n");
   c.closeInput();
   c.readUntil("\x01", 120);  // everything, up to end of output
   EXPECT_EQ(c.wait(30), 0);

@@ -13,15 +13,19 @@ namespace {
 
 TEST(PromptWindow, PipedLinesDriveTheWindow) {
   const auto dir = freshDir("prompt-window");
-  Child c({ZS_ZEROSET_EXE}, {{"HOME", dir.string()}, {"ZS_OUTPUT_DIR", dir.string()}},
-          Stdio::Pipe);
+  Child c({ZS_ZEROSET_EXE}, {{"HOME", dir.string()}, {"ZS_OUTPUT_DIR", dir.string()}}, Stdio::Pipe);
   const auto png = dir / "torus.png", surf = dir / "torus.surf";
-  c.write("(x^2 + y^2 + z^2 + 0.6^2 - 0.25^2)^2 - 4*0.6^2*(x^2 + y^2)\n"
-          ":set camera.eye=[0, 3, 2.5]\n"
-          ":png " + png.string() + "\n"
-          ":save " + surf.string() + "\n"
-          "x^^2\n"
-          ":quit\n");
+  c.write(
+      "(x^2 + y^2 + z^2 + 0.6^2 - 0.25^2)^2 - 4*0.6^2*(x^2 + y^2)\n"
+      ":set camera.eye=[0, 3, 2.5]\n"
+      ":png " +
+      png.string() +
+      "\n"
+      ":save " +
+      surf.string() +
+      "\n"
+      "x^^2\n"
+      ":quit\n");
   c.readUntil("\x01", 120);  // everything, up to end of output
   EXPECT_EQ(c.wait(30), 0);
   const std::string& out = c.output();
@@ -50,8 +54,7 @@ namespace {
 // window runs on the main thread. Closing the window ends the prompt too.
 TEST(PromptWindow, TerminalPromptBesideTheWindowEndsWithIt) {
   const auto dir = freshDir("prompt-window-pty");
-  Child c({ZS_ZEROSET_EXE}, {{"HOME", dir.string()}, {"ZS_OUTPUT_DIR", dir.string()}},
-          Stdio::Pty);
+  Child c({ZS_ZEROSET_EXE}, {{"HOME", dir.string()}, {"ZS_OUTPUT_DIR", dir.string()}}, Stdio::Pty);
   ASSERT_TRUE(c.readUntil("F(x,y,z) = ", 30)) << c.output();
   const auto png = dir / "saddle.png";
   c.write("x^4 - z^4 - y\r:png " + png.string() + "\r");

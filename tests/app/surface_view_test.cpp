@@ -1,15 +1,16 @@
 // The viewer's GL half (app/viewer/surface_view.hpp) in real GLFW windows (ctest runs this
 // binary under xvfb-run): the first pictures' interpreters warm up on a thread of their own,
 // in their own context, while the window's thread goes on drawing the surface's picture.
-#include <gtest/gtest.h>
+#include "app/viewer/surface_view.hpp"
+
 #include <glad/gl.h>
+#include <gtest/gtest.h>
 
 #include <atomic>
 #include <string>
 #include <variant>
 #include <vector>
 
-#include "app/viewer/surface_view.hpp"
 #include "pipeline/pipeline.hpp"
 #include "pipeline/quick_surface.hpp"
 #include "render/glfw_context.hpp"
@@ -48,7 +49,8 @@ TEST(SurfaceView, InterpretersWarmOnAThreadOfTheirOwnWhileTheWindowDraws) {
     view.drawFirstPicturesIn(std::move(first.context), window.context.get());
     const Scene sphere = sceneOf("x^2+y^2+z^2-1");
     auto prepared = prepareSurface(sphere);
-    ASSERT_TRUE(std::holds_alternative<PreparedSurface>(prepared)) << std::get<std::string>(prepared);
+    ASSERT_TRUE(std::holds_alternative<PreparedSurface>(prepared))
+        << std::get<std::string>(prepared);
     ASSERT_EQ(view.upload(std::get<PreparedSurface>(prepared), sphere.render), "");
 
     std::atomic<bool> done{false};

@@ -1,6 +1,8 @@
 // The surface worker's later step (session/surface_worker.hpp) and the shader warmer's two
 // phases (app/shader_warmer.hpp): a new program's beam pass and tile mask are left out of the
 // warm-up that the front end's first picture waits for, and compiled after a pause.
+#include "session/surface_worker.hpp"
+
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -10,7 +12,6 @@
 #include <variant>
 
 #include "app/shader_warmer.hpp"
-#include "session/surface_worker.hpp"
 #include "pipeline/pipeline.hpp"
 
 namespace zs::app {

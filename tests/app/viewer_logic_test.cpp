@@ -1,8 +1,7 @@
 // The viewer's pure pieces, no window: arcball math, the key table and its scene edits,
 // prompt line parsing, scene checks, example discovery.
-#include <gtest/gtest.h>
-
 #include <GLFW/glfw3.h>
+#include <gtest/gtest.h>
 #include <imgui.h>
 
 #include <cmath>
@@ -29,7 +28,9 @@ namespace zs::app {
 using namespace zs::interact;
 namespace {
 
-double length(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+double length(const Vec3& v) {
+  return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
 
 TEST(Arcball, HorizontalDragOrbitsAboutTheUpAxisAndKeepsTheDistance) {
   const Camera start;  // eye (0, 0, 4) looking at the origin
@@ -111,14 +112,14 @@ TEST(PromptCommands, LinesParseToCommandsOrUsageErrors) {
     K kind;
     const char* arg;
   };
-  for (const Case& c : {Case{"  x^2 - y ", K::Formula, "x^2 - y"}, Case{":load a b.surf", K::Load, "a b.surf"},
-                        Case{":save  s.surf", K::Save, "s.surf"}, Case{":set tracing.hits=2", K::Set, "tracing.hits=2"},
-                        Case{":png o.png", K::Png, "o.png"}, Case{":help", K::Help, ""},
-                        Case{":quit", K::Quit, ""}, Case{"   ", K::Empty, ""},
-                        // Bare command words a new user types are commands, not h*e*l*p.
-                        Case{"help", K::Help, ""}, Case{" quit", K::Quit, ""},
-                        Case{"exit", K::Quit, ""}, Case{":exit", K::Quit, ""},
-                        Case{"helpx", K::Formula, "helpx"}}) {
+  for (const Case& c :
+       {Case{"  x^2 - y ", K::Formula, "x^2 - y"}, Case{":load a b.surf", K::Load, "a b.surf"},
+        Case{":save  s.surf", K::Save, "s.surf"},
+        Case{":set tracing.hits=2", K::Set, "tracing.hits=2"}, Case{":png o.png", K::Png, "o.png"},
+        Case{":help", K::Help, ""}, Case{":quit", K::Quit, ""}, Case{"   ", K::Empty, ""},
+        // Bare command words a new user types are commands, not h*e*l*p.
+        Case{"help", K::Help, ""}, Case{" quit", K::Quit, ""}, Case{"exit", K::Quit, ""},
+        Case{":exit", K::Quit, ""}, Case{"helpx", K::Formula, "helpx"}}) {
     auto parsed = parsePromptLine(c.line);
     ASSERT_TRUE(std::holds_alternative<PromptCommand>(parsed)) << c.line;
     EXPECT_EQ(std::get<PromptCommand>(parsed).kind, c.kind) << c.line;
@@ -184,8 +185,8 @@ TEST(ViewerFont, EveryGallerySymbolHasAGlyphAtTheScreensScale) {
   EXPECT_FLOAT_EQ(font->FontSize, 2.0f * kViewerFontSize);  // a 2x (high-DPI) screen
   // "Cross channel (thesis surface 1) — degree 2", x², α, ≤, ∇: what the gallery writes.
   // And the letters of the translations: ñ, ¿, á, ß, ä, ü.
-  for (ImWchar c : {0x2014, 0x00B2, 0x00B3, 0x03B1, 0x2264, 0x2207, 0x2080, 0x00F1, 0x00BF,
-                    0x00E1, 0x00DF, 0x00E4, 0x00FC})
+  for (ImWchar c : {0x2014, 0x00B2, 0x00B3, 0x03B1, 0x2264, 0x2207, 0x2080, 0x00F1, 0x00BF, 0x00E1,
+                    0x00DF, 0x00E4, 0x00FC})
     EXPECT_NE(font->FindGlyphNoFallback(c), nullptr) << "U+" << std::hex << int(c);
   ImGui::DestroyContext();
 }
@@ -247,7 +248,7 @@ TEST(FormulaKeyboard, KeysAppendAndBackspaceRemovesACharacterOrAFunction) {
   EXPECT_EQ(pressFormulaKey("x²", "<-"), "x");  // a character, not a byte
   EXPECT_EQ(pressFormulaKey("", "<-"), "");
   EXPECT_EQ(pressFormulaKey("x^2+y", "clear"), "");
-  EXPECT_EQ(pressFormulaKey("x", "draw"), "x");   // the front end submits
+  EXPECT_EQ(pressFormulaKey("x", "draw"), "x");    // the front end submits
   EXPECT_EQ(pressFormulaKey("x", "rm -rf"), "x");  // not a key
   // Every key a visitor can press has a place.
   for (const char* label : {"x", "y", "z", "^2", "sin", "<-", "clear", "draw", "pi"})
@@ -291,15 +292,15 @@ TEST(FirstPictureCost, ALongerTapeIsSizedByTheMostATapeInstructionCost) {
   cost.measured(1, 400.0 * 300, 6, true);
   // The last picture alone would say half size; a tape of 9 instructions is sized as if
   // each instruction cost what the 5-instruction tape's did (faded once).
-  EXPECT_EQ(interact::scaleForBudget(1.0 / (400 * 300), 800, 600, interact::kFirstPictureBudgetMs,
-                                     interact::kFirstPictureMinScale,
-                                     interact::kFirstPictureMaxScale),
-            2);
+  EXPECT_EQ(
+      interact::scaleForBudget(1.0 / (400 * 300), 800, 600, interact::kFirstPictureBudgetMs,
+                               interact::kFirstPictureMinScale, interact::kFirstPictureMaxScale),
+      2);
   const double perPixel = 0.75 * 40.0 / (400 * 300) / 5 * 9;
-  EXPECT_EQ(cost.scale(800, 600, 9, true),
-            interact::scaleForBudget(perPixel, 800, 600, interact::kFirstPictureBudgetMs,
-                                     interact::kFirstPictureMinScale,
-                                     interact::kFirstPictureMaxScale));
+  EXPECT_EQ(
+      cost.scale(800, 600, 9, true),
+      interact::scaleForBudget(perPixel, 800, 600, interact::kFirstPictureBudgetMs,
+                               interact::kFirstPictureMinScale, interact::kFirstPictureMaxScale));
   EXPECT_GE(cost.scale(800, 600, 9, true), 3);
   // The dispatch with every operation learns apart: nothing measured there yet.
   EXPECT_EQ(cost.scale(800, 600, 9, false), interact::kFirstPictureMaxScale);

@@ -15,7 +15,9 @@ std::string quote(const std::string& s) {
   return out + "'";
 }
 
-void pause(int ms) { std::this_thread::sleep_for(std::chrono::milliseconds(ms)); }
+void pause(int ms) {
+  std::this_thread::sleep_for(std::chrono::milliseconds(ms));
+}
 
 }  // namespace
 
@@ -36,8 +38,8 @@ ViewerSession::ViewerSession(const std::string& name, const std::vector<std::str
   const std::string idFile = (dir_ / "window.id").string();
   // No window manager under xvfb: focus the window ourselves, and keep the pointer over
   // the picture (not the panel) so keys and the wheel reach the viewer.
-  shell("xdotool search --sync --onlyvisible --pid " + std::to_string(child_->pid()) +
-        " > " + idFile);
+  shell("xdotool search --sync --onlyvisible --pid " + std::to_string(child_->pid()) + " > " +
+        idFile);
   window_ = readText(idFile);
   window_ = window_.substr(0, window_.find('\n'));
   if (window_.empty()) {
@@ -59,8 +61,8 @@ void ViewerSession::type(const std::string& text) {
 
 void ViewerSession::drag(int button, int x0, int y0, int x1, int y1, int steps) {
   const std::string w = " --window " + window_ + " ";
-  shell("xdotool mousemove" + w + std::to_string(x0) + " " + std::to_string(y0) +
-        " mousedown " + std::to_string(button));
+  shell("xdotool mousemove" + w + std::to_string(x0) + " " + std::to_string(y0) + " mousedown " +
+        std::to_string(button));
   for (int i = 1; i <= steps; ++i) {
     const int x = x0 + (x1 - x0) * i / steps, y = y0 + (y1 - y0) * i / steps;
     shell("xdotool mousemove" + w + std::to_string(x) + " " + std::to_string(y));
@@ -82,9 +84,13 @@ void ViewerSession::click(int x, int y) {
   pause(100);
 }
 
-void ViewerSession::freeze() { kill(child_->pid(), SIGSTOP); }
+void ViewerSession::freeze() {
+  kill(child_->pid(), SIGSTOP);
+}
 
-void ViewerSession::thaw() { kill(child_->pid(), SIGCONT); }
+void ViewerSession::thaw() {
+  kill(child_->pid(), SIGCONT);
+}
 
 void ViewerSession::wheel(int clicks) {
   const int button = clicks > 0 ? 4 : 5;
@@ -92,7 +98,9 @@ void ViewerSession::wheel(int clicks) {
   pause(100);
 }
 
-std::string ViewerSession::log() const { return readText(logFile_); }
+std::string ViewerSession::log() const {
+  return readText(logFile_);
+}
 
 std::string ViewerSession::waitLog(const std::string& marker, double seconds) {
   std::string rest;

@@ -27,7 +27,7 @@ class ViewerSession {
   void type(const std::string& text);
   // Left or right button drag through `steps` intermediate points, in window pixels.
   void drag(int button, int x0, int y0, int x1, int y1, int steps = 8);
-  void wheel(int clicks);  // positive: towards the user (zoom in)
+  void wheel(int clicks);    // positive: towards the user (zoom in)
   void click(int x, int y);  // left click at window pixels
   void move(int x, int y);   // the pointer to window pixels, no button
   // Stops the viewer's process and lets it go on: what is sent meanwhile reaches it at once,
@@ -37,9 +37,9 @@ class ViewerSession {
 
   // Waits until the log holds `marker` after everything seen so far by waits; "" if not.
   std::string waitLog(const std::string& marker, double seconds = 60);
-  Image screenshot();               // C; empty image on failure
-  Image windowShot();               // Shift+C: panel included
-  std::filesystem::path save();     // Ctrl+S; empty path on failure
+  Image screenshot();            // C; empty image on failure
+  Image windowShot();            // Shift+C: panel included
+  std::filesystem::path save();  // Ctrl+S; empty path on failure
   std::string log() const;
 
  private:

@@ -18,7 +18,9 @@ namespace zs::test {
 namespace {
 
 // Fraction of pixels that moved by more than a little: "the picture changed".
-double changed(const Image& a, const Image& b) { return compareImages(a, b, 24).fractionOver; }
+double changed(const Image& a, const Image& b) {
+  return compareImages(a, b, 24).fractionOver;
+}
 
 Scene loadSaved(const std::filesystem::path& path) {
   SceneResult loaded = loadScene(path);
@@ -41,8 +43,7 @@ void windowSize(ViewerSession& v, int& width, int& height) {
   ASSERT_EQ(std::sscanf(log.c_str() + ready, "ready %dx%d", &width, &height), 2) << log;
 }
 
-#define START(session) \
-  ASSERT_TRUE(session.ok()) << session.error()
+#define START(session) ASSERT_TRUE(session.ok()) << session.error()
 
 TEST(Viewer, DragRotatesTheCameraAroundTheTarget) {
   ViewerSession v("drag", {"x^4 + y^4 + z^4 - 1", "--set", "octree.level=2"});
@@ -291,11 +292,11 @@ TEST(Viewer, GalleryKeySearchesTheExamplesAndOpensOne) {
   const auto root = freshDir("gallery-examples");
   const auto examples = root / "examples";
   std::filesystem::create_directories(examples);
-  auto write = [&](const char* name, const char* text) {
-    std::ofstream(examples / name) << text;
-  };
+  auto write = [&](const char* name, const char* text) { std::ofstream(examples / name) << text; };
   write("a-sphere.surf", "# The unit sphere, degree 2.\nformula = \"x^2 + y^2 + z^2 - 1\"\n");
-  write("b-cubic.surf", "# The Cayley cubic with its four nodes.\nformula = \"4*(x^2 + y^2 + z^2) + 16*x*y*z - 1\"\n");
+  write("b-cubic.surf",
+        "# The Cayley cubic with its four nodes.\nformula = \"4*(x^2 + y^2 + z^2) + 16*x*y*z - "
+        "1\"\n");
   write("c-bare.surf", "formula = \"x^4 + y^4 + z^4 - 1\"\n");
   ViewerSession v("gallery", {"x^2 + y^2 - z^2 - 0.2"}, {{"ZS_SOURCE_DIR", root.string()}});
   START(v);
@@ -354,8 +355,7 @@ namespace {
 
 int occurrences(const std::string& text, const std::string& what) {
   int n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
-    ++n;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
   return n;
 }
 
@@ -363,8 +363,8 @@ int occurrences(const std::string& text, const std::string& what) {
 // that quit or write files refused; a typed polynomial above the degree limit refused; the
 // formula keyboard by touch (a tap is a left click); back to the start screen once idle.
 TEST(Viewer, KioskKeepsTheExhibitRunningAndReturnsToTheStartWhenIdle) {
-  ViewerSession v("kiosk", {"x^2 + y^2 + z^2 - 1", "--kiosk", "--kiosk-idle", "6",
-                            "--kiosk-max-degree", "4"});
+  ViewerSession v(
+      "kiosk", {"x^2 + y^2 + z^2 - 1", "--kiosk", "--kiosk-idle", "6", "--kiosk-max-degree", "4"});
   START(v);
   EXPECT_NE(v.log().find("ready 1024x768"), std::string::npos) << "fullscreen\n" << v.log();
   EXPECT_NE(v.log().find("gallery: "), std::string::npos) << "the start screen\n" << v.log();

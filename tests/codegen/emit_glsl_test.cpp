@@ -35,11 +35,10 @@ std::string functionText(const std::string& block, const std::string& signature)
 // Every identifier must be ours: a temporary t<N>[_<power>|_m], a zs_ name, a swizzle of
 // p, or a GLSL keyword/built-in. A formula's parameter names never appear.
 TEST(EmitGlsl, OnlyGeneratedIdentifiers) {
-  const std::set<std::string> glsl = {"float", "vec3",  "vec4", "bool", "uniform", "return",
-                                      "true",  "false", "p",    "x",    "y",       "z",
-                                      "sin",   "cos",   "tan",  "atan", "sinh",    "cosh",
-                                      "exp",   "abs",   "sign", "floor", "ceil",   "min",
-                                      "max"};
+  const std::set<std::string> glsl = {"float", "vec3", "vec4", "bool", "uniform", "return", "true",
+                                      "false", "p",    "x",    "y",    "z",       "sin",    "cos",
+                                      "tan",   "atan", "sinh", "cosh", "exp",     "abs",    "sign",
+                                      "floor", "ceil", "min",  "max"};
   const std::regex temporary("t[0-9]+(_[0-9]+|_m)?");
   const char* formulas[] = {
       "main + gl_FragColor*x - float^2 + zs_F + discard y + t0 z + sin(uniform)",
@@ -56,8 +55,8 @@ TEST(EmitGlsl, OnlyGeneratedIdentifiers) {
          it != std::sregex_iterator(); ++it) {
       const std::string id = it->str();
       const auto pos = static_cast<std::size_t>(it->position());
-      if (pos > 0 && (std::isdigit(static_cast<unsigned char>(code[pos - 1])) ||
-                      code[pos - 1] == '.')) {
+      if (pos > 0 &&
+          (std::isdigit(static_cast<unsigned char>(code[pos - 1])) || code[pos - 1] == '.')) {
         // The exponent of a literal such as 1e-05, or a swizzle (checked by the set).
         if (code[pos - 1] != '.' || pos < 2 || code[pos - 2] != 'p') continue;
       }
@@ -87,7 +86,7 @@ TEST(EmitGlsl, SquaresAreSharedBetweenPowersOfOneBase) {
   ASSERT_TRUE(out);
   const std::string f = functionText(out->source, "float zs_F");
   EXPECT_EQ(count(f, "p.x * p.x"), 1u) << f;  // x^2 once, reused by x^4, x^8 and x^3
-  EXPECT_EQ(count(f, " * "), 4u) << f;  // x^2, x^4 = x^2 x^2, x^8 = x^4 x^4, x^3 = x^2 x
+  EXPECT_EQ(count(f, " * "), 4u) << f;        // x^2, x^4 = x^2 x^2, x^8 = x^4 x^4, x^3 = x^2 x
 }
 
 TEST(EmitGlsl, SharedSubexpressionsAreComputedOnce) {

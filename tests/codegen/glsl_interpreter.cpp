@@ -96,8 +96,14 @@ struct Machine {
     if (fn == "zs_cbrt") return std::cbrt(arg(0));
     if (fn == "zs_tanh") return std::tanh(std::fmin(std::fmax(arg(0), -10.0f), 10.0f));
     const float a = arg(0);
-    if (fn == "zs_sqrt") { flag(args.at(1)) |= a < 0; return std::sqrt(std::fmax(a, 0.0f)); }
-    if (fn == "zs_log") { flag(args.at(1)) |= a < 0; return a > 0 ? std::log(a) : -kFltMax; }
+    if (fn == "zs_sqrt") {
+      flag(args.at(1)) |= a < 0;
+      return std::sqrt(std::fmax(a, 0.0f));
+    }
+    if (fn == "zs_log") {
+      flag(args.at(1)) |= a < 0;
+      return a > 0 ? std::log(a) : -kFltMax;
+    }
     if (fn == "zs_asin" || fn == "zs_acos") {
       flag(args.at(1)) |= std::fabs(a) > 1;
       const float c = std::fmin(std::fmax(a, -1.0f), 1.0f);
@@ -127,8 +133,8 @@ struct Machine {
     const bool isCall = paren != std::string::npos && paren > 0 && e.back() == ')' &&
                         e.find_first_not_of("abcdefghijklmnopqrstuvwxyz_0123456789") == paren;
     if (isCall) {
-      return call(e.substr(0, paren), splitArgs(std::string_view(e).substr(
-                                          paren + 1, e.size() - paren - 2)));
+      return call(e.substr(0, paren),
+                  splitArgs(std::string_view(e).substr(paren + 1, e.size() - paren - 2)));
     }
     if (e[0] == '-' && e.find(' ') == std::string::npos) return -operand(e.substr(1));
     std::vector<std::string> tokens;
@@ -140,10 +146,14 @@ struct Machine {
     float acc = operand(tokens[0]);
     for (std::size_t i = 1; i + 1 < tokens.size(); i += 2) {  // left to right, as GLSL
       const float rhs = operand(tokens[i + 1]);
-      if (tokens[i] == "+") acc = acc + rhs;
-      else if (tokens[i] == "-") acc = acc - rhs;
-      else if (tokens[i] == "*") acc = acc * rhs;
-      else throw std::runtime_error("unknown operator in '" + e + "'");
+      if (tokens[i] == "+")
+        acc = acc + rhs;
+      else if (tokens[i] == "-")
+        acc = acc - rhs;
+      else if (tokens[i] == "*")
+        acc = acc * rhs;
+      else
+        throw std::runtime_error("unknown operator in '" + e + "'");
     }
     return acc;
   }
@@ -193,8 +203,8 @@ std::array<float, 4> FormulaBlockInterpreter::evalFGrad(const std::array<float, 
   const std::string ret = m.run(gradBody_);  // zs_finishFGrad(vec3(gx, gy, gz), F, u, ug)
   const std::string prefix = "zs_finishFGrad(";
   if (ret.rfind(prefix, 0) != 0) throw std::runtime_error(ret);
-  const auto outer = splitArgs(std::string_view(ret).substr(prefix.size(),
-                                                            ret.size() - prefix.size() - 1));
+  const auto outer =
+      splitArgs(std::string_view(ret).substr(prefix.size(), ret.size() - prefix.size() - 1));
   if (outer.size() != 4 || outer[0].rfind("vec3(", 0) != 0) throw std::runtime_error(ret);
   const auto g = splitArgs(std::string_view(outer[0]).substr(5, outer[0].size() - 6));
   if (g.size() != 3) throw std::runtime_error(ret);

@@ -49,10 +49,11 @@ TEST(GlslValidation, LinkingCatchesAPrototypeWithoutBody) {
 }
 
 TEST(GlslValidation, VertexStage) {
-  EXPECT_TRUE(validateGlsl("#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n",
-                           Stage::Vertex).ok);
-  EXPECT_FALSE(validateGlsl("#version 330 core\nvoid main() { gl_FragDepth = 0.0; }\n",
-                            Stage::Vertex).ok);
+  EXPECT_TRUE(
+      validateGlsl("#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n", Stage::Vertex)
+          .ok);
+  EXPECT_FALSE(
+      validateGlsl("#version 330 core\nvoid main() { gl_FragDepth = 0.0; }\n", Stage::Vertex).ok);
 }
 
 TEST(GlslValidation, NumbersLinesFollowingLineDirectives) {
@@ -64,8 +65,8 @@ TEST(GlslValidation, NumbersLinesFollowingLineDirectives) {
 }
 
 TEST(GlslValidation, InternalErrorSaysItIsABugAndShowsEverything) {
-  const ValidationResult r = validateGlsl("#version 330 core\nvoid main() { oops; }\n",
-                                          Stage::Fragment);
+  const ValidationResult r =
+      validateGlsl("#version 330 core\nvoid main() { oops; }\n", Stage::Fragment);
   ASSERT_FALSE(r.ok);
   const std::string message = formatInternalShaderError("fragment shader for x", r);
   EXPECT_NE(message.find("internal error in zeroset"), std::string::npos);

@@ -11,8 +11,7 @@ struct GoldenCase {
 // Thesis Table 5.1, surfaces 1-7.
 inline constexpr GoldenCase kThesis[] = {
     {"thesis1_paraboloid", "x^2+z^2-y"},
-    {"thesis2_symmetric_cubic",
-     "x^2*y+x^2*z+y^2*x+y^2*z+z^2*y+z^2*x-(2/5)*(x*y+x*z+y*z)"},
+    {"thesis2_symmetric_cubic", "x^2*y+x^2*z+y^2*x+y^2*z+z^2*y+z^2*x-(2/5)*(x*y+x*z+y*z)"},
     {"thesis3_cuboid", "x^4+y^4+z^4-1"},
     {"thesis4_mixed_degrees", "x^2+y^3+z^5-1"},
     {"thesis5_klein_quartic", "x^3*y+y^3*z+z^3*x"},
@@ -48,12 +47,14 @@ inline constexpr GoldenCase kEdgeCases[] = {
 // op_interval_glsl.cpp at least once, domain flags, NaN and out-of-float constants.
 inline constexpr GoldenCase kIntervalCases[] = {
     {"gyroid", "sin(x)cos(y) + sin(y)cos(z) + sin(z)cos(x)"},
-    {"metaballs", "exp(-4((x-0.5)^2+y^2+z^2)) + exp(-4((x+0.5)^2+y^2+z^2)) + exp(-4(x^2+(y-0.7)^2+z^2)) - 0.6"},
+    {"metaballs",
+     "exp(-4((x-0.5)^2+y^2+z^2)) + exp(-4((x+0.5)^2+y^2+z^2)) + exp(-4(x^2+(y-0.7)^2+z^2)) - 0.6"},
     {"bumpy_sphere", "sqrt(x^2+y^2+z^2) - 1 - 0.08 sin(10x) sin(10y) sin(10z)"},
     {"poles_and_domains", "1/x - 1 + sqrt(y) + log(z^2) + asin(x/2) + acos(y/2) + tan(z)"},
-    {"other_rules", "atan(x) + atan2(y, x) + sinh(x) + cosh(y) + tanh(z) + cbrt(z) + abs(x) "
-                    "+ sign(y) + floor(z) + ceil(x) + min(x, y) + max(y, z) + pow(x^2+1, y) "
-                    "+ x^2.5 + y^-3 + z^6 - 1"},
+    {"other_rules",
+     "atan(x) + atan2(y, x) + sinh(x) + cosh(y) + tanh(z) + cbrt(z) + abs(x) "
+     "+ sign(y) + floor(z) + ceil(x) + min(x, y) + max(y, z) + pow(x^2+1, y) "
+     "+ x^2.5 + y^-3 + z^6 - 1"},
     {"constants", "0.1 x + 1e300 y + 1e-45 z - a + sqrt(-1) * 0"},
 };
 

@@ -12,9 +12,9 @@
 
 #include "codegen/emit_interval_glsl.hpp"
 #include "codegen/glsl_validation.hpp"
-#include "expr/derivative.hpp"
 #include "codegen/shader_assembly.hpp"
 #include "codegen_test_util.hpp"
+#include "expr/derivative.hpp"
 #include "golden_cases.hpp"
 
 namespace zs::test {
@@ -46,8 +46,7 @@ void checkGolden(const GoldenCase& c) {
   const std::optional<GlslFormula> glsl = generate(c.formula);
   ASSERT_TRUE(glsl.has_value());
   expectGolden(goldenPath(c.name), std::string("// formula: ") + c.formula + "\n" + glsl->source);
-  const ValidationResult result =
-      validateGlsl(assembleFragmentShader(*glsl), Stage::Fragment);
+  const ValidationResult result = validateGlsl(assembleFragmentShader(*glsl), Stage::Fragment);
   EXPECT_TRUE(result.ok) << formatInternalShaderError("fragment shader", result);
 }
 
@@ -77,17 +76,23 @@ void checkIntervalGolden(const GoldenCase& c) {
 }
 
 class GoldenThesis : public ::testing::TestWithParam<GoldenCase> {};
-TEST_P(GoldenThesis, MatchesAndValidates) { checkGolden(GetParam()); }
+TEST_P(GoldenThesis, MatchesAndValidates) {
+  checkGolden(GetParam());
+}
 INSTANTIATE_TEST_SUITE_P(Golden, GoldenThesis, ::testing::ValuesIn(kThesis),
                          [](const auto& info) { return std::string(info.param.name); });
 
 class GoldenEdge : public ::testing::TestWithParam<GoldenCase> {};
-TEST_P(GoldenEdge, MatchesAndValidates) { checkGolden(GetParam()); }
+TEST_P(GoldenEdge, MatchesAndValidates) {
+  checkGolden(GetParam());
+}
 INSTANTIATE_TEST_SUITE_P(Golden, GoldenEdge, ::testing::ValuesIn(kEdgeCases),
                          [](const auto& info) { return std::string(info.param.name); });
 
 class GoldenInterval : public ::testing::TestWithParam<GoldenCase> {};
-TEST_P(GoldenInterval, MatchesAndValidates) { checkIntervalGolden(GetParam()); }
+TEST_P(GoldenInterval, MatchesAndValidates) {
+  checkIntervalGolden(GetParam());
+}
 INSTANTIATE_TEST_SUITE_P(Golden, GoldenInterval, ::testing::ValuesIn(kIntervalCases),
                          [](const auto& info) { return std::string(info.param.name); });
 
@@ -96,7 +101,8 @@ TEST(Golden, EveryFileHasACase) {
   std::set<std::string> names;
   for (const GoldenCase& c : kThesis) names.insert(std::string(c.name) + ".glsl");
   for (const GoldenCase& c : kEdgeCases) names.insert(std::string(c.name) + ".glsl");
-  for (const GoldenCase& c : kIntervalCases) names.insert("interval_" + std::string(c.name) + ".glsl");
+  for (const GoldenCase& c : kIntervalCases)
+    names.insert("interval_" + std::string(c.name) + ".glsl");
   for (const auto& entry : std::filesystem::directory_iterator(sourceDir() / "tests/golden")) {
     EXPECT_TRUE(names.count(entry.path().filename().string()))
         << entry.path() << " belongs to no golden case";

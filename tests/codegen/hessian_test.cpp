@@ -1,14 +1,13 @@
 // The second derivatives for the curvature colorings: emitted as zs_FHess only on request,
 // and every coloring x lighting variant of the shading template passes glslang, with every
 // tracing method.
-#include "codegen/emit_hessian.hpp"
-
 #include <gtest/gtest.h>
 
 #include <string>
 #include <variant>
 
 #include "codegen/emit_glsl.hpp"
+#include "codegen/emit_hessian.hpp"
 #include "codegen/emit_ray_polynomial.hpp"
 #include "codegen/glsl_validation.hpp"
 #include "codegen/shader_assembly.hpp"

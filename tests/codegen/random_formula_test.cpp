@@ -1,7 +1,8 @@
 // Random formulas (tests/support): the generator is deterministic and covers the language;
 // every formula it produces parses, and every parsed formula yields a fragment shader that
-// glslang accepts for every method that applies (2000 of them, fixed seed). Also measures glslang's time per formula and
-// validates one very large formula; the numbers are printed and recorded in the test XML.
+// glslang accepts for every method that applies (2000 of them, fixed seed). Also measures glslang's
+// time per formula and validates one very large formula; the numbers are printed and recorded in
+// the test XML.
 #include "support/random_formula.hpp"
 
 #include <gtest/gtest.h>
@@ -53,8 +54,8 @@ TEST(RandomFormula, CoversTheLanguage) {
     }
   }
   EXPECT_TRUE(std::regex_search(all, std::regex("[0-9][xyz]"))) << "never generated: 2x";
-  for (const char* piece : {"**", "^", "[", "]", "=", "pi", " e", "radius", ")(", "^-",
-                            "--", " .", "e-", "E+", " x ", "+", "/", "*", ","}) {
+  for (const char* piece : {"**", "^", "[", "]", "=", "pi", " e", "radius", ")(", "^-", "--", " .",
+                            "e-", "E+", " x ", "+", "/", "*", ","}) {
     EXPECT_NE(all.find(piece), std::string::npos) << "never generated: '" << piece << "'";
   }
 }
@@ -85,24 +86,26 @@ TEST_P(RandomFormulaShard, EveryFormulaParsesAndPassesGlslangForEveryMethod) {
             .count());
     ASSERT_TRUE(result.ok) << formatInternalShaderError("fragment shader", result);
     // The interval method's shader (the default for every formula that is not a polynomial).
-    const ValidationResult interval = validateGlsl(
-        assembleFragmentShader(glsl, emitIntervalGlsl(formula->graph, formula->root)),
-        Stage::Fragment);
+    const ValidationResult interval =
+        validateGlsl(assembleFragmentShader(glsl, emitIntervalGlsl(formula->graph, formula->root)),
+                     Stage::Fragment);
     ASSERT_TRUE(interval.ok) << formatInternalShaderError("interval fragment shader", interval);
     // The Bernstein method's (the default for polynomials), constants included.
     if (auto poly = emitRayPolynomialGlsl(formula->graph, formula->root)) {
       ++polynomials;
       const ValidationResult bernstein =
           validateGlsl(assembleFragmentShader(glsl, *poly), Stage::Fragment);
-      ASSERT_TRUE(bernstein.ok) << formatInternalShaderError("Bernstein fragment shader", bernstein);
+      ASSERT_TRUE(bernstein.ok) << formatInternalShaderError("Bernstein fragment shader",
+                                                             bernstein);
     }
     largestNodes = std::max(largestNodes, formula->graph.size());
   }
   std::sort(millis.begin(), millis.end());
   const double median = millis[millis.size() / 2];
-  std::printf("glslang: %zu formulas (%d polynomials), median %.2f ms, max %.2f ms, largest "
-              "graph %zu nodes\n",
-              millis.size(), polynomials, median, millis.back(), largestNodes);
+  std::printf(
+      "glslang: %zu formulas (%d polynomials), median %.2f ms, max %.2f ms, largest "
+      "graph %zu nodes\n",
+      millis.size(), polynomials, median, millis.back(), largestNodes);
   EXPECT_GT(polynomials, int(millis.size()) / 10) << "too few polynomials: Bernstein untested";
   RecordProperty("glslang_median_us", static_cast<int>(median * 1000));
   RecordProperty("largest_graph_nodes", static_cast<int>(largestNodes));
@@ -130,12 +133,13 @@ TEST(RandomFormula, SeveralSurfacesPassGlslangForEveryMethod) {
     }
     SCOPED_TRACE("surfaces: " + texts);
     // As scene/surfaces.cpp forms it: a factor undefined in places stands in as 1 there.
-    product.root = definedOrOne(product.graph,
-                                copyInto(product.graph, surfaces[0].graph, surfaces[0].root));
+    product.root =
+        definedOrOne(product.graph, copyInto(product.graph, surfaces[0].graph, surfaces[0].root));
     for (int i = 1; i < count; ++i) {
       product.root = product.graph.binary(
           Op::Mul, product.root,
-          definedOrOne(product.graph, copyInto(product.graph, surfaces[i].graph, surfaces[i].root)));
+          definedOrOne(product.graph,
+                       copyInto(product.graph, surfaces[i].graph, surfaces[i].root)));
     }
     const std::array<NodeId, 3> grad = gradient(product.graph, product.root);
     GlslFormula glsl = emitFormulaGlsl(product.graph, product.root, grad);
@@ -150,16 +154,19 @@ TEST(RandomFormula, SeveralSurfacesPassGlslangForEveryMethod) {
     const IntervalGlsl interval = emitIntervalGlsl(product.graph, product.root);
     for (const ShaderDialect dialect : {ShaderDialect::Gl330, ShaderDialect::Es300}) {
       const Stage stage = Stage::Fragment;
-      const ValidationResult sampling = validateGlsl(assembleFragmentShader(glsl, {}, dialect), stage);
+      const ValidationResult sampling =
+          validateGlsl(assembleFragmentShader(glsl, {}, dialect), stage);
       ASSERT_TRUE(sampling.ok) << formatInternalShaderError("sampling", sampling);
       const ValidationResult intervals =
           validateGlsl(assembleFragmentShader(glsl, interval, {}, dialect), stage);
       ASSERT_TRUE(intervals.ok) << formatInternalShaderError("interval", intervals);
       // Bernstein up to the degree the pipeline uses it for in each dialect.
       const std::optional<int> degree = rayPolynomialDegree(product.graph, product.root);
-      const int limit = dialect == ShaderDialect::Gl330 ? kMaxBernsteinDegree : kWebBernsteinMaxDegree;
+      const int limit =
+          dialect == ShaderDialect::Gl330 ? kMaxBernsteinDegree : kWebBernsteinMaxDegree;
       if (!degree || *degree > limit) continue;
-      if (auto poly = emitRayPolynomialGlsl(product.graph, product.root, dialect == ShaderDialect::Gl330)) {
+      if (auto poly =
+              emitRayPolynomialGlsl(product.graph, product.root, dialect == ShaderDialect::Gl330)) {
         polynomials += dialect == ShaderDialect::Gl330;
         const ValidationResult bernstein =
             validateGlsl(assembleFragmentShader(glsl, *poly, {}, dialect), stage);
@@ -189,16 +196,17 @@ TEST(RandomFormula, VeryLargeFormulaPassesGlslang) {
   const GlslFormula glsl = emitFormulaGlsl(formula->graph, formula->root, grad);
   const auto start = std::chrono::steady_clock::now();
   const ValidationResult result = validateGlsl(assembleFragmentShader(glsl), Stage::Fragment);
-  const ValidationResult interval = validateGlsl(
-      assembleFragmentShader(glsl, emitIntervalGlsl(formula->graph, formula->root)),
-      Stage::Fragment);
+  const ValidationResult interval =
+      validateGlsl(assembleFragmentShader(glsl, emitIntervalGlsl(formula->graph, formula->root)),
+                   Stage::Fragment);
   EXPECT_TRUE(interval.ok) << formatInternalShaderError("interval fragment shader", interval);
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   ASSERT_TRUE(result.ok) << formatInternalShaderError("fragment shader", result);
-  std::printf("large formula: %zu nodes (F), %zu with gradient, %zu temporaries, %zu bytes of "
-              "GLSL, glslang %.0f ms\n",
-              nodes, withGradient, glsl.temporaries, glsl.source.size(), ms);
+  std::printf(
+      "large formula: %zu nodes (F), %zu with gradient, %zu temporaries, %zu bytes of "
+      "GLSL, glslang %.0f ms\n",
+      nodes, withGradient, glsl.temporaries, glsl.source.size(), ms);
   RecordProperty("large_formula_nodes", static_cast<int>(nodes));
   EXPECT_GT(nodes, 8000u);
 }

@@ -50,8 +50,8 @@ void compareAtRandomPoints(const char* text, int points) {
     evaluator.eval(x, y, z, params, ref);  // F, dF/dx, dF/dy, dF/dz
     const float f = interpreter.evalF({x, y, z}, paramsF);
     const std::array<float, 4> fg = interpreter.evalFGrad({x, y, z}, paramsF);
-    SCOPED_TRACE("at (" + std::to_string(x) + ", " + std::to_string(y) + ", " +
-                 std::to_string(z) + ")");
+    SCOPED_TRACE("at (" + std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(z) +
+                 ")");
     EXPECT_EQ(f, fg[3]) << "zs_F and zs_FGrad disagree on F";
     if (std::isnan(ref[0])) {
       ++undefined;
@@ -83,7 +83,9 @@ std::vector<GoldenCase> edgeCasesWithinFloatRange() {
 }
 
 class SemanticsGolden : public ::testing::TestWithParam<GoldenCase> {};
-TEST_P(SemanticsGolden, MatchesTapeEvaluator) { compareAtRandomPoints(GetParam().formula, 300); }
+TEST_P(SemanticsGolden, MatchesTapeEvaluator) {
+  compareAtRandomPoints(GetParam().formula, 300);
+}
 INSTANTIATE_TEST_SUITE_P(Thesis, SemanticsGolden, ::testing::ValuesIn(kThesis),
                          [](const auto& info) { return std::string(info.param.name); });
 INSTANTIATE_TEST_SUITE_P(Edge, SemanticsGolden, ::testing::ValuesIn(edgeCasesWithinFloatRange()),
@@ -128,8 +130,8 @@ TEST(Semantics, IntegerPowersOfNegativeBasesAreDefined) {
 
 TEST(Semantics, MoreFormulasMatchTapeEvaluator) {
   for (const char* text : {"x^13*y^-5 + z^1024", "(x^2+y^2+z^2+0.5^2-0.2^2)^2-4*0.5^2*(x^2+y^2)",
-                           "max(min(x, y), -z) + sign(x)*abs(y)^2.5",
-                           "a x^2 + b y^2 - c z + d", "atan2(0, x) + atan2(y, z)"}) {
+                           "max(min(x, y), -z) + sign(x)*abs(y)^2.5", "a x^2 + b y^2 - c z + d",
+                           "atan2(0, x) + atan2(y, z)"}) {
     compareAtRandomPoints(text, 300);
   }
 }

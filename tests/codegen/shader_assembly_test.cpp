@@ -1,6 +1,5 @@
 // Templates are embedded faithfully, assembled in order with #line markers, and the whole
 // fragment shader and the vertex shader pass glslang.
-#include "render/program_variant.hpp"
 #include "codegen/shader_assembly.hpp"
 
 #include <gtest/gtest.h>
@@ -10,17 +9,18 @@
 #include "codegen/emit_interval_glsl.hpp"
 #include "codegen/emit_ray_polynomial.hpp"
 #include "codegen/glsl_validation.hpp"
-#include "parser/parser.hpp"
-#include "scene/scene_io.hpp"
 #include "codegen_test_util.hpp"
+#include "parser/parser.hpp"
+#include "render/program_variant.hpp"
+#include "scene/scene_io.hpp"
 
 namespace zs::test {
 namespace {
 
 TEST(ShaderAssembly, EmbeddedTemplatesEqualTheFilesOnDisk) {
   for (std::string_view name :
-       {kPreludeTemplate, kRaytraceTemplate, kShadingTemplate, kVertexTemplate, kFrameTemplate, kSamplingTemplate,
-        kBernsteinTemplate}) {
+       {kPreludeTemplate, kRaytraceTemplate, kShadingTemplate, kVertexTemplate, kFrameTemplate,
+        kSamplingTemplate, kBernsteinTemplate}) {
     SCOPED_TRACE(name);
     EXPECT_EQ(shaderTemplate(name), readFile(sourceDir() / "shaders/templates" / name));
   }
@@ -46,7 +46,8 @@ TEST(ShaderAssembly, PiecesInOrderWithLineDirectives) {
   // The frame's parameters: uniforms where RT_FRAME_UNIFORMS is defined, else flat varyings.
   const auto frame = shader.find("#line 1 2\n#ifdef RT_FRAME_UNIFORMS\n");
   EXPECT_NE(shader.find("#else\n#define RT_FRAME_STORAGE in\n" +
-                        std::string(shaderTemplate(kFrameTemplate)), frame),
+                            std::string(shaderTemplate(kFrameTemplate)),
+                        frame),
             std::string::npos);
   const auto main = shader.find("#line 1 3\n" + std::string(shaderTemplate(kRaytraceTemplate)));
   ASSERT_NE(frame, std::string::npos);
@@ -92,7 +93,8 @@ TEST(ShaderAssembly, GlslEsShadersPassGlslangForEveryMethod) {
       EXPECT_TRUE(result.ok) << formatInternalShaderError("GLSL ES fragment shader", result);
     }
   }
-  const ValidationResult vertex = validateGlsl(vertexShaderSource(ShaderDialect::Es300), Stage::Vertex);
+  const ValidationResult vertex =
+      validateGlsl(vertexShaderSource(ShaderDialect::Es300), Stage::Vertex);
   EXPECT_TRUE(vertex.ok) << formatInternalShaderError("GLSL ES vertex shader", vertex);
 }
 
@@ -100,7 +102,8 @@ TEST(ShaderAssembly, GlslEsShadersPassGlslangForEveryMethod) {
 // minutes over the Sarti dodecic's) writes its large convolutions as calls of one loop; a
 // shorter one, and every desktop expansion, stays written out. Both pass glslang.
 TEST(ShaderAssembly, LongDoubleFloatExpansionsConvolveInALoop) {
-  for (const auto& [example, loops] : {std::pair{"sarti-dodecic", true}, {"endrass-octic", false}}) {
+  for (const auto& [example, loops] :
+       {std::pair{"sarti-dodecic", true}, {"endrass-octic", false}}) {
     SCOPED_TRACE(example);
     SceneResult loaded = loadScene(sourceDir() / "examples" / (std::string(example) + ".surf"));
     ASSERT_TRUE(std::holds_alternative<Scene>(loaded));
@@ -115,8 +118,8 @@ TEST(ShaderAssembly, LongDoubleFloatExpansionsConvolveInALoop) {
     EXPECT_EQ(desktop->source.find("zs_dfConvolve("), std::string::npos);
     const std::optional<GlslFormula> glsl = generate(text);
     ASSERT_TRUE(glsl);
-    const ValidationResult result =
-        validateGlsl(assembleFragmentShader(*glsl, *web, {}, ShaderDialect::Es300), Stage::Fragment);
+    const ValidationResult result = validateGlsl(
+        assembleFragmentShader(*glsl, *web, {}, ShaderDialect::Es300), Stage::Fragment);
     EXPECT_TRUE(result.ok) << formatInternalShaderError("GLSL ES fragment shader", result);
   }
 }
@@ -198,7 +201,8 @@ TEST(ShaderAssembly, DoublePrecisionRayPolynomialIsNotAssembledForGlslEs) {
 TEST(ShaderAssembly, ErrorsInTheFormulaBlockPointIntoIt) {
   // A deliberately broken block: glslang's log must name string 1 at the broken line.
   GlslFormula broken;
-  broken.source = "float zs_F(vec3 p) { return 1.0; }\nvec4 zs_FGrad(vec3 p) {\n  return oops;\n}\n";
+  broken.source =
+      "float zs_F(vec3 p) { return 1.0; }\nvec4 zs_FGrad(vec3 p) {\n  return oops;\n}\n";
   const ValidationResult result = validateGlsl(assembleFragmentShader(broken), Stage::Fragment);
   EXPECT_FALSE(result.ok);
   EXPECT_NE(result.log.find("1:3:"), std::string::npos) << result.log;

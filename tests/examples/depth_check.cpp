@@ -24,8 +24,8 @@ int main(int argc, char** argv) {
   char magic[3] = {};
   int w = 0, h = 0;
   double scale = 0;
-  if (std::fscanf(f, "%2s %d %d %lf", magic, &w, &h, &scale) != 4 || std::strcmp(magic, "Pf") != 0 ||
-      w <= 0 || h <= 0 || scale == 0 || std::fgetc(f) == EOF) {
+  if (std::fscanf(f, "%2s %d %d %lf", magic, &w, &h, &scale) != 4 ||
+      std::strcmp(magic, "Pf") != 0 || w <= 0 || h <= 0 || scale == 0 || std::fgetc(f) == EOF) {
     std::fprintf(stderr, "depth_check: %s is not a grayscale PFM\n", argv[1]);
     std::fclose(f);
     return 1;
@@ -41,8 +41,10 @@ int main(int argc, char** argv) {
   std::size_t finite = 0, nan = 0;
   for (std::uint32_t bits : raw) {
     const float v = std::bit_cast<float>(swap ? __builtin_bswap32(bits) : bits);
-    if (std::isnan(v)) ++nan;
-    else if (std::isfinite(v) && v > 0) ++finite;
+    if (std::isnan(v))
+      ++nan;
+    else if (std::isfinite(v) && v > 0)
+      ++finite;
   }
   const double fraction = double(finite) / double(raw.size());
   std::printf("%s: %dx%d, %.1f%% of the pixels hit the surface\n", argv[1], w, h, 100 * fraction);
@@ -51,7 +53,8 @@ int main(int argc, char** argv) {
     return 1;
   }
   if (fraction < minFraction) {
-    std::fprintf(stderr, "depth_check: only %.2f%% of the pixels show the surface (want >= %.2f%%)\n",
+    std::fprintf(stderr,
+                 "depth_check: only %.2f%% of the pixels show the surface (want >= %.2f%%)\n",
                  100 * fraction, 100 * minFraction);
     return 1;
   }

@@ -1,6 +1,8 @@
 // The .po reader against the parts of the format translators and msgmerge write, the
 // language choice from locale names and the environment, and the built-in catalogs: each
 // parses, names its language, and keeps every printf conversion of its English text.
+#include "i18n/po.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -12,7 +14,6 @@
 #include <vector>
 
 #include "i18n/embedded_catalogs.hpp"
-#include "i18n/po.hpp"
 #include "i18n/translate.hpp"
 
 namespace zs::i18n {
@@ -101,8 +102,10 @@ struct EnvironmentRestored {
   }
   ~EnvironmentRestored() {
     for (const auto& [name, value] : saved) {
-      if (value) setenv(name, value->c_str(), 1);
-      else unsetenv(name);
+      if (value)
+        setenv(name, value->c_str(), 1);
+      else
+        unsetenv(name);
     }
   }
 };
@@ -116,8 +119,10 @@ TEST(Languages, TheEnvironmentChoosesAsGettextDoes) {
   const EnvironmentRestored restore;
   auto with = [](const char* language, const char* all, const char* messages, const char* lang) {
     auto put = [](const char* name, const char* v) {
-      if (v) setenv(name, v, 1);
-      else unsetenv(name);
+      if (v)
+        setenv(name, v, 1);
+      else
+        unsetenv(name);
     };
     put("LANGUAGE", language);
     put("LC_ALL", all);
@@ -155,9 +160,11 @@ TEST(Languages, TranslationsAndLabelsFollowTheChoice) {
 
 // The conversions of a printf pattern, in order ("%.1f ms at %dx%d" -> f d d); "%%" is none.
 std::string conversions(const std::string& s) {
-  static const std::regex conversion("%[-+ #0]*[0-9*]*(?:\\.[0-9*]+)?(?:hh|h|ll|l|z|j|t|L)?([diouxXeEfgGcsp%])");
+  static const std::regex conversion(
+      "%[-+ #0]*[0-9*]*(?:\\.[0-9*]+)?(?:hh|h|ll|l|z|j|t|L)?([diouxXeEfgGcsp%])");
   std::string out;
-  for (auto it = std::sregex_iterator(s.begin(), s.end(), conversion); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(s.begin(), s.end(), conversion); it != std::sregex_iterator();
+       ++it)
     if ((*it)[1] != "%") out += (*it)[0].str() + " ";
   return out;
 }

@@ -1,11 +1,12 @@
 // The tape's layout (gpu_tape.hpp) and the interpreter's shaders under glslang.
+#include "interpreter/gpu_tape.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "codegen/glsl_validation.hpp"
 #include "expr/derivative.hpp"
-#include "interpreter/gpu_tape.hpp"
 #include "interpreter/interpreter_glsl.hpp"
 #include "parser/parser.hpp"
 
@@ -45,7 +46,8 @@ TEST(GpuTape, RegistersAreReusedAlongALongSum) {
 
 TEST(GpuTape, ParameterCountIsLimited) {
   std::string many;
-  for (int i = 0; i <= kTapeMaxParams; ++i) many += (i ? "+" : "") + std::string("p") + std::to_string(i) + "*x";
+  for (int i = 0; i <= kTapeMaxParams; ++i)
+    many += (i ? "+" : "") + std::string("p") + std::to_string(i) + "*x";
   Formula f = std::get<Formula>(parseFormula(many));
   ASSERT_GT(f.graph.params().size(), std::size_t(kTapeMaxParams));
   auto tape = encodeGpuTape(f.graph, f.root, gradient(f.graph, f.root));
@@ -76,7 +78,8 @@ TEST(InterpreterShader, EveryMethodAndDialectValidates) {
             interpreterFragmentShader(sampling, polynomialOnly, dialect), Stage::Fragment);
         EXPECT_TRUE(r.ok) << (sampling ? "sampling " : "interval ")
                           << (polynomialOnly ? "polynomial " : "every operation ")
-                          << (dialect == ShaderDialect::Es300 ? "ES" : "GL") << "\n" << r.log;
+                          << (dialect == ShaderDialect::Es300 ? "ES" : "GL") << "\n"
+                          << r.log;
       }
     }
   }

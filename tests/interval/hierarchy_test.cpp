@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "interval/octree.hpp"
 #include "interval/hierarchy_builder.hpp"
+#include "interval/octree.hpp"
 #include "surfaces.hpp"
 
 namespace zs {
@@ -16,7 +16,8 @@ Octree build(const std::string& formula, int level, Criteria c) {
   OctreeSettings st;
   st.level = level;
   st.criteria = c;
-  return std::get<Octree>(buildOctree(test::parseOrDie(formula), {}, {{-2, -2, -2}, {2, 2, 2}}, st));
+  return std::get<Octree>(
+      buildOctree(test::parseOrDie(formula), {}, {{-2, -2, -2}, {2, 2, 2}}, st));
 }
 
 bool inside(const Box& inner, const Box& outer) {
@@ -57,7 +58,8 @@ void checkStructure(const Octree& tree, const BoxHierarchy& h) {
     EXPECT_NEAR(n.radius, 0.5 * std::sqrt(diag2), 1e-12 * (1 + n.radius));
     for (int c = 0; c < 8; ++c) {
       double d2 = 0;
-      for (std::size_t a = 0; a < 3; ++a) d2 += std::pow(((c >> a) & 1 ? n.box.max[a] : n.box.min[a]) - n.center[a], 2);
+      for (std::size_t a = 0; a < 3; ++a)
+        d2 += std::pow(((c >> a) & 1 ? n.box.max[a] : n.box.min[a]) - n.center[a], 2);
       EXPECT_LE(std::sqrt(d2), n.radius);
     }
   }
@@ -96,7 +98,8 @@ TEST(Hierarchy, PackedLayoutHoldsTheDoubleBoxes) {
     }
     for (int c = 0; c < 8; ++c) {  // the float sphere holds the float box
       double d2 = 0;
-      for (std::size_t a = 0; a < 3; ++a) d2 += std::pow(double((c >> a) & 1 ? t[8 + a] : t[4 + a]) - t[a], 2);
+      for (std::size_t a = 0; a < 3; ++a)
+        d2 += std::pow(double((c >> a) & 1 ? t[8 + a] : t[4 + a]) - t[a], 2);
       EXPECT_LE(std::sqrt(d2), double(t[3]));
     }
   }

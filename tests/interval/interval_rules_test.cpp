@@ -16,10 +16,14 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 void expectNear(Interval r, double lo, double hi) {
   EXPECT_LE(r.lo, lo);
   EXPECT_GE(r.hi, hi);
-  if (std::isfinite(lo)) EXPECT_NEAR(r.lo, lo, 1e-12 * (1 + std::fabs(lo)));
-  else EXPECT_EQ(r.lo, lo);
-  if (std::isfinite(hi)) EXPECT_NEAR(r.hi, hi, 1e-12 * (1 + std::fabs(hi)));
-  else EXPECT_EQ(r.hi, hi);
+  if (std::isfinite(lo))
+    EXPECT_NEAR(r.lo, lo, 1e-12 * (1 + std::fabs(lo)));
+  else
+    EXPECT_EQ(r.lo, lo);
+  if (std::isfinite(hi))
+    EXPECT_NEAR(r.hi, hi, 1e-12 * (1 + std::fabs(hi)));
+  else
+    EXPECT_EQ(r.hi, hi);
 }
 
 TEST(IntervalRules, EvenPowersAreTightAroundZero) {

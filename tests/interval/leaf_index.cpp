@@ -31,7 +31,8 @@ bool LeafIndex::meets(const Box& q) const {
     for (std::int64_t x = lo[0]; x <= hi[0]; ++x)
       for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
         for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
-          const auto it = leaves_.find(key(level, std::uint64_t(x), std::uint64_t(y), std::uint64_t(z)));
+          const auto it =
+              leaves_.find(key(level, std::uint64_t(x), std::uint64_t(y), std::uint64_t(z)));
           if (it == leaves_.end()) continue;
           const Box& b = tree_.leaves[it->second].box;
           bool overlap = true;

@@ -21,7 +21,9 @@ struct Mi {
   ~Mi() { mpfi_clear(v); }
 };
 
-void set(mpfi_ptr r, Interval a) { mpfi_interv_d(r, a.lo, a.hi); }
+void set(mpfi_ptr r, Interval a) {
+  mpfi_interv_d(r, a.lo, a.hi);
+}
 
 Interval get(mpfi_srcptr r) {
   if (mpfi_is_empty(r)) return Interval::empty();
@@ -107,35 +109,92 @@ bool restrictTo(mpfi_ptr a, double lo, double hi) {
 bool apply(mpfi_ptr r, Op op, mpfi_ptr a, mpfi_ptr b, int ival, double value, bool* empty) {
   *empty = false;
   switch (op) {
-    case Op::Const: mpfi_set_d(r, value); return true;
-    case Op::VarX: case Op::VarY: case Op::VarZ: case Op::Param: mpfi_set(r, a); return true;
-    case Op::Neg: mpfi_neg(r, a); return true;
-    case Op::Add: mpfi_add(r, a, b); return true;
-    case Op::Sub: mpfi_sub(r, a, b); return true;
-    case Op::Mul: mpfi_mul(r, a, b); return true;
+    case Op::Const:
+      mpfi_set_d(r, value);
+      return true;
+    case Op::VarX:
+    case Op::VarY:
+    case Op::VarZ:
+    case Op::Param:
+      mpfi_set(r, a);
+      return true;
+    case Op::Neg:
+      mpfi_neg(r, a);
+      return true;
+    case Op::Add:
+      mpfi_add(r, a, b);
+      return true;
+    case Op::Sub:
+      mpfi_sub(r, a, b);
+      return true;
+    case Op::Mul:
+      mpfi_mul(r, a, b);
+      return true;
     case Op::Div:
       if (mpfi_has_zero(b)) return false;
       mpfi_div(r, a, b);
       return true;
-    case Op::PowI: return powi(r, a, ival);
-    case Op::Pow: return pow(r, a, b);
-    case Op::Sin: mpfi_sin(r, a); return true;
-    case Op::Cos: mpfi_cos(r, a); return true;
-    case Op::Tan: mpfi_tan(r, a); return true;
-    case Op::Asin: *empty = !restrictTo(a, -1, 1); if (!*empty) mpfi_asin(r, a); return true;
-    case Op::Acos: *empty = !restrictTo(a, -1, 1); if (!*empty) mpfi_acos(r, a); return true;
-    case Op::Atan: mpfi_atan(r, a); return true;
-    case Op::Atan2: mpfi_atan2(r, a, b); return true;
-    case Op::Sinh: mpfi_sinh(r, a); return true;
-    case Op::Cosh: mpfi_cosh(r, a); return true;
-    case Op::Tanh: mpfi_tanh(r, a); return true;
-    case Op::Exp: mpfi_exp(r, a); return true;
-    case Op::Log: *empty = !restrictTo(a, 0, INFINITY); if (!*empty) mpfi_log(r, a); return true;
-    case Op::Sqrt: *empty = !restrictTo(a, 0, INFINITY); if (!*empty) mpfi_sqrt(r, a); return true;
-    case Op::Cbrt: mpfi_cbrt(r, a); return true;
-    case Op::Abs: mpfi_abs(r, a); return true;
-    case Op::Sign: case Op::Floor: case Op::Ceil: case Op::Min: case Op::Max: return false;
-    case Op::IfDefined: return false;  // definedness, not arithmetic
+    case Op::PowI:
+      return powi(r, a, ival);
+    case Op::Pow:
+      return pow(r, a, b);
+    case Op::Sin:
+      mpfi_sin(r, a);
+      return true;
+    case Op::Cos:
+      mpfi_cos(r, a);
+      return true;
+    case Op::Tan:
+      mpfi_tan(r, a);
+      return true;
+    case Op::Asin:
+      *empty = !restrictTo(a, -1, 1);
+      if (!*empty) mpfi_asin(r, a);
+      return true;
+    case Op::Acos:
+      *empty = !restrictTo(a, -1, 1);
+      if (!*empty) mpfi_acos(r, a);
+      return true;
+    case Op::Atan:
+      mpfi_atan(r, a);
+      return true;
+    case Op::Atan2:
+      mpfi_atan2(r, a, b);
+      return true;
+    case Op::Sinh:
+      mpfi_sinh(r, a);
+      return true;
+    case Op::Cosh:
+      mpfi_cosh(r, a);
+      return true;
+    case Op::Tanh:
+      mpfi_tanh(r, a);
+      return true;
+    case Op::Exp:
+      mpfi_exp(r, a);
+      return true;
+    case Op::Log:
+      *empty = !restrictTo(a, 0, INFINITY);
+      if (!*empty) mpfi_log(r, a);
+      return true;
+    case Op::Sqrt:
+      *empty = !restrictTo(a, 0, INFINITY);
+      if (!*empty) mpfi_sqrt(r, a);
+      return true;
+    case Op::Cbrt:
+      mpfi_cbrt(r, a);
+      return true;
+    case Op::Abs:
+      mpfi_abs(r, a);
+      return true;
+    case Op::Sign:
+    case Op::Floor:
+    case Op::Ceil:
+    case Op::Min:
+    case Op::Max:
+      return false;
+    case Op::IfDefined:
+      return false;  // definedness, not arithmetic
   }
   return false;
 }
@@ -172,7 +231,8 @@ std::optional<std::vector<Interval>> mpfiTape(const Tape& tape, const Box& box,
     if (in.op == Op::VarZ) set(scratchA.v, {box.min[2], box.max[2]});
     if (in.op == Op::Param) mpfi_set_d(scratchA.v, params[std::size_t(in.ival)]);
     bool e = false;
-    if (!apply(slots[i].v, in.op, scratchA.v, scratchB.v, in.ival, in.value, &e)) return std::nullopt;
+    if (!apply(slots[i].v, in.op, scratchA.v, scratchB.v, in.ival, in.value, &e))
+      return std::nullopt;
     empty[i] = e;
   }
   std::vector<Interval> out;

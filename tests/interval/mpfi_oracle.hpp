@@ -13,8 +13,9 @@
 namespace zs::test {
 
 // Nothing for operations MPFI has no counterpart for (sign, floor, ceil, min, max are exact
-// in double and checked at points only), for pow with a negative base and a non-integer or non-point exponent, and for
-// division by an interval holding 0 (the rule answers the whole line there).
+// in double and checked at points only), for pow with a negative base and a non-integer or
+// non-point exponent, and for division by an interval holding 0 (the rule answers the whole line
+// there).
 std::optional<Interval> mpfiApply(Op op, Interval a, Interval b, int ival, double value);
 
 // MPFI run of a whole tape over a box; nothing when some instruction has no MPFI rule.

@@ -6,8 +6,8 @@
 
 #include <cmath>
 #include <numbers>
-#include <random>
 #include <ostream>
+#include <random>
 #include <string>
 #include <thread>
 #include <vector>
@@ -32,9 +32,13 @@ struct Case {
 };
 
 // Names the case in test listings instead of gtest's byte dump of the struct.
-void PrintTo(const Case& c, std::ostream* os) { *os << c.formula; }
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.formula;
+}
 
-Box cube(double lo, double hi) { return {{lo, lo, lo}, {hi, hi, hi}}; }
+Box cube(double lo, double hi) {
+  return {{lo, lo, lo}, {hi, hi, hi}};
+}
 
 std::vector<Case> cases() {
   std::vector<Case> out;
@@ -103,7 +107,10 @@ std::vector<Box> signChangeBrackets(const Formula& f, const Box& d) {
             std::array<double, 3> m = p0;
             m[std::size_t(axis)] = mid;
             const int sm = sgn(at(m));
-            if (sm == 0 || sm == 2) { lo = hi = mid; break; }
+            if (sm == 0 || sm == 2) {
+              lo = hi = mid;
+              break;
+            }
             (sm == s0 ? lo : hi) = mid;
           }
           Box b{p0, p0};
@@ -135,15 +142,18 @@ TEST_P(OctreeSafety, EverySignChangeLiesInAKeptLeaf) {
       if (index.meets(b)) continue;
       if (++missed <= 5)
         ADD_FAILURE() << c.name << (criteria == Criteria::Thesis ? " thesis" : " uniform")
-                      << ": sign change near (" << b.min[0] << ", " << b.min[1] << ", "
-                      << b.min[2] << ") is in no kept leaf";
+                      << ": sign change near (" << b.min[0] << ", " << b.min[1] << ", " << b.min[2]
+                      << ") is in no kept leaf";
     }
-    EXPECT_EQ(missed, 0) << "of " << brackets.size() << " brackets, " << tree.leaves.size() << " leaves";
+    EXPECT_EQ(missed, 0) << "of " << brackets.size() << " brackets, " << tree.leaves.size()
+                         << " leaves";
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Surfaces, OctreeSafety, ::testing::ValuesIn(cases()),
-                         [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           return info.param.name;
+                         });
 
 void expectPointsKept(const std::string& formula, const Box& domain,
                       const std::vector<std::array<double, 3>>& points, double tolerance) {
@@ -160,7 +170,8 @@ void expectPointsKept(const std::string& formula, const Box& domain,
       const Box q{{p[0] - tolerance, p[1] - tolerance, p[2] - tolerance},
                   {p[0] + tolerance, p[1] + tolerance, p[2] + tolerance}};
       if (!index.meets(q) && ++missed <= 5)
-        ADD_FAILURE() << formula << ": (" << p[0] << ", " << p[1] << ", " << p[2] << ") is in no kept leaf";
+        ADD_FAILURE() << formula << ": (" << p[0] << ", " << p[1] << ", " << p[2]
+                      << ") is in no kept leaf";
     }
     EXPECT_EQ(missed, 0);
   }

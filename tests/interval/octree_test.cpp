@@ -1,5 +1,7 @@
 // Octree behaviour other than safety: statistics, determinism across thread counts, the
 // node budget, input errors, the uniform criterion's area-like growth, the report and CSV.
+#include "interval/octree.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,7 +9,6 @@
 #include <sstream>
 #include <string>
 
-#include "interval/octree.hpp"
 #include "interval/report.hpp"
 #include "surfaces.hpp"
 
@@ -132,7 +133,8 @@ TEST(Octree, BadInputGivesAnErrorNotACrash) {
   EXPECT_TRUE(std::holds_alternative<OctreeError>(buildOctree(f, {}, kCube, st)));
   const double a[] = {1.0};
   EXPECT_TRUE(std::holds_alternative<Octree>(buildOctree(f, a, kCube, st)));
-  EXPECT_TRUE(std::holds_alternative<OctreeError>(buildOctree(f, a, Box{{1, 0, 0}, {0, 1, 1}}, st)));
+  EXPECT_TRUE(
+      std::holds_alternative<OctreeError>(buildOctree(f, a, Box{{1, 0, 0}, {0, 1, 1}}, st)));
   st.level = kMaxOctreeLevel + 1;
   EXPECT_TRUE(std::holds_alternative<OctreeError>(buildOctree(f, a, kCube, st)));
 }
@@ -172,7 +174,8 @@ TEST(Octree, ReportAndCsv) {
     double v[6];
     int level = -1;
     ASSERT_EQ(std::sscanf(line.c_str(), "%d,%lf,%lf,%lf,%lf,%lf,%lf", &level, &v[0], &v[1], &v[2],
-                          &v[3], &v[4], &v[5]), 7);
+                          &v[3], &v[4], &v[5]),
+              7);
     const Box& b = t.leaves[rows].box;
     EXPECT_EQ(level, 3);
     EXPECT_EQ(v[0], b.min[0]);  // 17 digits: bit-exact round trip

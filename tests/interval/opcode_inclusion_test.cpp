@@ -16,9 +16,13 @@ namespace {
 constexpr int kBoxes = 100000;
 constexpr int kPointsPerAxis = 4;  // unary: 4 points, binary: 16 pairs per box
 
-bool isLeaf(Op op) { return opInfo(op).kind == OpKind::Leaf; }
+bool isLeaf(Op op) {
+  return opInfo(op).kind == OpKind::Leaf;
+}
 
-std::string show(Interval i) { return "[" + std::to_string(i.lo) + ", " + std::to_string(i.hi) + "]"; }
+std::string show(Interval i) {
+  return "[" + std::to_string(i.lo) + ", " + std::to_string(i.hi) + "]";
+}
 
 class OpcodeInclusion : public ::testing::TestWithParam<Op> {};
 
@@ -51,8 +55,7 @@ TEST_P(OpcodeInclusion, HoldsSampledPointsAndMpfiEnclosure) {
       ++mpfiChecks;
       if (!(r.lo <= ref->lo && ref->hi <= r.hi) && ++failures <= 10)
         ADD_FAILURE() << opInfo(op).enumName << " n=" << ival << " a=" << show(a)
-                      << " b=" << show(b) << " result " << show(r) << " misses MPFI "
-                      << show(*ref);
+                      << " b=" << show(b) << " result " << show(r) << " misses MPFI " << show(*ref);
     }
   }
   EXPECT_EQ(failures, 0);

@@ -3,6 +3,8 @@
 // narrowed by bisection), also when its search runs out of budget; it must be tight where
 // the surface fills a small part of the domain; and the box hierarchy cut to it must keep
 // covering the surface.
+#include "interval/surface_bounds.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,9 +12,8 @@
 #include <vector>
 
 #include "expr/tape.hpp"
-#include "interval/octree.hpp"
 #include "interval/hierarchy_builder.hpp"
-#include "interval/surface_bounds.hpp"
+#include "interval/octree.hpp"
 #include "surfaces.hpp"
 
 namespace zs {
@@ -20,7 +21,9 @@ namespace {
 
 constexpr int kGrid = 96;
 
-Box cube(double lo, double hi) { return {{lo, lo, lo}, {hi, hi, hi}}; }
+Box cube(double lo, double hi) {
+  return {{lo, lo, lo}, {hi, hi, hi}};
+}
 
 bool holds(const Box& b, const std::array<double, 3>& p) {
   for (std::size_t a = 0; a < 3; ++a)
@@ -61,7 +64,12 @@ std::vector<std::array<double, 3>> surfacePoints(const Formula& f, const Box& d)
               std::array<double, 3> m = p;
               m[axis] = 0.5 * (lo + hi);
               const double fm = F(m);
-              if ((fm < 0) == (flo < 0)) { lo = m[axis]; flo = fm; } else { hi = m[axis]; }
+              if ((fm < 0) == (flo < 0)) {
+                lo = m[axis];
+                flo = fm;
+              } else {
+                hi = m[axis];
+              }
             }
             std::array<double, 3> r = p;
             r[axis] = 0.5 * (lo + hi);
@@ -89,21 +97,22 @@ void expectHoldsEverySurfacePoint(const std::string& formula, const Box& domain,
     if (!holds(b, p) && ++outside <= 5)
       ADD_FAILURE() << "surface point (" << p[0] << ", " << p[1] << ", " << p[2]
                     << ") outside the bounds [" << b.min[0] << ", " << b.max[0] << "] x ["
-                    << b.min[1] << ", " << b.max[1] << "] x [" << b.min[2] << ", "
-                    << b.max[2] << "]";
+                    << b.min[1] << ", " << b.max[1] << "] x [" << b.min[2] << ", " << b.max[2]
+                    << "]";
 }
 
 TEST(SurfaceBounds, HoldEverySurfacePoint) {
   const Box skewed{{-1.9, -1.7, -2.1}, {2.2, 1.8, 1.95}};
-  for (std::string_view s : test::kThesisSurfaces) expectHoldsEverySurfacePoint(std::string(s), skewed);
+  for (std::string_view s : test::kThesisSurfaces)
+    expectHoldsEverySurfacePoint(std::string(s), skewed);
   expectHoldsEverySurfacePoint("sqrt(x^2+y^2+z^2)-1-0.08*sin(10*x)*sin(10*y)*sin(10*z)",
                                cube(-1.5, 1.5));
   expectHoldsEverySurfacePoint(
       "exp(-4*((x-0.5)^2+y^2+z^2))+exp(-4*((x+0.5)^2+y^2+z^2))+exp(-4*(x^2+(y-0.7)^2+z^2))-0.6",
       cube(-1.5, 1.5));
   expectHoldsEverySurfacePoint("sin(x)*cos(y)+sin(y)*cos(z)+sin(z)*cos(x)", skewed);
-  expectHoldsEverySurfacePoint("1/x-1", skewed);            // a pole inside the domain
-  expectHoldsEverySurfacePoint("sqrt(x)-0.5", skewed);      // half the domain undefined
+  expectHoldsEverySurfacePoint("1/x-1", skewed);        // a pole inside the domain
+  expectHoldsEverySurfacePoint("sqrt(x)-0.5", skewed);  // half the domain undefined
   expectHoldsEverySurfacePoint("(x^2+y^2+z^2-1)^2-1e-6", cube(-1.5, 1.5));  // a thin shell
 }
 
@@ -128,7 +137,8 @@ TEST(SurfaceBounds, StayConservativeWhenTheBudgetRunsOut) {
   // One evaluation per face proves nothing: the whole domain.
   SurfaceBoundsSettings one;
   one.faceBudget = 1;
-  const Box b = surfaceBounds(test::parseOrDie("x^2+y^2+z^2-1"), {}, cube(-2, 2), std::nullopt, one);
+  const Box b =
+      surfaceBounds(test::parseOrDie("x^2+y^2+z^2-1"), {}, cube(-2, 2), std::nullopt, one);
   EXPECT_EQ(b.min, cube(-2, 2).min);
   EXPECT_EQ(b.max, cube(-2, 2).max);
 }
@@ -144,7 +154,8 @@ TEST(SurfaceBounds, AreTightAroundASmallSurface) {
   }
   // Off centre and flat: the plane z = 0.3 in a skewed domain. Its lower face costs a whole
   // layer of 64 x 64 cells below the plane, which is the budget: the bound stops a cell short.
-  const Box p = surfaceBounds(test::parseOrDie("z-0.3"), {}, {{-1, -2, -3}, {1, 2, 3}}, std::nullopt);
+  const Box p =
+      surfaceBounds(test::parseOrDie("z-0.3"), {}, {{-1, -2, -3}, {1, 2, 3}}, std::nullopt);
   EXPECT_EQ(p.min[0], -1.0);
   EXPECT_EQ(p.max[1], 2.0);
   EXPECT_LE(p.min[2], 0.3);
@@ -154,7 +165,8 @@ TEST(SurfaceBounds, AreTightAroundASmallSurface) {
 }
 
 TEST(SurfaceBounds, AreEmptyWithoutASurface) {
-  EXPECT_TRUE(isEmpty(surfaceBounds(test::parseOrDie("x^2+y^2+z^2+1"), {}, cube(-2, 2), std::nullopt)));
+  EXPECT_TRUE(
+      isEmpty(surfaceBounds(test::parseOrDie("x^2+y^2+z^2+1"), {}, cube(-2, 2), std::nullopt)));
   EXPECT_TRUE(isEmpty(surfaceBounds(test::parseOrDie("sqrt(x)"), {}, cube(-3, -1), std::nullopt)));
   // The sphere lies outside the clipping ball.
   const Ball ball{{0, 0, 0}, 0.5};

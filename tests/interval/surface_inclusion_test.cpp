@@ -35,7 +35,9 @@ TEST_P(SurfaceInclusion, FAndGradientHoldPointsAndMpfi) {
   for (int n = 0; n < kBoxes && failures < 10; ++n) {
     const Box box = s.box();
     ie.eval(box, {}, r);
-    auto axis = [&box](int i) { return Interval{box.min[std::size_t(i)], box.max[std::size_t(i)]}; };
+    auto axis = [&box](int i) {
+      return Interval{box.min[std::size_t(i)], box.max[std::size_t(i)]};
+    };
     for (int k = 0; k < kPoints; ++k) {
       // k = 0, 1: the min and max corners; 2: the center; then random points
       pe.eval(s.pointIn(axis(0), k), s.pointIn(axis(1), k), s.pointIn(axis(2), k), {}, v);

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "render/camera.hpp"
 #include "jsurf/jsurf.hpp"
+#include "render/camera.hpp"
 
 namespace zs::jsurf {
 namespace {
@@ -67,7 +67,9 @@ TEST(JsurfImport, LightsStayFixedToTheCameraAsSurfersDo) {
   const Lights& l = s.render.lights;
   EXPECT_EQ(l.space, LightSpace::Camera);
   // Where they stand in the world for the imported view.
-  auto world = [&](const Light& light) { return cameraPointToWorld(s.render.camera, light.position); };
+  auto world = [&](const Light& light) {
+    return cameraPointToWorld(s.render.camera, light.position);
+  };
   // Lights 0, 1 (off) and 2; the five slots the file leaves out are not kept.
   ASSERT_EQ(l.sources.size(), 3u);
   for (const Light& light : l.sources) EXPECT_EQ(light.kind, LightKind::Point);

@@ -7,8 +7,8 @@
 
 #include <cmath>
 
-#include "render/camera.hpp"
 #include "jsurf/jsurf.hpp"
+#include "render/camera.hpp"
 
 namespace zs::jsurf {
 namespace {
@@ -34,8 +34,9 @@ void expectNear(const Vec3& a, const Vec3& b, const char* what) {
 
 // Where a light stands in the world, whether the scene fixes it there or to its camera.
 Vec3 inWorld(const Scene& s, const Light& l) {
-  return s.render.lights.space == LightSpace::Camera ? cameraPointToWorld(s.render.camera, l.position)
-                                                     : l.position;
+  return s.render.lights.space == LightSpace::Camera
+             ? cameraPointToWorld(s.render.camera, l.position)
+             : l.position;
 }
 
 void expectSurferKeysEqual(const Scene& a, const Scene& b) {

@@ -1,13 +1,12 @@
 // The files as written: binary STL of the right size with facet normals that agree with the
 // winding, PLY's header and size, OBJ's counts, and the format chosen by extension.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-
-#include <unistd.h>
 
 #include "mesh/mesh_io.hpp"
 #include "mesh_fixture.hpp"
@@ -35,7 +34,8 @@ TEST(MeshIo, WritesStlPlyAndObj) {
   const MeshResult r = testing::meshOf("x^2 + y^2 + z^2 - 1", testing::cube(1.5), 4);
   const Mesh& m = r.mesh;
   ASSERT_GT(m.triangles.size(), 0u);
-  const auto dir = std::filesystem::temp_directory_path() / ("zs_mesh_io_" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("zs_mesh_io_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
 
   ASSERT_EQ(writeMesh(m, (dir / "s.stl").string(), MeshFormat::Stl), "");

@@ -30,6 +30,8 @@ inline MeshResult meshOf(const std::string& formula, const Box& box, int level, 
   return std::get<MeshResult>(std::move(r));
 }
 
-inline Box cube(double half) { return {{-half, -half, -half}, {half, half, half}}; }
+inline Box cube(double half) {
+  return {{-half, -half, -half}, {half, half, half}};
+}
 
 }  // namespace zs::testing

@@ -17,7 +17,8 @@ using testing::meshOf;
 // Every vertex within a cell of the plane x = x0.
 void expectOnlyThePlane(const MeshResult& r, double x0) {
   ASSERT_GT(r.mesh.triangles.size(), 1000u);
-  for (const auto& p : r.mesh.positions) ASSERT_NEAR(p[0], x0, r.stats.cellSize) << p[1] << ", " << p[2];
+  for (const auto& p : r.mesh.positions)
+    ASSERT_NEAR(p[0], x0, r.stats.cellSize) << p[1] << ", " << p[2];
 }
 
 TEST(MeshPoles, ThePoleOfOneOverXIsNotMeshed) {

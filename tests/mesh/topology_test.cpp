@@ -28,7 +28,9 @@ void expectClosed(const MeshTopology& t, long euler) {
   EXPECT_GT(t.faces, 100u);
 }
 
-void expectNoSelfIntersections(const Mesh& m) { EXPECT_EQ(countSelfIntersections(m), 0u); }
+void expectNoSelfIntersections(const Mesh& m) {
+  EXPECT_EQ(countSelfIntersections(m), 0u);
+}
 
 TEST(MeshTopology, SphereIsAClosedManifoldOfEulerCharacteristicTwo) {
   for (int level : {3, 5, 7}) {
@@ -131,7 +133,8 @@ TEST(MeshTopology, OpenSurfaceEndsOnTheBoxAndTheCapClosesIt) {
 }
 
 TEST(MeshTopology, CappedGyroidCellIsClosed) {
-  const MeshResult r = meshOf("sin(x)*cos(y) + sin(y)*cos(z) + sin(z)*cos(x)", cube(3.14159), 6, true);
+  const MeshResult r =
+      meshOf("sin(x)*cos(y) + sin(y)*cos(z) + sin(z)*cos(x)", cube(3.14159), 6, true);
   const MeshTopology t = checkMesh(r.mesh);
   expectClosed(t, t.euler);  // closed and manifold; the genus is whatever the cell cuts
   EXPECT_EQ(t.boundaryEdges, 0u);
@@ -172,8 +175,8 @@ namespace {
 TEST(MeshCheck, FindsWhatItLooksFor) {
   // Two triangles through each other, and one pair that only shares a vertex.
   Mesh m;
-  m.positions = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0.5, 0.5, -1}, {0.5, 0.5, 1}, {1.5, 1.5, 0.5},
-                 {5, 5, 5}, {6, 5, 5}};
+  m.positions = {{0, 0, 0},     {2, 0, 0},       {0, 2, 0}, {0.5, 0.5, -1},
+                 {0.5, 0.5, 1}, {1.5, 1.5, 0.5}, {5, 5, 5}, {6, 5, 5}};
   m.normals.resize(m.positions.size());
   m.kinds.resize(m.positions.size());
   m.triangles = {{0, 1, 2}, {3, 4, 5}, {0, 6, 7}};

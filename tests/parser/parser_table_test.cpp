@@ -24,7 +24,8 @@ struct ErrorCase {
 
 const NormalCase kNormal[] = {
     {"x^2 + z^2 - y", "x^2 + z^2 - y"},
-    {"x^2*y + x^2*z + y^2*x + y^2*z + z^2*y + z^2*x - (2/5)*(x*y + x*z + y*z)", "x^2*y + x^2*z + y^2*x + y^2*z + z^2*y + z^2*x - 0.4*(x*y + x*z + y*z)"},
+    {"x^2*y + x^2*z + y^2*x + y^2*z + z^2*y + z^2*x - (2/5)*(x*y + x*z + y*z)",
+     "x^2*y + x^2*z + y^2*x + y^2*z + z^2*y + z^2*x - 0.4*(x*y + x*z + y*z)"},
     {"x^4 + y^4 + z^4 - 1", "x^4 + y^4 + z^4 - 1"},
     {"x^2 + y^3 + z^5 - 1", "x^2 + y^3 + z^5 - 1"},
     {"x^3*y + y^3*z + z^3*x", "x^3*y + y^3*z + z^3*x"},
@@ -103,7 +104,8 @@ const NormalCase kNormal[] = {
     {"x*-2", "-2*x"},
     {"a^2", "a^2"},
     {"-x*y", "-x*y"},
-    {"-(x*y)", "-(x*y)"},};
+    {"-(x*y)", "-(x*y)"},
+};
 
 const ErrorCase kErrors[] = {
     {"", 0, 0, "the formula is empty"},
@@ -133,7 +135,8 @@ const ErrorCase kErrors[] = {
     {".", 0, 1, "a '.' must be part of a number"},
     {"(x))", 3, 4, "expected an operator or the en"},
     {"[x)", 2, 3, "expected ']', found ')'"},
-    {"f(", 1, 2, "expected an operand after '('"},    {std::string("x + \0y", 6), 4, 5, "the formula contains a NUL byte"},
+    {"f(", 1, 2, "expected an operand after '('"},
+    {std::string("x + \0y", 6), 4, 5, "the formula contains a NUL byte"},
     {"x + \x01", 4, 5, "unexpected control character"},
     {"x^-", 2, 3, "expected an operand after '-'"},
     {"pow(x)", 5, 6, "pow() takes 2 arguments"},
@@ -143,8 +146,9 @@ const ErrorCase kErrors[] = {
 TEST(ParserTable, NormalizesFormulas) {
   for (const NormalCase& c : kNormal) {
     ParseResult r = parseFormula(c.input);
-    ASSERT_TRUE(std::holds_alternative<Formula>(r)) << c.input << "\n"
-                                                    << formatError(c.input, std::get<ParseError>(r));
+    ASSERT_TRUE(std::holds_alternative<Formula>(r))
+        << c.input << "\n"
+        << formatError(c.input, std::get<ParseError>(r));
     const Formula& f = std::get<Formula>(r);
     EXPECT_EQ(print(f.graph, f.root).value_or("?"), c.normalized) << "input: " << c.input;
   }
@@ -161,7 +165,9 @@ TEST(ParserTable, ReportsErrorSpans) {
   }
 }
 
-TEST(ParserTable, HasEnoughRows) { EXPECT_GE(std::size(kNormal) + std::size(kErrors), 60u); }
+TEST(ParserTable, HasEnoughRows) {
+  EXPECT_GE(std::size(kNormal) + std::size(kErrors), 60u);
+}
 
 }  // namespace
 }  // namespace zs

@@ -1,11 +1,11 @@
 // The formula typesetting of the printed page (src/print/typeset.hpp), with a measure of
 // fixed widths (0.5 of the size per character), so the layout is checked without a font.
+#include "print/typeset.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
 #include <variant>
-
-#include "print/typeset.hpp"
 
 namespace zs::printing {
 namespace {
@@ -43,9 +43,9 @@ TEST(Typeset, PowersAreRaisedSmallerExponents) {
   const TextRun* x = run(box, "x");
   const TextRun* two = run(box, "2");
   ASSERT_TRUE(x && two);
-  EXPECT_LT(two->y, x->y - 5);   // raised above the baseline
+  EXPECT_LT(two->y, x->y - 5);    // raised above the baseline
   EXPECT_LT(two->size, x->size);  // smaller
-  EXPECT_TRUE(x->italic);          // variables in italic, numbers upright
+  EXPECT_TRUE(x->italic);         // variables in italic, numbers upright
   EXPECT_FALSE(two->italic);
   EXPECT_NE(allText(box).find("\u2212"), std::string::npos) << "a real minus sign";
   EXPECT_EQ(box.strokes.size(), 0u) << "no parentheses, bars or radicals";
@@ -69,10 +69,10 @@ TEST(Typeset, ParenthesesOnlyWherePrecedenceNeedsThem) {
   EXPECT_EQ(set("x - (y*z)").strokes.size(), 0u);
   EXPECT_EQ(set("x - (y + z)").strokes.size(), 2u);
   EXPECT_EQ(set("(x + y)^2").strokes.size(), 2u);
-  EXPECT_EQ(set("-x^2").strokes.size(), 0u);     // −x², the square of x negated
+  EXPECT_EQ(set("-x^2").strokes.size(), 0u);  // −x², the square of x negated
   EXPECT_EQ(set("(-x)^2").strokes.size(), 2u);
   EXPECT_EQ(set("x*(-y)").strokes.size(), 2u);
-  EXPECT_EQ(set("sin(x)").strokes.size(), 2u);   // a function's parentheses
+  EXPECT_EQ(set("sin(x)").strokes.size(), 2u);  // a function's parentheses
 }
 
 TEST(Typeset, RootsAbsoluteValuesAndNamedConstants) {

@@ -1,11 +1,11 @@
 // Which tiles tile skipping marks off after a beam pass (render/beam_tiles.hpp); no GL.
+#include "render/beam_tiles.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <vector>
-
-#include "render/beam_tiles.hpp"
 
 namespace zs {
 namespace {

@@ -1,14 +1,16 @@
 // The camera contract of docs/camera.md, checked on the CPU reference the shader mirrors.
+#include "render/camera.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "render/camera.hpp"
-
 namespace zs {
 namespace {
 
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double dot(const Vec3& a, const Vec3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 
 void expectOrthonormal(const CameraBasis& b) {
   EXPECT_NEAR(dot(b.forward, b.forward), 1, 1e-12);

@@ -1,12 +1,11 @@
 // Both headless backends give a core context with glad loaded, and the ray tracer reports
 // bad shaders and bad hierarchies as errors with logs instead of crashing.
+#include <glad/gl.h>
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <fstream>
 #include <iterator>
-
-#include <glad/gl.h>
 
 #include "codegen/shader_assembly.hpp"
 #include "render_support.hpp"

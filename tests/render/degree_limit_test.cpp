@@ -21,8 +21,8 @@
 #include <variant>
 #include <vector>
 
-#include "expr/derivative.hpp"
 #include "codegen/emit_ray_polynomial.hpp"
+#include "expr/derivative.hpp"
 #include "expr/tape.hpp"
 #include "parser/parser.hpp"
 #include "render/camera.hpp"
@@ -93,11 +93,12 @@ Measured measure(int n) {
       },
       [&](double) { return 1.5 * tolerance; });
   m = c;
-  std::printf("  T%d (%s): %d reference hits, %d missed, %d extra, worst depth error %.3g; left "
-              "out: %d grazing, %d touching within the tolerance%s\n", n,
-              n >= kDoubleDegree ? "double" : "float", m.hits, m.missed, m.extra, m.worstDepth,
-              m.grazing, m.touching,
-              n > kMaxBernsteinDegree ? " (above the limit: the app uses the interval method)" : "");
+  std::printf(
+      "  T%d (%s): %d reference hits, %d missed, %d extra, worst depth error %.3g; left "
+      "out: %d grazing, %d touching within the tolerance%s\n",
+      n, n >= kDoubleDegree ? "double" : "float", m.hits, m.missed, m.extra, m.worstDepth,
+      m.grazing, m.touching,
+      n > kMaxBernsteinDegree ? " (above the limit: the app uses the interval method)" : "");
   return m;
 }
 

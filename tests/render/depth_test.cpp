@@ -24,8 +24,8 @@ double sphereDistance(const Ray& r, double& clearance) {
   return disc < 0 ? std::nan("") : -b - std::sqrt(disc);
 }
 
-void checkSphereDepth(Backend backend, const RenderSettings& settings, int size,
-                      int level = 3, Criteria criteria = Criteria::Thesis,
+void checkSphereDepth(Backend backend, const RenderSettings& settings, int size, int level = 3,
+                      Criteria criteria = Criteria::Thesis,
                       TracingMethod method = TracingMethod::Auto, double tolerance = 1e-4) {
   std::string error;
   ASSERT_NE(test::context(backend, error), nullptr) << error;
@@ -40,7 +40,8 @@ void checkSphereDepth(Backend backend, const RenderSettings& settings, int size,
   for (int j = 0; j < size; ++j)
     for (int i = 0; i < size; ++i) {
       double clearance = 0;
-      const double expected = sphereDistance(primaryRay(settings.camera, size, size, i, j), clearance);
+      const double expected =
+          sphereDistance(primaryRay(settings.camera, size, size, i, j), clearance);
       const float depth = frame.depth.at(i, j);
       // Rays passing within 1e-4 of the sphere are decided by float rounding either way.
       if (std::abs(clearance) < 1e-4) {
@@ -95,8 +96,7 @@ class DepthOfEveryMethod : public ::testing::TestWithParam<TracingMethod> {};
 
 TEST_P(DepthOfEveryMethod, UnitSphere) {
   RenderSettings s = test::testSettings({0.3, -0.2, 3});
-  const double tolerance =
-      GetParam() == TracingMethod::Interval ? s.tracing.epsilon : 1e-4;
+  const double tolerance = GetParam() == TracingMethod::Interval ? s.tracing.epsilon : 1e-4;
   checkSphereDepth(Backend::Egl, s, 64, 3, Criteria::Thesis, GetParam(), tolerance);
   s = test::testSettings({1.2, -0.7, 2.5});
   s.camera.projection = Projection::Orthographic;

@@ -67,12 +67,10 @@ INSTANTIATE_TEST_SUITE_P(Methods, EveryMethod,
                          ::testing::Values(TracingMethod::Auto, TracingMethod::Bernstein,
                                            TracingMethod::Interval, TracingMethod::Sampling),
                          [](const auto& info) {
-                           return std::string(info.param == TracingMethod::Auto ? "Auto"
-                                              : info.param == TracingMethod::Bernstein
-                                                  ? "Bernstein"
-                                              : info.param == TracingMethod::Interval
-                                                  ? "Interval"
-                                                  : "Sampling");
+                           return std::string(info.param == TracingMethod::Auto        ? "Auto"
+                                              : info.param == TracingMethod::Bernstein ? "Bernstein"
+                                              : info.param == TracingMethod::Interval  ? "Interval"
+                                                                                      : "Sampling");
                          });
 
 }  // namespace

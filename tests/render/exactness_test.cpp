@@ -1,9 +1,9 @@
 // The exact methods (Bernstein, the default for polynomials, and the interval method) against
-// an independent CPU reference, with default settings and no per-surface tuning. The reference isolates each pixel ray's
-// first root in double precision with outward-rounded interval arithmetic (src/interval) on
-// the boxes around ever shorter pieces of the ray: a piece whose interval excludes 0 has no
-// root, so the reference never misses; it calls a piece shorter than 1e-8 of the ray whose
-// interval still holds 0 a hit, which only near-misses closer than that can fool.
+// an independent CPU reference, with default settings and no per-surface tuning. The reference
+// isolates each pixel ray's first root in double precision with outward-rounded interval arithmetic
+// (src/interval) on the boxes around ever shorter pieces of the ray: a piece whose interval
+// excludes 0 has no root, so the reference never misses; it calls a piece shorter than 1e-8 of the
+// ray whose interval still holds 0 a hit, which only near-misses closer than that can fool.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -69,7 +69,8 @@ Comparison compare(const std::string& formula, const Domain& domain, Vec3 eye,
   const Frame frame = tracer->render(s, domain, kSize, kSize);
   EXPECT_EQ(frame.error, "");
 
-  Formula f = std::get<Formula>(parseFormula(referenceFormula.empty() ? formula : referenceFormula));
+  Formula f =
+      std::get<Formula>(parseFormula(referenceFormula.empty() ? formula : referenceFormula));
   const Tape tape = compileTape(f.graph, {f.root});
   IntervalEvaluator eval(tape);
   auto hitAt = [&](double i, double j, double& depth) {
@@ -142,9 +143,12 @@ class Exactness : public ::testing::TestWithParam<TracingMethod> {
  protected:
   static double depthBound(DepthClaims c) {
     switch (GetParam()) {
-      case TracingMethod::Interval: return c.interval;
-      case TracingMethod::Sampling: return c.sampling;
-      default: return c.bernstein;
+      case TracingMethod::Interval:
+        return c.interval;
+      case TracingMethod::Sampling:
+        return c.sampling;
+      default:
+        return c.bernstein;
     }
   }
 };
@@ -166,9 +170,9 @@ TEST_P(Exactness, ThinTorus) {
   // Tube radius 0.02 around the circle of radius 0.8 in the xz plane, seen from above-front,
   // at 120 x 120 so the tube is several pixels wide.
   kSize = 120;
-  expectExact(compare("(x^2+y^2+z^2+0.64-0.0004)^2-2.56*(x^2+z^2)", Domain{}, {0, 1.6, 1.4},
-                      GetParam()),
-              depthBound({2.5e-4, 2e-3, INFINITY}));
+  expectExact(
+      compare("(x^2+y^2+z^2+0.64-0.0004)^2-2.56*(x^2+z^2)", Domain{}, {0, 1.6, 1.4}, GetParam()),
+      depthBound({2.5e-4, 2e-3, INFINITY}));
   kSize = 64;
 }
 
@@ -195,8 +199,10 @@ TEST(ExactnessOfTheDefault, ChebyshevDegree12) {
   std::string f, reference;
   for (char v : {'x', 'y', 'z'}) {
     std::string t = t12, n = nested;
-    for (char& ch : t) if (ch == 'x') ch = v;
-    for (char& ch : n) if (ch == 'x') ch = v;
+    for (char& ch : t)
+      if (ch == 'x') ch = v;
+    for (char& ch : n)
+      if (ch == 'x') ch = v;
     f += (f.empty() ? "" : "+") + t;
     reference += (reference.empty() ? "" : "+") + n;
   }

@@ -20,7 +20,8 @@ class Feature : public ::testing::Test {
     std::string error;
     if (!test::context(Backend::Egl, error)) return;
     sphere_ = test::makeTracer({"x^2+y^2+z^2-1", {}, 2}, error).release();
-    torus_ = test::makeTracer({"(x^2+y^2+z^2+0.8^2-0.35^2)^2-4*0.8^2*(x^2+y^2)", {}, 3}, error).release();
+    torus_ = test::makeTracer({"(x^2+y^2+z^2+0.8^2-0.35^2)^2-4*0.8^2*(x^2+y^2)", {}, 3}, error)
+                 .release();
     cylinder_ = test::makeTracer({"x^2+y^2-1", {}, 2}, error).release();
   }
   static void TearDownTestSuite() {
@@ -122,7 +123,8 @@ TEST_F(Feature, ReflectionBlendsPrimaryAndReflectedColor) {
       const auto p = at(torusOff, i, j), q = at(torusOn, i, j);
       if (p == std::array<double, 3>{kBackground[0], kBackground[1], kBackground[2]}) continue;
       double worst = 0;
-      for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(q[c] - (0.7 * p[c] + 0.3 * kBackground[c])));
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(q[c] - (0.7 * p[c] + 0.3 * kBackground[c])));
       seesSurface += worst > 4.0 / 255;
     }
   EXPECT_GT(seesSurface, 20);
@@ -317,17 +319,21 @@ TEST_F(Feature, BoxProxyAndFullScreenTrianglesGiveTheSamePicture) {
 TEST_F(Feature, TilesProgressAndCancel) {
   RenderSettings s = base();
   int calls = 0, lastTotal = 0;
-  const Frame tiled = sphere_->render(s, Domain{}, 100, 70, [&](int done, int total) {
-    EXPECT_EQ(done, ++calls);
-    lastTotal = total;
-    return true;
-  }, 32);
+  const Frame tiled = sphere_->render(
+      s, Domain{}, 100, 70,
+      [&](int done, int total) {
+        EXPECT_EQ(done, ++calls);
+        lastTotal = total;
+        return true;
+      },
+      32);
   ASSERT_EQ(tiled.error, "");
   EXPECT_EQ(calls, 4 * 3);
   EXPECT_EQ(lastTotal, 12);
   const Frame whole = sphere_->render(s, Domain{}, 100, 70, {}, 4096);
   EXPECT_EQ(tiled.color.rgba, whole.color.rgba);
-  const Frame cancelled = sphere_->render(s, Domain{}, 100, 70, [](int, int) { return false; }, 32);
+  const Frame cancelled = sphere_->render(
+      s, Domain{}, 100, 70, [](int, int) { return false; }, 32);
   EXPECT_EQ(cancelled.error, "cancelled");
 }
 

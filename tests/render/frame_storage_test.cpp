@@ -51,7 +51,8 @@ TEST_P(FrameStorageTest, BothWaysDrawTheSamePictureInEveryVariant) {
   if (!varyings && RayTracer().frameStorage() == FrameStorage::Uniforms) {
     // The block needs more varying components than GL promises; NVIDIA's linker says so.
     GTEST_SKIP() << "this driver cannot pass the frame's parameters as varyings (it uses "
-                    "uniforms): " << error.substr(0, error.find("--- fragment"));
+                    "uniforms): "
+                 << error.substr(0, error.find("--- fragment"));
   }
   ASSERT_NE(varyings, nullptr) << error;
   spec.frameStorage = FrameStorage::Uniforms;
@@ -104,9 +105,10 @@ TEST_P(FrameStorageTest, BothWaysDrawTheSamePictureInEveryVariant) {
 
 INSTANTIATE_TEST_SUITE_P(
     Methods, FrameStorageTest,
-    ::testing::Values(StorageCase{"bernstein", "x^4+y^4+z^4-1", TracingMethod::Bernstein},
-                      StorageCase{"interval", "x^2+y^2+z^2-1+0.1*sin(5*x)", TracingMethod::Interval},
-                      StorageCase{"sampling", "x^2*y^2+y^2*z^2+z^2*x^2-0.1", TracingMethod::Sampling}),
+    ::testing::Values(
+        StorageCase{"bernstein", "x^4+y^4+z^4-1", TracingMethod::Bernstein},
+        StorageCase{"interval", "x^2+y^2+z^2-1+0.1*sin(5*x)", TracingMethod::Interval},
+        StorageCase{"sampling", "x^2*y^2+y^2*z^2+z^2*x^2-0.1", TracingMethod::Sampling}),
     [](const ::testing::TestParamInfo<StorageCase>& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -24,7 +24,8 @@ using Clock = std::chrono::steady_clock;
 static double cpuMs() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
-  return (u.ru_utime.tv_sec + u.ru_stime.tv_sec) * 1e3 + (u.ru_utime.tv_usec + u.ru_stime.tv_usec) / 1e3;
+  return (u.ru_utime.tv_sec + u.ru_stime.tv_sec) * 1e3 +
+         (u.ru_utime.tv_usec + u.ru_stime.tv_usec) / 1e3;
 }
 
 static double msSince(Clock::time_point start) {
@@ -33,7 +34,10 @@ static double msSince(Clock::time_point start) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: %s FORMULA [WxH] [level] [frames] [--osmesa] [--no-tangent] [--png out.png]\n", argv[0]);
+    std::fprintf(
+        stderr,
+        "usage: %s FORMULA [WxH] [level] [frames] [--osmesa] [--no-tangent] [--png out.png]\n",
+        argv[0]);
     return 2;
   }
   int w = 800, h = 600, level = 3, frames = 15;
@@ -44,15 +48,24 @@ int main(int argc, char** argv) {
   bool sampling = false;
   std::vector<const char*> positional;
   for (int i = 2; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--osmesa")) osmesa = true;
-    else if (!std::strcmp(argv[i], "--no-tangent")) tangent = false;
-    else if (!std::strcmp(argv[i], "--no-reflection")) reflection = false;
-    else if (!std::strcmp(argv[i], "--samples") && i + 1 < argc) samples = std::atoi(argv[++i]);
-    else if (!std::strcmp(argv[i], "--intervals") && i + 1 < argc) intervals = std::atoi(argv[++i]);
-    else if (!std::strcmp(argv[i], "--epsilon") && i + 1 < argc) epsilon = std::atof(argv[++i]);
-    else if (!std::strcmp(argv[i], "--png") && i + 1 < argc) png = argv[++i];
-    else if (!std::strcmp(argv[i], "--sampling")) sampling = true;
-    else positional.push_back(argv[i]);
+    if (!std::strcmp(argv[i], "--osmesa"))
+      osmesa = true;
+    else if (!std::strcmp(argv[i], "--no-tangent"))
+      tangent = false;
+    else if (!std::strcmp(argv[i], "--no-reflection"))
+      reflection = false;
+    else if (!std::strcmp(argv[i], "--samples") && i + 1 < argc)
+      samples = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--intervals") && i + 1 < argc)
+      intervals = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--epsilon") && i + 1 < argc)
+      epsilon = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--png") && i + 1 < argc)
+      png = argv[++i];
+    else if (!std::strcmp(argv[i], "--sampling"))
+      sampling = true;
+    else
+      positional.push_back(argv[i]);
   }
   if (positional.size() > 0) std::sscanf(positional[0], "%dx%d", &w, &h);
   if (positional.size() > 1) level = std::atoi(positional[1]);
@@ -94,9 +107,12 @@ int main(int argc, char** argv) {
   }
   const double cpuPerFrame = (cpuMs() - cpuStart) / frames;
   std::sort(times.begin(), times.end());
-  std::printf("%s  %s  %dx%d level %d tangent %s reflection %s samples %d intervals %d epsilon %g: median %.1f ms (min %.1f, max %.1f), CPU %.1f ms/frame, first frame %.0f ms\n",
-              argv[1], sampling ? "sampling" : "default method", w, h, level, tangent ? "on" : "off", reflection ? "on" : "off", samples, intervals, epsilon, times[times.size() / 2], times.front(),
-              times.back(), cpuPerFrame, first);
+  std::printf(
+      "%s  %s  %dx%d level %d tangent %s reflection %s samples %d intervals %d epsilon %g: median "
+      "%.1f ms (min %.1f, max %.1f), CPU %.1f ms/frame, first frame %.0f ms\n",
+      argv[1], sampling ? "sampling" : "default method", w, h, level, tangent ? "on" : "off",
+      reflection ? "on" : "off", samples, intervals, epsilon, times[times.size() / 2],
+      times.front(), times.back(), cpuPerFrame, first);
   if (png) {
     Frame frame = tracer->render(settings, spec.domain, w, h);
     if (!frame.error.empty() || !writePng(png, frame.color).empty()) return 1;

@@ -1,9 +1,8 @@
 // The viewer's path: a GLFW window context (3.3 core forward-compatible) and
 // RayTracer::draw into its default framebuffer. Needs an X display: run the suite under
 // `xvfb-run -a` to include it; without DISPLAY it is skipped, not failed.
-#include <gtest/gtest.h>
-
 #include <glad/gl.h>
+#include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <cstring>

@@ -1,22 +1,22 @@
 // The one-texel-per-node repack of the box hierarchy.
+#include "render/hierarchy_gpu.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "render/hierarchy_gpu.hpp"
-
 namespace zs {
 namespace {
 
 // 12 floats per node as in interval/hierarchy.hpp.
-void addNode(std::vector<float>& out, std::array<float, 3> lo, std::array<float, 3> hi,
-             int escape, bool leaf) {
+void addNode(std::vector<float>& out, std::array<float, 3> lo, std::array<float, 3> hi, int escape,
+             bool leaf) {
   float r = 0;
   for (int a = 0; a < 3; ++a) r += (hi[a] - lo[a]) * (hi[a] - lo[a]);
-  out.insert(out.end(), {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2,
-                         std::sqrt(r) / 2, lo[0], lo[1], lo[2], float(escape), hi[0], hi[1],
-                         hi[2], leaf ? 1.0f : 0.0f});
+  out.insert(out.end(),
+             {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2, std::sqrt(r) / 2,
+              lo[0], lo[1], lo[2], float(escape), hi[0], hi[1], hi[2], leaf ? 1.0f : 0.0f});
 }
 
 TEST(HierarchyGpu, PacksOctreeCellsExactly) {

@@ -1,4 +1,6 @@
 // PNG/PFM round trips, the PFM byte layout the CLI promises, and the diff metric.
+#include "render/image.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,8 +8,6 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
-
-#include "render/image.hpp"
 
 namespace zs {
 namespace {
@@ -60,7 +60,7 @@ TEST(Image, PfmHeaderAndBottomUpLittleEndianRows) {
   EXPECT_EQ(data.substr(0, header.size()), header);
   float raster[4];
   std::memcpy(raster, data.data() + header.size(), 16);  // this machine is little-endian
-  EXPECT_EQ(raster[0], 3.0f);  // the file starts with the bottom row
+  EXPECT_EQ(raster[0], 3.0f);                            // the file starts with the bottom row
   EXPECT_EQ(raster[1], 4.25f);
   EXPECT_EQ(raster[2], 1.5f);
   EXPECT_TRUE(std::isinf(raster[3]));

@@ -81,9 +81,10 @@ Measured measure(const Case& c) {
         return 2.0 * (s.tracing.epsilon + 2.0 * planeHalf / c.size * (ortho ? 1.0 : t));
       });
   m = d;
-  std::printf("  %s: %d reference hits, %d missed, %d extra, worst depth error %.3g; left out: "
-              "%d grazing, %d within a footprint\n",
-              c.formula.c_str(), m.hits, m.missed, m.extra, m.worstDepth, m.grazing, m.touching);
+  std::printf(
+      "  %s: %d reference hits, %d missed, %d extra, worst depth error %.3g; left out: "
+      "%d grazing, %d within a footprint\n",
+      c.formula.c_str(), m.hits, m.missed, m.extra, m.worstDepth, m.grazing, m.touching);
   return m;
 }
 
@@ -96,7 +97,9 @@ void expectExact(const Case& c, int minimumHits) {
   EXPECT_LT(m.worstDepth, 2e-3);  // tracing.epsilon (1e-3) plus float rounding
 }
 
-Domain cube(double h) { return Domain{{-h, -h, -h}, {h, h, h}}; }
+Domain cube(double h) {
+  return Domain{{-h, -h, -h}, {h, h, h}};
+}
 
 // The bumpy sphere and the three metaballs with their gradients, by hand.
 void bumpySphere(double x, double y, double z, double out[4]) {
@@ -131,16 +134,19 @@ TEST(IntervalMethod, SchwarzP) {
 }
 
 TEST(IntervalMethod, Metaballs) {
-  Case c{"exp(-4*((x-0.5)^2+y^2+z^2)) + exp(-4*((x+0.5)^2+y^2+z^2)) + "
-         "exp(-4*(x^2+(y-0.7)^2+z^2)) - 0.6",
-         "", cube(1.5), {0.5, 0.8, 4}};
+  Case c{
+      "exp(-4*((x-0.5)^2+y^2+z^2)) + exp(-4*((x+0.5)^2+y^2+z^2)) + "
+      "exp(-4*(x^2+(y-0.7)^2+z^2)) - 0.6",
+      "",
+      cube(1.5),
+      {0.5, 0.8, 4}};
   c.exact = metaballs;
   expectExact(c, 300);
 }
 
 TEST(IntervalMethod, BumpySphere) {
-  Case c{"sqrt(x^2+y^2+z^2) - 1 - 0.08*sin(10*x)*sin(10*y)*sin(10*z)", "", cube(1.5),
-         {0.6, 0.9, 3.2}};
+  Case c{
+      "sqrt(x^2+y^2+z^2) - 1 - 0.08*sin(10*x)*sin(10*y)*sin(10*z)", "", cube(1.5), {0.6, 0.9, 3.2}};
   c.exact = bumpySphere;
   expectExact(c, 500);
 }
@@ -150,8 +156,8 @@ TEST(IntervalMethod, BumpySphere) {
 // it (12 of the 8464 pixels hit at this size, with or without the beam pass); the walk's body
 // is guarded since (raytrace_interval.frag.glsl).
 TEST(IntervalMethod, BumpySphereLarger) {
-  Case c{"sqrt(x^2+y^2+z^2) - 1 - 0.08*sin(10*x)*sin(10*y)*sin(10*z)", "", cube(1.5),
-         {0.6, 0.9, 3.2}};
+  Case c{
+      "sqrt(x^2+y^2+z^2) - 1 - 0.08*sin(10*x)*sin(10*y)*sin(10*z)", "", cube(1.5), {0.6, 0.9, 3.2}};
   c.size = 120;
   c.samples = 400;
   c.exact = bumpySphere;
@@ -212,7 +218,8 @@ TEST(IntervalMethod, TileSkippingKeepsThePicture) {
       {"sqrt(x^2+y^2+z^2) - 1 - 0.08*sin(10*x)*sin(10*y)*sin(10*z)", cube(1.5), {0.6, 0.9, 3.2}},
       {"exp(-4*((x-0.5)^2+y^2+z^2)) + exp(-4*((x+0.5)^2+y^2+z^2)) + "
        "exp(-4*(x^2+(y-0.6)^2+z^2)) - 0.6",
-       cube(1.5), {0.5, 0.8, 4}}};
+       cube(1.5),
+       {0.5, 0.8, 4}}};
   for (const View& view : views) {
     SCOPED_TRACE(view.formula);
     auto tracer = test::makeTracer({view.formula, view.domain, 1}, error);
@@ -294,7 +301,9 @@ TEST_P(SignChangesWithoutRoots, LogOfTheSquaredRadius) {
 
 INSTANTIATE_TEST_SUITE_P(Methods, SignChangesWithoutRoots,
                          ::testing::Values(TracingMethod::Interval, TracingMethod::Sampling),
-                         [](const auto& info) { return std::string(tracingMethodName(info.param)); });
+                         [](const auto& info) {
+                           return std::string(tracingMethodName(info.param));
+                         });
 
 }  // namespace
 }  // namespace zs

@@ -7,17 +7,17 @@
 // The affine rules (affine_prelude.frag.glsl, codegen/op_interval_glsl.hpp) likewise: for
 // random forms c + s tau +- r of the operands sharing one tau, the value of the operation at
 // every sampled tau and remainder must lie within the rule's form at that tau.
-#include <gtest/gtest.h>
 #include <glad/gl.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <initializer_list>
 #include <random>
-#include <variant>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "codegen/emit_interval_glsl.hpp"
@@ -36,30 +36,25 @@ constexpr int kLanes = 256;  // operand pairs per draw: one pixel each
 
 struct Rule {
   Op op;
-  int ival = 0;  // PowI's exponent
-  double lo, hi;  // where operands are drawn from
+  int ival = 0;     // PowI's exponent
+  double lo, hi;    // where operands are drawn from
   double maxWidth;  // largest operand width
 };
 
 // Operand ranges reach past each function's domain, so restriction and the undefined flag
 // are exercised too.
 const Rule kRules[] = {
-    {Op::Neg, 0, -1e3, 1e3, 50},     {Op::Add, 0, -1e3, 1e3, 50},
-    {Op::Sub, 0, -1e3, 1e3, 50},     {Op::Mul, 0, -30, 30, 10},
-    {Op::Div, 0, -30, 30, 10},       {Op::PowI, 2, -5, 5, 3},
-    {Op::PowI, 3, -5, 5, 3},         {Op::PowI, 6, -3, 3, 2},
-    {Op::PowI, -3, -5, 5, 3},        {Op::Pow, 0, -3, 3, 2},
-    {Op::Sin, 0, -100, 100, 4},      {Op::Cos, 0, -100, 100, 4},
-    {Op::Sin, 0, -2, 2, 0.01},       {Op::Cos, 0, -2, 2, 0.01},
-    {Op::Tan, 0, -5, 5, 1},          {Op::Asin, 0, -1.5, 1.5, 1},
-    {Op::Acos, 0, -1.5, 1.5, 1},     {Op::Atan, 0, -50, 50, 20},
-    {Op::Atan2, 0, -3, 3, 2},        {Op::Sinh, 0, -10, 10, 3},
-    {Op::Cosh, 0, -10, 10, 3},       {Op::Tanh, 0, -5, 5, 2},
-    {Op::Exp, 0, -20, 20, 3},        {Op::Log, 0, -1, 50, 10},
-    {Op::Sqrt, 0, -1, 100, 10},      {Op::Cbrt, 0, -50, 50, 10},
-    {Op::Abs, 0, -10, 10, 5},        {Op::Sign, 0, -2, 2, 1},
-    {Op::Floor, 0, -10, 10, 3},      {Op::Ceil, 0, -10, 10, 3},
-    {Op::Min, 0, -10, 10, 5},        {Op::Max, 0, -10, 10, 5},
+    {Op::Neg, 0, -1e3, 1e3, 50}, {Op::Add, 0, -1e3, 1e3, 50}, {Op::Sub, 0, -1e3, 1e3, 50},
+    {Op::Mul, 0, -30, 30, 10},   {Op::Div, 0, -30, 30, 10},   {Op::PowI, 2, -5, 5, 3},
+    {Op::PowI, 3, -5, 5, 3},     {Op::PowI, 6, -3, 3, 2},     {Op::PowI, -3, -5, 5, 3},
+    {Op::Pow, 0, -3, 3, 2},      {Op::Sin, 0, -100, 100, 4},  {Op::Cos, 0, -100, 100, 4},
+    {Op::Sin, 0, -2, 2, 0.01},   {Op::Cos, 0, -2, 2, 0.01},   {Op::Tan, 0, -5, 5, 1},
+    {Op::Asin, 0, -1.5, 1.5, 1}, {Op::Acos, 0, -1.5, 1.5, 1}, {Op::Atan, 0, -50, 50, 20},
+    {Op::Atan2, 0, -3, 3, 2},    {Op::Sinh, 0, -10, 10, 3},   {Op::Cosh, 0, -10, 10, 3},
+    {Op::Tanh, 0, -5, 5, 2},     {Op::Exp, 0, -20, 20, 3},    {Op::Log, 0, -1, 50, 10},
+    {Op::Sqrt, 0, -1, 100, 10},  {Op::Cbrt, 0, -50, 50, 10},  {Op::Abs, 0, -10, 10, 5},
+    {Op::Sign, 0, -2, 2, 1},     {Op::Floor, 0, -10, 10, 3},  {Op::Ceil, 0, -10, 10, 3},
+    {Op::Min, 0, -10, 10, 5},    {Op::Max, 0, -10, 10, 5},
 };
 
 // The preludes, `declarations` (generated code the body calls) and a main() around `body`,
@@ -68,11 +63,12 @@ std::string testShader(std::initializer_list<std::string_view> templates, int in
                        const std::string& body, const std::string& declarations = {}) {
   std::string s(shaderTemplate(kPreludeTemplate));
   for (std::string_view t : templates) s += shaderTemplate(t);
-  return s + declarations + "uniform vec4 zsTestInput[" + std::to_string(inputs) + "];\n"
-             "out vec4 zsTestOut;\n"
-             "void main() {\n"
-             "  bool u = false;\n"
-             "  zsi_partial = false;\n" +
+  return s + declarations + "uniform vec4 zsTestInput[" + std::to_string(inputs) +
+         "];\n"
+         "out vec4 zsTestOut;\n"
+         "void main() {\n"
+         "  bool u = false;\n"
+         "  zsi_partial = false;\n" +
          body + "}\n";
 }
 
@@ -82,8 +78,10 @@ std::string fragmentSource(const Rule& rule) {
   return testShader({kIntervalPreludeTemplate}, kLanes,
                     "  vec4 in4 = zsTestInput[int(gl_FragCoord.x)];\n"
                     "  vec2 a = in4.xy, b = in4.zw;\n"
-                    "  vec2 r = " + glslIntervalOpExpression(rule.op, "a", "b", rule.ival, "u") + ";\n"
-                    "  zsTestOut = vec4(r, u ? 1.0 : 0.0, zsi_partial ? 1.0 : 0.0);\n");
+                    "  vec2 r = " +
+                        glslIntervalOpExpression(rule.op, "a", "b", rule.ival, "u") +
+                        ";\n"
+                        "  zsTestOut = vec4(r, u ? 1.0 : 0.0, zsi_partial ? 1.0 : 0.0);\n");
 }
 
 // Applies the affine rule of `rule` to the forms of its pixel (a in zsTestInput[2 i].xyz, b in
@@ -92,14 +90,16 @@ std::string fragmentSource(const Rule& rule) {
 // rule's result is settled as the emitter settles it, as a chain of one operation.
 std::string affineFragmentSource(const Rule& rule) {
   const std::string result = glslAffineOpExpression(rule.op, "a", "b", rule.ival, "u");
-  return testShader({kIntervalPreludeTemplate, kAffinePreludeTemplate}, 2 * kLanes,
-                    "  int i = int(gl_FragCoord.x);\n"
-                    "  vec3 a3 = zsTestInput[2 * i].xyz, b3 = zsTestInput[2 * i + 1].xyz;\n"
-                    "  vec4 a = vec4(a3, abs(a3.x) + abs(a3.y) + a3.z + ZSI_ETA);\n"
-                    "  vec4 b = vec4(b3, abs(b3.x) + abs(b3.y) + b3.z + ZSI_ETA);\n"
-                    "  vec4 r = " + (affineOpIsPolynomial(rule.op, rule.ival)
-                                         ? "zsa_settle(" + result + ", 1.0)" : result) + ";\n"
-                    "  zsTestOut = vec4(r.xyz, u ? 1.0 : 0.0);\n");
+  return testShader(
+      {kIntervalPreludeTemplate, kAffinePreludeTemplate}, 2 * kLanes,
+      "  int i = int(gl_FragCoord.x);\n"
+      "  vec3 a3 = zsTestInput[2 * i].xyz, b3 = zsTestInput[2 * i + 1].xyz;\n"
+      "  vec4 a = vec4(a3, abs(a3.x) + abs(a3.y) + a3.z + ZSI_ETA);\n"
+      "  vec4 b = vec4(b3, abs(b3.x) + abs(b3.y) + b3.z + ZSI_ETA);\n"
+      "  vec4 r = " +
+          (affineOpIsPolynomial(rule.op, rule.ival) ? "zsa_settle(" + result + ", 1.0)" : result) +
+          ";\n"
+          "  zsTestOut = vec4(r.xyz, u ? 1.0 : 0.0);\n");
 }
 
 const char* kVertex =
@@ -179,8 +179,8 @@ TEST(IntervalRules, EveryRuleEnclosesTheOperationOnThisGpu) {
         const bool inside = !undefinedEverywhere && rlo <= v && v <= rhi;
         if (!inside && escaped++ < 5) {
           ADD_FAILURE() << name << ": op(" << x << ", " << y << ") = " << v
-                        << " escapes the GPU's [" << rlo << ", " << rhi << "] for operands ["
-                        << alo << ", " << ahi << "], [" << blo << ", " << bhi << "]"
+                        << " escapes the GPU's [" << rlo << ", " << rhi << "] for operands [" << alo
+                        << ", " << ahi << "], [" << blo << ", " << bhi << "]"
                         << (undefinedEverywhere ? " (flagged undefined everywhere)" : "");
         }
       }
@@ -303,7 +303,8 @@ TEST(AffineBlock, EnclosesFAndItsDerivativeAlongSegmentsOnThisGpu) {
                         "  vec4 a = zsTestInput[2 * i], b = zsTestInput[2 * i + 1];\n"
                         "  vec3 F;\n  vec2 D;\n  bool partial;\n"
                         "  zs_FAffine(a.xyz, b.xyz, a.w, b.w, F, D, partial);\n"
-                        "  zsTestOut = " + std::string(out) + ";\n",
+                        "  zsTestOut = " +
+                            std::string(out) + ";\n",
                         block);
     };
     const std::vector<float> forms = runOnGpu(source("vec4(F, 0.0)"), operands, error);
@@ -329,10 +330,10 @@ TEST(AffineBlock, EnclosesFAndItsDerivativeAlongSegmentsOnThisGpu) {
         const bool slopeInside = !std::isfinite(dt) || (dLo <= dt && dt <= dHi);
         if ((!inside || !slopeInside) && escaped++ < 5) {
           ADD_FAILURE() << "F = " << out[0] << ", dF/dt = " << dt << " at tau " << tau
-                        << " escape the GPU's " << c << " + " << s << " tau +- " << r
-                        << " and [" << dLo << ", " << dHi << "] on the segment tm " << a[3]
-                        << ", h " << a[7] << " of the ray (" << a[0] << ", " << a[1] << ", "
-                        << a[2] << ") + t (" << a[4] << ", " << a[5] << ", " << a[6] << ")";
+                        << " escape the GPU's " << c << " + " << s << " tau +- " << r << " and ["
+                        << dLo << ", " << dHi << "] on the segment tm " << a[3] << ", h " << a[7]
+                        << " of the ray (" << a[0] << ", " << a[1] << ", " << a[2] << ") + t ("
+                        << a[4] << ", " << a[5] << ", " << a[6] << ")";
         }
       }
     }

@@ -16,9 +16,9 @@
 #include <variant>
 #include <vector>
 
+#include "app/scene_args.hpp"
 #include "pipeline/load_surface.hpp"
 #include "pipeline/pipeline.hpp"
-#include "app/scene_args.hpp"
 #include "reference_comparison.hpp"
 #include "render_support.hpp"
 
@@ -33,8 +33,7 @@ struct RecordCase {
   int size = 40;
 };
 
-class RecordSurfaces
-    : public ::testing::TestWithParam<std::tuple<RecordCase, TracingMethod>> {};
+class RecordSurfaces : public ::testing::TestWithParam<std::tuple<RecordCase, TracingMethod>> {};
 
 TEST_P(RecordSurfaces, NoPixelWithoutSurfaceAndNoneMissing) {
   const RecordCase& record = std::get<0>(GetParam());
@@ -52,8 +51,7 @@ TEST_P(RecordSurfaces, NoPixelWithoutSurfaceAndNoneMissing) {
   if (record.boxOfBall) scene->domain = test::boxOfBall(scene->domain);
   scene->render.samples = 1;
   auto prepared = prepareSurface(*scene, kWithoutGlslang);
-  ASSERT_TRUE(std::holds_alternative<PreparedSurface>(prepared))
-      << std::get<std::string>(prepared);
+  ASSERT_TRUE(std::holds_alternative<PreparedSurface>(prepared)) << std::get<std::string>(prepared);
   const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
   ASSERT_EQ(surface.method, method) << surface.methodWarning;
   auto tracer = std::make_unique<RayTracer>();
@@ -92,8 +90,7 @@ TEST(RecordSurfacesWindows, ARootFoundInAReexpansionWindowIsKept) {
   ASSERT_TRUE(scene);
   scene->render.samples = 1;
   auto prepared = prepareSurface(*scene, kWithoutGlslang);
-  ASSERT_TRUE(std::holds_alternative<PreparedSurface>(prepared))
-      << std::get<std::string>(prepared);
+  ASSERT_TRUE(std::holds_alternative<PreparedSurface>(prepared)) << std::get<std::string>(prepared);
   const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
   auto tracer = std::make_unique<RayTracer>();
   ASSERT_EQ(loadSurface(*tracer, surface, scene->render), "");
@@ -108,13 +105,14 @@ TEST(RecordSurfacesWindows, ARootFoundInAReexpansionWindowIsKept) {
 
 INSTANTIATE_TEST_SUITE_P(
     Examples, RecordSurfaces,
-    ::testing::Combine(::testing::Values(
-        RecordCase{"LabsSepticInSurfersBox", "labs-septic.surf", {"domain.radius=9.55"}, true},
-        RecordCase{"LabsSeptic", "labs-septic.surf", {}},
-        RecordCase{"EndrassOctic", "endrass-octic.surf", {}},
-        RecordCase{"ChmutovOctic", "chmutov-octic.surf", {}},
-        RecordCase{"BarthDecic", "barth-decic.surf", {}},
-        RecordCase{"SartiDodecic", "sarti-dodecic.surf", {}, false, 32}),
+    ::testing::Combine(
+        ::testing::Values(
+            RecordCase{"LabsSepticInSurfersBox", "labs-septic.surf", {"domain.radius=9.55"}, true},
+            RecordCase{"LabsSeptic", "labs-septic.surf", {}},
+            RecordCase{"EndrassOctic", "endrass-octic.surf", {}},
+            RecordCase{"ChmutovOctic", "chmutov-octic.surf", {}},
+            RecordCase{"BarthDecic", "barth-decic.surf", {}},
+            RecordCase{"SartiDodecic", "sarti-dodecic.surf", {}, false, 32}),
         ::testing::Values(TracingMethod::Sampling, TracingMethod::Bernstein,
                           TracingMethod::Interval)),
     [](const auto& info) {

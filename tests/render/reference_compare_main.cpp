@@ -14,9 +14,9 @@
 #include <variant>
 #include <vector>
 
+#include "app/scene_args.hpp"
 #include "pipeline/load_surface.hpp"
 #include "pipeline/pipeline.hpp"
-#include "app/scene_args.hpp"
 #include "reference_comparison.hpp"
 
 namespace zs {
@@ -28,15 +28,21 @@ int run(int argc, char** argv) {
   std::vector<std::string> scenes, sets;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--size" && i + 1 < argc) size = std::atoi(argv[++i]);
-    else if (a == "--box") box = true;
-    else if (a == "--verbose") verbose = true;
-    else if (a == "--set" && i + 1 < argc) sets.push_back(argv[++i]);
-    else scenes.push_back(a);
+    if (a == "--size" && i + 1 < argc)
+      size = std::atoi(argv[++i]);
+    else if (a == "--box")
+      box = true;
+    else if (a == "--verbose")
+      verbose = true;
+    else if (a == "--set" && i + 1 < argc)
+      sets.push_back(argv[++i]);
+    else
+      scenes.push_back(a);
   }
   if (scenes.empty() || size < 1) {
-    std::fprintf(stderr, "usage: zs_reference_compare SCENE... [--size N] [--box] [--verbose] "
-                         "[--set K=V]...\n");
+    std::fprintf(stderr,
+                 "usage: zs_reference_compare SCENE... [--size N] [--box] [--verbose] "
+                 "[--set K=V]...\n");
     return 2;
   }
   int failures = 0;
@@ -61,9 +67,9 @@ int run(int argc, char** argv) {
     }
     const test::ReferenceCounts c = test::compareWithReference(scene, surface, frame, size);
     if (verbose) std::fputs(c.details.c_str(), stdout);
-    const char* method = surface.method == TracingMethod::Bernstein ? "bernstein"
+    const char* method = surface.method == TracingMethod::Bernstein  ? "bernstein"
                          : surface.method == TracingMethod::Interval ? "interval"
-                                                                      : "sampling";
+                                                                     : "sampling";
     std::printf("%-36s %-9s hits %5d  ghost %4d (%.2f %%)  missed %4d (%.2f %%)  left out %4d\n",
                 path.substr(path.find_last_of('/') + 1).c_str(), method, c.hits, c.ghost,
                 100.0 * c.ghost / std::max(c.hits, 1), c.missed,
@@ -77,4 +83,6 @@ int run(int argc, char** argv) {
 }  // namespace
 }  // namespace zs
 
-int main(int argc, char** argv) { return zs::run(argc, argv); }
+int main(int argc, char** argv) {
+  return zs::run(argc, argv);
+}

@@ -70,8 +70,7 @@ ReferenceCounts compareWithReference(const Scene& scene, const PreparedSurface& 
   double diagonal = 0;
   for (int k = 0; k < 3; ++k) diagonal += std::pow(bb.max[k] - bb.min[k], 2);
   const double tolerance = 1e-5 * std::sqrt(diagonal);  // the tracer's tangent tolerance
-  const double depthSlack =
-      std::max(10 * scene.render.tracing.epsilon, 1e-4 * std::sqrt(diagonal));
+  const double depthSlack = std::max(10 * scene.render.tracing.epsilon, 1e-4 * std::sqrt(diagonal));
 
   const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
   std::vector<ReferenceCounts> perThread(threads);
@@ -121,8 +120,8 @@ ReferenceCounts compareWithReference(const Scene& scene, const PreparedSurface& 
           c.missed += missed;
           if (missed) {
             char line[200];
-            std::snprintf(line, sizeof line, "  missed at pixel %d,%d: depth %.6g, reference %.6g\n",
-                          i, j, got, want);
+            std::snprintf(line, sizeof line,
+                          "  missed at pixel %d,%d: depth %.6g, reference %.6g\n", i, j, got, want);
             c.details += line;
           }
         }

@@ -14,10 +14,10 @@
 namespace zs::test {
 
 struct ReferenceCounts {
-  int hits = 0;     // pixels where the reference hits, of those not left out
-  int ghost = 0;    // drawn nearer than the first root, with no root within the tolerance
-  int missed = 0;   // nothing drawn, or something deeper, where the reference hits
-  int leftOut = 0;  // the reference's answer changes within half a pixel: either is right
+  int hits = 0;         // pixels where the reference hits, of those not left out
+  int ghost = 0;        // drawn nearer than the first root, with no root within the tolerance
+  int missed = 0;       // nothing drawn, or something deeper, where the reference hits
+  int leftOut = 0;      // the reference's answer changes within half a pixel: either is right
   std::string details;  // one line per ghost or missed pixel
 };
 

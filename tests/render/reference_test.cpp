@@ -30,16 +30,19 @@ const Case kCases[] = {
     {"thesis7_cross", "x^2*y^2+y^2*z^2+z^2*x^2-1", nullptr},
     {"feature_no_highlights", "x^4+y^4+z^4-1",
      [](RenderSettings& s) { s.silhouette.enabled = s.border.enabled = false; }},
-    {"feature_silhouette_wide", "x^4+y^4+z^4-1", [](RenderSettings& s) { s.silhouette.threshold = 0.4; }},
+    {"feature_silhouette_wide", "x^4+y^4+z^4-1",
+     [](RenderSettings& s) { s.silhouette.threshold = 0.4; }},
     {"feature_border_wide", "x^2+z^2-y", [](RenderSettings& s) { s.border.threshold = 0.06; }},
     {"feature_no_reflection", "x^2*y^2+y^2*z^2+z^2*x^2-1",
      [](RenderSettings& s) { s.reflection.enabled = false; }},
     {"feature_opacity", "x^2*y^2+y^2*z^2+z^2*x^2-1", [](RenderSettings& s) { s.opacity = 0.45; }},
     {"feature_point_light_only", "x^4+y^4+z^4-1",
      [](RenderSettings& s) { s.lights.sources[0].intensity = 0; }},
-    {"feature_directional_only", "x^4+y^4+z^4-1", [](RenderSettings& s) { s.lights.sources[1].intensity = 0; }},
+    {"feature_directional_only", "x^4+y^4+z^4-1",
+     [](RenderSettings& s) { s.lights.sources[1].intensity = 0; }},
     {"feature_supersampling", "x^3*y+y^3*z+z^3*x", [](RenderSettings& s) { s.samples = 2; }},
-    {"feature_orthographic", "x^4-z^4-y", [](RenderSettings& s) {
+    {"feature_orthographic", "x^4-z^4-y",
+     [](RenderSettings& s) {
        s.camera.projection = Projection::Orthographic;
        s.camera.height = 5;
      }},
@@ -76,7 +79,8 @@ INSTANTIATE_TEST_SUITE_P(Egl, Reference,
                          caseName);
 // OSMesa: the thesis surfaces only (the features exercise shared shader code).
 INSTANTIATE_TEST_SUITE_P(OsMesa, Reference,
-                         ::testing::Combine(::testing::Values(Backend::OsMesa), ::testing::Range(0, 7)),
+                         ::testing::Combine(::testing::Values(Backend::OsMesa),
+                                            ::testing::Range(0, 7)),
                          caseName);
 
 }  // namespace

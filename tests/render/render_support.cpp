@@ -63,7 +63,8 @@ std::unique_ptr<RayTracer> makeTracer(const SurfaceSpec& spec, std::string& erro
   }
   auto tracer = spec.frameStorage ? std::make_unique<RayTracer>(*spec.frameStorage)
                                   : std::make_unique<RayTracer>();
-  if (error = loadSurface(*tracer, std::get<PreparedSurface>(prepared), scene.render); !error.empty())
+  if (error = loadSurface(*tracer, std::get<PreparedSurface>(prepared), scene.render);
+      !error.empty())
     return nullptr;
   return tracer;
 }
@@ -82,8 +83,10 @@ std::pair<double, double> rayInBox(const Ray& r, const Domain& box) {
 double sampledFirstHit(PointEvaluator& f, const Ray& r, double t0, double t1, int samples,
                        std::span<const double> params) {
   return sampledFirstHit(
-      [&](double x, double y, double z, double out[4]) { f.eval(x, y, z, params, {out, 4}); }, r, t0,
-      t1, samples);
+      [&](double x, double y, double z, double out[4]) {
+        f.eval(x, y, z, params, {out, 4});
+      },
+      r, t0, t1, samples);
 }
 
 double sampledFirstHit(const FieldWithGradient& f, const Ray& r, double t0, double t1,
@@ -92,8 +95,8 @@ double sampledFirstHit(const FieldWithGradient& f, const Ray& r, double t0, doub
   auto at = [&](double t) {  // (f, f')
     f(r.origin[0] + t * r.direction[0], r.origin[1] + t * r.direction[1],
       r.origin[2] + t * r.direction[2], out);
-    return std::pair{out[0], out[1] * r.direction[0] + out[2] * r.direction[1] +
-                                 out[3] * r.direction[2]};
+    return std::pair{out[0],
+                     out[1] * r.direction[0] + out[2] * r.direction[1] + out[3] * r.direction[2]};
   };
   auto bisect = [](auto&& g, double lo, double hi) {  // a sign change of g on [lo, hi]
     const bool negLo = g(lo) < 0;
@@ -121,8 +124,8 @@ double sampledFirstHit(const FieldWithGradient& f, const Ray& r, double t0, doub
   return NAN;
 }
 
-bool stableWithinHalfAPixel(const std::function<double(double, double)>& firstHit, int i,
-                            int j, bool hit) {
+bool stableWithinHalfAPixel(const std::function<double(double, double)>& firstHit, int i, int j,
+                            bool hit) {
   for (auto [di, dj] : {std::pair{-0.5, 0.0}, {0.5, 0.0}, {0.0, -0.5}, {0.0, 0.5}})
     if (std::isnan(firstHit(i + di, j + dj)) == hit) return false;
   return true;
@@ -201,8 +204,8 @@ std::string matchReference(const std::string& name, const Image& image) {
   if (withinTolerance(diff)) return {};
   writePng(name + ".actual.png", image);
   return name + ": differs from " + path + ": " + std::to_string(diff.fractionOver * 100) +
-         "% of pixels over threshold, rmse " + std::to_string(diff.rmse) +
-         " (render written to " + name + ".actual.png)";
+         "% of pixels over threshold, rmse " + std::to_string(diff.rmse) + " (render written to " +
+         name + ".actual.png)";
 }
 
 bool pixelNear(const Image& image, int x, int y, Vec3 rgb, int tolerance) {

@@ -14,12 +14,12 @@
 #include <vector>
 
 #include "expr/tape.hpp"
+#include "interval/octree_settings.hpp"
+#include "render/camera.hpp"
 #include "render/gl_context.hpp"
 #include "render/image.hpp"
-#include "render/camera.hpp"
 #include "render/ray_tracer.hpp"
 #include "render/settings.hpp"
-#include "interval/octree_settings.hpp"
 #include "scene/scene.hpp"
 
 namespace zs::test {
@@ -75,14 +75,13 @@ double sampledFirstHit(PointEvaluator& f, const Ray& r, double t0, double t1, in
 // The same for F and its gradient written by hand: out = (F, dF/dx, dF/dy, dF/dz) at (x, y, z).
 // A reference that is cast many times per pixel is much faster so than through a tape.
 using FieldWithGradient = std::function<void(double x, double y, double z, double out[4])>;
-double sampledFirstHit(const FieldWithGradient& f, const Ray& r, double t0, double t1,
-                       int samples);
+double sampledFirstHit(const FieldWithGradient& f, const Ray& r, double t0, double t1, int samples);
 
 // Whether the reference's answer at pixel (i, j), hit or miss, stays the same half a pixel
 // away in each direction: where it does not, either answer is right. `firstHit(i, j)` is the
 // reference's first hit along the ray through (i, j) (NaN: none).
-bool stableWithinHalfAPixel(const std::function<double(double, double)>& firstHit, int i,
-                            int j, bool hit);
+bool stableWithinHalfAPixel(const std::function<double(double, double)>& firstHit, int i, int j,
+                            bool hit);
 
 // A render's depth against a reference for every pixel of a size x size frame of `camera`.
 // `shown` is a tape of F and its gradient (the surface that must be drawn); `firstHit(r)` the
@@ -109,9 +108,8 @@ std::string sourceDir();
 
 // The three tracing methods, for suites that run over every one (INSTANTIATE_TEST_SUITE_P
 // with kEveryMethod and methodName).
-inline const std::vector<TracingMethod> kEveryMethod{TracingMethod::Sampling,
-                                                     TracingMethod::Bernstein,
-                                                     TracingMethod::Interval};
+inline const std::vector<TracingMethod> kEveryMethod{
+    TracingMethod::Sampling, TracingMethod::Bernstein, TracingMethod::Interval};
 inline constexpr auto methodName = [](const auto& info) {
   return std::string(tracingMethodName(info.param));
 };

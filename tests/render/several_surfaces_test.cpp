@@ -105,10 +105,12 @@ TEST_P(SeveralSurfaces, EveryPixelShowsTheNearerSphereInItsOwnMaterial) {
         continue;
       }
       ASSERT_TRUE(hit) << "no hit at " << i << "," << j;
-      const Vec3 expected{ray.origin[0] + t0 * ray.direction[0], ray.origin[1] + t0 * ray.direction[1],
+      const Vec3 expected{ray.origin[0] + t0 * ray.direction[0],
+                          ray.origin[1] + t0 * ray.direction[1],
                           ray.origin[2] + t0 * ray.direction[2]};
-      EXPECT_NEAR(std::hypot((*hit)[0] - expected[0], (*hit)[1] - expected[1],
-                             (*hit)[2] - expected[2]), 0.0, 2e-3)
+      EXPECT_NEAR(
+          std::hypot((*hit)[0] - expected[0], (*hit)[1] - expected[1], (*hit)[2] - expected[2]),
+          0.0, 2e-3)
           << "not the nearer sphere's depth at " << i << "," << j;
       // Away from the circle, the hit takes its sphere's front color: A orange (red above
       // green), B green (green above red).

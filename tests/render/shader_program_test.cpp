@@ -1,6 +1,8 @@
 // A shader the GL driver rejects gives a short message (which stage, the head of the
 // driver's log) and a file with the whole log and the numbered source, never a thousand
 // lines in the terminal (docs/codegen.md, "When a shader is rejected").
+#include "render/shader_program.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,7 +10,6 @@
 #include <sstream>
 #include <string>
 
-#include "render/shader_program.hpp"
 #include "render_support.hpp"
 
 namespace zs {

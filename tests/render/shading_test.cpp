@@ -96,7 +96,8 @@ TEST_F(Shading, NoLightsLeaveTheAmbientTermOnly) {
   s.materials.front.ambient = 0.6;
   const Image flat = render(s);
   const std::uint8_t* p = flat.pixel(kSize / 2, kSize / 2);
-  for (int k = 0; k < 3; ++k) EXPECT_NEAR(p[k] / 255.0, 0.3 * s.materials.front.color[k], 1.0 / 255);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(p[k] / 255.0, 0.3 * s.materials.front.color[k], 1.0 / 255);
 }
 
 TEST_F(Shading, DiffuseWeightScalesTheLights) {
@@ -150,8 +151,10 @@ TEST(ShadingDefines, OneConstantEntryPerLightThatIsOn) {
   EXPECT_EQ(occurrences(d, "RT_POINT("), 1) << d;
   // Default directional light: direction (-0.4, -0.6, -1), so towards it is its negation,
   // normalized; color 0.8 = white x intensity.
-  EXPECT_NE(d.find("RT_DIRECTIONAL(vec3(0.324442842, 0.486664263, 0.811107106), vec3(0.8, 0.8, 0.8))"),
-            std::string::npos) << d;
+  EXPECT_NE(
+      d.find("RT_DIRECTIONAL(vec3(0.324442842, 0.486664263, 0.811107106), vec3(0.8, 0.8, 0.8))"),
+      std::string::npos)
+      << d;
   EXPECT_NE(d.find("RT_POINT(vec3(3.0, 3.0, 4.0), vec3(0.6, 0.6, 0.6))"), std::string::npos) << d;
   EXPECT_NE(d.find("#define RT_KEY_LIGHT vec3(0.324442842"), std::string::npos) << d;
   EXPECT_NE(d.find("#define RT_COLOR 0\n"), std::string::npos);
@@ -248,7 +251,9 @@ TEST_P(Shadows, TheBallDarkensTheFloorExactlyWhereItBlocksTheLight) {
 INSTANTIATE_TEST_SUITE_P(Methods, Shadows,
                          ::testing::Values(TracingMethod::Sampling, TracingMethod::Bernstein,
                                            TracingMethod::Interval),
-                         [](const auto& info) { return std::string(tracingMethodName(info.param)); });
+                         [](const auto& info) {
+                           return std::string(tracingMethodName(info.param));
+                         });
 
 TEST(ShadingDefines, ShadowsNumberTheLightsAndSayWhereTheirRaysGo) {
   RenderSettings s;
@@ -288,11 +293,11 @@ TEST(LightSpace, CameraLightsTurnWithTheView) {
     return tracer->render(s, Domain{}, 48, 48).color;
   };
   const Vec3 front{0, 0, 3}, side{3, 0, 0};
-  const ImageDiff camera = compareImages(picture(LightSpace::Camera, front),
-                                         picture(LightSpace::Camera, side), 2);
+  const ImageDiff camera =
+      compareImages(picture(LightSpace::Camera, front), picture(LightSpace::Camera, side), 2);
   EXPECT_LT(camera.fractionOver, 0.002) << "the same lighting seen from the side";
-  const ImageDiff world = compareImages(picture(LightSpace::World, front),
-                                        picture(LightSpace::World, side), 2);
+  const ImageDiff world =
+      compareImages(picture(LightSpace::World, front), picture(LightSpace::World, side), 2);
   EXPECT_GT(world.fractionOver, 0.2) << "world lights light the sphere from elsewhere";
 }
 

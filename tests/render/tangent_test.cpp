@@ -74,9 +74,11 @@ TEST(TangentRoots, RootPairCloserThanTheSampleStepIsResolved) {
   s.tracing.intervals = 4;
   s.tracing.epsilon = 1e-5;
   tracer->setTangentRoots(false);
-  Coverage off = compareWithSphere(tracer->render(s, Domain{}, kSize, kSize), s.camera, std::sqrt(1.01));
+  Coverage off =
+      compareWithSphere(tracer->render(s, Domain{}, kSize, kSize), s.camera, std::sqrt(1.01));
   tracer->setTangentRoots(true);
-  Coverage on = compareWithSphere(tracer->render(s, Domain{}, kSize, kSize), s.camera, std::sqrt(1.01));
+  Coverage on =
+      compareWithSphere(tracer->render(s, Domain{}, kSize, kSize), s.camera, std::sqrt(1.01));
   EXPECT_LT(off.covered, off.expected / 2) << "coarse sign sampling steps over the shell";
   EXPECT_EQ(on.covered, on.expected);
   EXPECT_EQ(on.wrong, 0);

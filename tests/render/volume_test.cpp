@@ -60,7 +60,8 @@ TEST(Volume, ALinearFieldMatchesTheTransferFunctionIntegratedInDouble) {
   auto tracer = test::makeTracer({"z", {}, 1}, error);
   ASSERT_NE(tracer, nullptr) << error;
   RenderSettings s = fromAboveOrthographic({0.1, 0.2, 0.3});
-  for (const Volume v : {Volume{2, 0.2, 4, 256}, Volume{40, 0.05, 0.5, 512}, Volume{0, 0.1, 1, 64}}) {
+  for (const Volume v :
+       {Volume{2, 0.2, 4, 256}, Volume{40, 0.05, 0.5, 512}, Volume{0, 0.1, 1, 64}}) {
     s.volume = v;
     const Frame f = tracer->render(s, Domain{}, kSize, kSize);
     ASSERT_EQ(f.error, "");
@@ -73,8 +74,10 @@ TEST(Volume, ALinearFieldMatchesTheTransferFunctionIntegratedInDouble) {
         const std::uint8_t* p = f.color.pixel(i, j);
         EXPECT_TRUE(std::isinf(f.depth.at(i, j)));  // no hits in a volume
         for (int k = 0; k < 3; ++k) {
-          EXPECT_NEAR(p[k] / 255.0, same[k], 1.5 / 255) << "density " << v.density << " channel " << k;
-          EXPECT_NEAR(p[k] / 255.0, exact[k], 3.0 / 255) << "density " << v.density << " channel " << k;
+          EXPECT_NEAR(p[k] / 255.0, same[k], 1.5 / 255)
+              << "density " << v.density << " channel " << k;
+          EXPECT_NEAR(p[k] / 255.0, exact[k], 3.0 / 255)
+              << "density " << v.density << " channel " << k;
         }
       }
     }
@@ -143,11 +146,12 @@ TEST(Volume, SkippingFarFromTheLevelKeepsThePicture) {
     bool polynomial;
   };
   // Degree 8: the Bernstein program's windows in double (emit_ray_polynomial.hpp kDoubleDegree).
-  for (const Case& c : {Case{"x^3*y + y^3*z + z^3*x", true}, Case{"x^4 + y^4 + z^4 - 1", true},
-                        Case{"x^8 + y^8 + z^8 - 1 + x*y*z", true},
-                        Case{"sin(3*x)*cos(2*y) + z^2 - 0.5", false}}) {
+  for (const Case& c :
+       {Case{"x^3*y + y^3*z + z^3*x", true}, Case{"x^4 + y^4 + z^4 - 1", true},
+        Case{"x^8 + y^8 + z^8 - 1 + x*y*z", true}, Case{"sin(3*x)*cos(2*y) + z^2 - 0.5", false}}) {
     const Domain box{{-1.5, -1.5, -1.5}, {1.5, 1.5, 1.5}};
-    auto everyStep = test::makeTracer({c.formula, box, 1, {}, Criteria::Thesis, TracingMethod::Sampling}, error);
+    auto everyStep =
+        test::makeTracer({c.formula, box, 1, {}, Criteria::Thesis, TracingMethod::Sampling}, error);
     ASSERT_NE(everyStep, nullptr) << error;
     const Frame b = everyStep->render(s, box, 48, 36);
     ASSERT_EQ(b.error, "");

@@ -41,7 +41,8 @@ TEST(SceneOverride, LightsByNumberAndAsAWholeList) {
   EXPECT_EQ(s.render.lights.sources[0].kind, LightKind::Point);
   EXPECT_EQ(s.render.lights.sources[0].position, (Vec3{1, 2, 3}));
   EXPECT_EQ(s.render.lights.sources[0].intensity, 0.8);  // kept: only the keys named change
-  expectApplied(s, "lights.source=[{kind=\"directional\", direction=[0,0,-1]}, {}, {enabled=false}]");
+  expectApplied(s,
+                "lights.source=[{kind=\"directional\", direction=[0,0,-1]}, {}, {enabled=false}]");
   ASSERT_EQ(s.render.lights.sources.size(), 3u);
   EXPECT_EQ(s.render.lights.sources[0].direction, (Vec3{0, 0, -1}));
   EXPECT_FALSE(s.render.lights.sources[2].enabled);
@@ -95,7 +96,8 @@ TEST(SceneOverride, SeveralAreCheckedTogetherAfterTheLast) {
     EXPECT_FALSE(e) << formatSceneError(*e);
   }
   Scene s;
-  ASSERT_FALSE(applyOverrides(s, std::vector<std::string>{"camera.up=[0,0,1]", "camera.eye=[0,5,0]"}));
+  ASSERT_FALSE(
+      applyOverrides(s, std::vector<std::string>{"camera.up=[0,0,1]", "camera.eye=[0,5,0]"}));
   EXPECT_EQ(s.render.camera.up, (Vec3{0, 0, 1}));
   EXPECT_EQ(s.render.camera.eye, (Vec3{0, 5, 0}));
 }
@@ -103,8 +105,8 @@ TEST(SceneOverride, SeveralAreCheckedTogetherAfterTheLast) {
 TEST(SceneOverride, SeveralThatStayInconsistentPointAtTheLatestKeyInvolved) {
   Scene s;
   const Scene before = s;
-  const std::vector<std::string> sets{"camera.eye=[0,5,0]", "octree.level=2",
-                                      "camera.up = [0,1,0]", "samples=2"};
+  const std::vector<std::string> sets{"camera.eye=[0,5,0]", "octree.level=2", "camera.up = [0,1,0]",
+                                      "samples=2"};
   const auto e = applyOverrides(s, sets);
   ASSERT_TRUE(e);
   EXPECT_EQ(e->key, "camera.up");

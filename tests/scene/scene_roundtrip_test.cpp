@@ -22,8 +22,11 @@ Scene everyKeyChanged() {
   s.formula = "a*x^2 + b*y^2 +\tz^2 - 1";
   s.params = {{"b", 1.0 / 3.0}, {"a", 0.1 + 0.2}, {"unused", -7.25}};
   s.level = -0.1 - 0.2;
-  s.domain = {{-2.5, -1e-300, -3}, {2.5, 5e-324, 1.7976931348623157e308}, DomainShape::Sphere,
-              {0.5, -1e-300, 2}, 0.75};
+  s.domain = {{-2.5, -1e-300, -3},
+              {2.5, 5e-324, 1.7976931348623157e308},
+              DomainShape::Sphere,
+              {0.5, -1e-300, 2},
+              0.75};
   s.octree = {7, Criteria::Uniform, 123'456};
   RenderSettings& r = s.render;
   r.camera = {{0.1, 4.4, -9e10}, {1, 2, 3}, {0.3, 1, 0}, Projection::Orthographic, 33.3, 2.2};
@@ -125,7 +128,8 @@ TEST(SceneRoundTrip, ClipPlanesAreWrittenAsTablesAndSetByNumber) {
   EXPECT_EQ(saveScene(Scene{}).find("clip"), std::string::npos);
   // A later document changes one plane by number, or replaces the list.
   Scene changed = expectScene(parseScene(text + "\n", "cut.surf"));
-  ASSERT_FALSE(applyOverrides(changed, std::vector<std::string>{"clip.plane.2.offset=0.75", "clip.plane.2.enabled=true"}));
+  ASSERT_FALSE(applyOverrides(
+      changed, std::vector<std::string>{"clip.plane.2.offset=0.75", "clip.plane.2.enabled=true"}));
   EXPECT_EQ(changed.render.clipPlanes[1].offset, 0.75);
   EXPECT_TRUE(changed.render.clipPlanes[1].enabled);
   EXPECT_EQ(changed.render.clipPlanes[0], s.render.clipPlanes[0]);
@@ -178,16 +182,16 @@ TEST(SceneRoundTrip, SeveralSurfacesAreWrittenAsTablesAndSetByNumber) {
   EXPECT_EQ(saveScene(expectScene(parseScene(text, "three.surf"))), text);
 
   Scene changed = s;
-  ASSERT_FALSE(applyOverrides(changed, std::vector<std::string>{
-                                           "surface.3.level=0.5", "surface.level=2",
-                                           "surface.2.front.color=[1, 0, 0]", "formula=\"x\""}));
+  ASSERT_FALSE(applyOverrides(
+      changed, std::vector<std::string>{"surface.3.level=0.5", "surface.level=2",
+                                        "surface.2.front.color=[1, 0, 0]", "formula=\"x\""}));
   EXPECT_EQ(changed.moreSurfaces[1].level, 0.5);
   EXPECT_EQ(changed.level, 2);  // surface.level and formula: the first surface's
   EXPECT_EQ(changed.formula, "x");
   EXPECT_EQ(changed.moreSurfaces[0].materials.front.color, (Vec3{1, 0, 0}));
   // Replacing the list: new entries take their own colors, the first one its formula.
-  ASSERT_FALSE(applyOverrides(changed, std::vector<std::string>{
-                                           "surface=[{formula=\"y\"}, {formula=\"z\"}]"}));
+  ASSERT_FALSE(applyOverrides(
+      changed, std::vector<std::string>{"surface=[{formula=\"y\"}, {formula=\"z\"}]"}));
   EXPECT_EQ(changed.formula, "y");
   EXPECT_EQ(changed.render.materials, surfaceMaterials(0));
   ASSERT_EQ(changed.moreSurfaces.size(), 1u);
@@ -197,11 +201,12 @@ TEST(SceneRoundTrip, SeveralSurfacesAreWrittenAsTablesAndSetByNumber) {
 }
 
 TEST(SceneRoundTrip, SurfaceParametersJoinTheScenesParameters) {
-  const Scene s = expectScene(parseScene(
-      "[params]\nb = 3\n[[surface]]\nformula = \"x - a\"\nparams = { a = 0.25 }\n"
-      "[[surface]]\nformula = \"y - a*b\"\n[surface.params]\na = 0.25\nc = 1\n",
-      "params.surf"));
-  EXPECT_EQ(s.params, (std::vector<std::pair<std::string, double>>{{"b", 3}, {"a", 0.25}, {"c", 1}}));
+  const Scene s = expectScene(
+      parseScene("[params]\nb = 3\n[[surface]]\nformula = \"x - a\"\nparams = { a = 0.25 }\n"
+                 "[[surface]]\nformula = \"y - a*b\"\n[surface.params]\na = 0.25\nc = 1\n",
+                 "params.surf"));
+  EXPECT_EQ(s.params,
+            (std::vector<std::pair<std::string, double>>{{"b", 3}, {"a", 0.25}, {"c", 1}}));
   // Saved in [params], where they read back the same.
   EXPECT_EQ(expectScene(parseScene(saveScene(s), "saved.surf")), s);
 }
@@ -218,7 +223,8 @@ TEST(SceneRoundTrip, SurfaceMaterialsReadAsSubTables) {
   EXPECT_EQ(s.moreSurfaces[0].materials.back.color, (Vec3{0, 0, 1}));
   EXPECT_EQ(s.moreSurfaces[0].materials.front.specular, surfaceMaterials(1).front.specular);
   // One [[surface]] table is a scene of one surface, saved in the short form.
-  const Scene one = expectScene(parseScene("[[surface]]\nformula = \"x - 1\"\nlevel = 2\n", "one.surf"));
+  const Scene one =
+      expectScene(parseScene("[[surface]]\nformula = \"x - 1\"\nlevel = 2\n", "one.surf"));
   EXPECT_EQ(one.formula, "x - 1");
   EXPECT_EQ(one.level, 2);
   EXPECT_TRUE(one.moreSurfaces.empty());
@@ -271,10 +277,10 @@ TEST(SceneRoundTrip, EightLightsRoundTrip) {
 }
 
 TEST(SceneRoundTrip, TheThesisLightKeysOfOldFilesStillRead) {
-  const Scene s = expectScene(parseScene(
-      "formula = \"x\"\n[lights.directional]\nintensity = 0.3\ndirection = [0, 0, -1]\n"
-      "[lights.point]\nposition = [1, 2, 3]\ncolor = [0.5, 0.5, 0.5]\n",
-      "old.surf"));
+  const Scene s = expectScene(
+      parseScene("formula = \"x\"\n[lights.directional]\nintensity = 0.3\ndirection = [0, 0, -1]\n"
+                 "[lights.point]\nposition = [1, 2, 3]\ncolor = [0.5, 0.5, 0.5]\n",
+                 "old.surf"));
   ASSERT_EQ(s.render.lights.sources.size(), 2u);
   EXPECT_EQ(s.render.lights.sources[0].kind, LightKind::Directional);
   EXPECT_EQ(s.render.lights.sources[0].intensity, 0.3);
@@ -286,10 +292,10 @@ TEST(SceneRoundTrip, TheThesisLightKeysOfOldFilesStillRead) {
 }
 
 TEST(SceneRoundTrip, ALightListInTheFileReplacesTheThesisLights) {
-  const Scene s = expectScene(parseScene(
-      "formula = \"x\"\n[[lights.source]]\nkind = \"point\"\nposition = [0, 0, 5]\n"
-      "[[lights.source]]\nenabled = false\n",
-      "list.surf"));
+  const Scene s = expectScene(
+      parseScene("formula = \"x\"\n[[lights.source]]\nkind = \"point\"\nposition = [0, 0, 5]\n"
+                 "[[lights.source]]\nenabled = false\n",
+                 "list.surf"));
   ASSERT_EQ(s.render.lights.sources.size(), 2u);
   EXPECT_EQ(s.render.lights.sources[0].kind, LightKind::Point);
   EXPECT_EQ(s.render.lights.sources[0].position, (Vec3{0, 0, 5}));

@@ -88,7 +88,8 @@ void runSequence(std::uint64_t seed, int steps, Counts& counts) {
     const int generationBefore = session.generation();
     std::string what, error;
     switch (rng() % 10) {
-      case 0: case 1: {
+      case 0:
+      case 1: {
         const bool good = rng() % 3 != 0;
         what = good ? goodFormulas()[rng() % goodFormulas().size()]
                     : badFormulas()[rng() % badFormulas().size()];
@@ -128,8 +129,7 @@ void runSequence(std::uint64_t seed, int steps, Counts& counts) {
       }
     }
     if (error.empty()) error = session.prepare();
-    SCOPED_TRACE("seed " + std::to_string(seed) + ", step " + std::to_string(step) + ": " +
-                 what);
+    SCOPED_TRACE("seed " + std::to_string(seed) + ", step " + std::to_string(step) + ": " + what);
     ++counts.steps;
     if (!error.empty()) {
       ++counts.refused;
@@ -138,24 +138,29 @@ void runSequence(std::uint64_t seed, int steps, Counts& counts) {
     }
     if (session.generation() != loaded) {
       ASSERT_EQ(loadSurface(tracer, *session.surface(), session.scene().render), "")
-          << "scene before:\n" << saveScene(before) << "scene after:\n" << saveScene(session.scene());
+          << "scene before:\n"
+          << saveScene(before) << "scene after:\n"
+          << saveScene(session.scene());
       loaded = session.generation();
     }
     const Image picture = gl.draw(tracer, session.scene(), failure);
     ASSERT_EQ(failure, "");
     if (!error.empty()) {
       const ImageDiff same = compareImages(picture, last);
-      ASSERT_TRUE(withinTolerance(same)) << "a refused edit changed the picture: "
-                                         << describe(same) << "\n" << error;
+      ASSERT_TRUE(withinTolerance(same))
+          << "a refused edit changed the picture: " << describe(same) << "\n"
+          << error;
       continue;
     }
     // A fresh render of the scene, as `zeroset render` of its .surf text makes it.
     auto fresh = prepareSurface(session.scene(), session.prepareOptions());
     ASSERT_TRUE(std::holds_alternative<PreparedSurface>(fresh))
-        << "the session took a scene that a fresh render refuses: "
-        << std::get<std::string>(fresh) << "\n" << saveScene(session.scene());
+        << "the session took a scene that a fresh render refuses: " << std::get<std::string>(fresh)
+        << "\n"
+        << saveScene(session.scene());
     RayTracer freshTracer;
-    ASSERT_EQ(loadSurface(freshTracer, std::get<PreparedSurface>(fresh), session.scene().render), "");
+    ASSERT_EQ(loadSurface(freshTracer, std::get<PreparedSurface>(fresh), session.scene().render),
+              "");
     const Image reference = gl.draw(freshTracer, session.scene(), failure);
     ASSERT_EQ(failure, "");
     const ImageDiff diff = compareImages(picture, reference);

@@ -1,5 +1,5 @@
-// The session as the page holds it (GLSL ES), natively: the first picture by the tape interpreter (prepareQuick) beside
-// prepare(), which it must leave alone.
+// The session as the page holds it (GLSL ES), natively: the first picture by the tape interpreter
+// (prepareQuick) beside prepare(), which it must leave alone.
 #include <gtest/gtest.h>
 
 #include "codegen/glsl_validation.hpp"

@@ -2,6 +2,8 @@
 // literature (Cayley, Kummer, Barth, Togliatti), counts derived by hand (a Chmutov-type
 // sextic), exact positions where they are known, the Hessian signature, and the regions that
 // must be reported as not certified (a curve of singular points, a cusp).
+#include "singular/singular.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,7 +13,6 @@
 
 #include "parser/parser.hpp"
 #include "singular/report.hpp"
-#include "singular/singular.hpp"
 
 namespace zs {
 namespace {
@@ -57,16 +58,18 @@ TEST(Singular, CayleyCubicHasFourNodesAtTheTetrahedronsVertices) {
 
 TEST(Singular, KummerQuarticHasSixteenRealNodes) {
   // mu = 1.3, within 1/3 < mu^2 < 3 where all 16 are real (examples/kummer-quartic.surf).
-  expectNodes("(x^2 + y^2 + z^2 - mu^2)^2 - (3*mu^2 - 1)/(3 - mu^2) * (1 - z - sqrt(2)*x) * "
-              "(1 - z + sqrt(2)*x) * (1 + z + sqrt(2)*y) * (1 + z - sqrt(2)*y)",
-              2.0, 16, {1.3});
+  expectNodes(
+      "(x^2 + y^2 + z^2 - mu^2)^2 - (3*mu^2 - 1)/(3 - mu^2) * (1 - z - sqrt(2)*x) * "
+      "(1 - z + sqrt(2)*x) * (1 + z + sqrt(2)*y) * (1 + z - sqrt(2)*y)",
+      2.0, 16, {1.3});
 }
 
 TEST(Singular, BarthSexticHasItsFiftyRealAffineNodes) {
   // 65 nodes, 15 of them at infinity: 50 real affine ones, all within |x|, |y|, |z| < 3.
-  expectNodes("4*(2.618033988749895*x^2 - y^2)*(2.618033988749895*y^2 - z^2)*"
-              "(2.618033988749895*z^2 - x^2) - 4.23606797749979*(x^2 + y^2 + z^2 - 1)^2",
-              3.0, 50);
+  expectNodes(
+      "4*(2.618033988749895*x^2 - y^2)*(2.618033988749895*y^2 - z^2)*"
+      "(2.618033988749895*z^2 - x^2) - 4.23606797749979*(x^2 + y^2 + z^2 - 1)^2",
+      3.0, 50);
 }
 
 TEST(Singular, TogliattiQuinticHasThirtyOneNodes) {
@@ -80,8 +83,9 @@ TEST(Singular, ChebyshevSexticPlusOneHasFiftyFourNodes) {
   // T6 has 5 critical points in (-1, 1) with values -1, 1, -1, 1, -1; the sum of three
   // values is -1 (F = 0) for two -1 and one +1: 3 positions x 3 x 3 x 2 = 54 nodes. The
   // same surface without "+ 1" has none (sums are odd multiples of 1, never 0).
-  const std::string t6 = "(32*x^6 - 48*x^4 + 18*x^2 - 1) + (32*y^6 - 48*y^4 + 18*y^2 - 1) + "
-                         "(32*z^6 - 48*z^4 + 18*z^2 - 1)";
+  const std::string t6 =
+      "(32*x^6 - 48*x^4 + 18*x^2 - 1) + (32*y^6 - 48*y^4 + 18*y^2 - 1) + "
+      "(32*z^6 - 48*z^4 + 18*z^2 - 1)";
   expectNodes(t6 + " + 1", 1.1, 54);
   const SingularResult none = find(t6, 1.1);
   EXPECT_TRUE(none.points.empty());
@@ -134,8 +138,7 @@ TEST(Singular, APiecewiseFormulaIsCertifiedOnlyWhereItIsSmooth) {
   const ParseResult parsed = parseFormula("5*x^2 - 5.5*max(0, x - 0.1)^2 - y^2 - z^2");
   ASSERT_TRUE(std::holds_alternative<Formula>(parsed));
   const Box box{{-0.01, -0.2, -0.2}, {0.3, 0.2, 0.2}};
-  auto r = findSingularPoints(std::get<Formula>(parsed), {}, box, std::nullopt,
-                              SingularSettings{});
+  auto r = findSingularPoints(std::get<Formula>(parsed), {}, box, std::nullopt, SingularSettings{});
   ASSERT_TRUE(std::holds_alternative<SingularResult>(r));
   const SingularResult& found = std::get<SingularResult>(r);
   ASSERT_EQ(found.points.size(), 1u);

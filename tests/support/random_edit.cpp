@@ -17,8 +17,12 @@ namespace {
 using namespace scene_detail;
 
 constexpr const char* kGoodFormulas[] = {
-    "x^2+y^2+z^2-1",          "x^2+y^2-z^2-a",      "x^4+y^4+z^4-1",
-    "x*y*z",                   "sin(3*x)+y^2+z^2-1", "x^2+y^2+z^2-1+a*(x^3-3*x*y^2)",
+    "x^2+y^2+z^2-1",
+    "x^2+y^2-z^2-a",
+    "x^4+y^4+z^4-1",
+    "x*y*z",
+    "sin(3*x)+y^2+z^2-1",
+    "x^2+y^2+z^2-1+a*(x^3-3*x*y^2)",
     "(x^2+y^2+z^2+0.8)^2-4*(x^2+y^2)",
 };
 constexpr const char* kBadFormulas[] = {"x^2+(", "x^2+foo(y)", "", "x^^2", "sqrt(x"};
@@ -54,7 +58,8 @@ std::string randomValue(std::mt19937_64& rng, const KeySpec& spec, Scene& scene,
   const Range& r = spec.range;
   if (!valid) {
     switch (rng() % 3) {
-      case 0: return "\"not a value\"";
+      case 0:
+        return "\"not a value\"";
       case 1:
         if (std::isfinite(r.lo)) return number(r.lo - 1 - unit(rng));
         [[fallthrough]];
@@ -66,8 +71,10 @@ std::string randomValue(std::mt19937_64& rng, const KeySpec& spec, Scene& scene,
   auto inRange = [&](double current) {
     const double hi = std::min(r.hi, costCap(key));
     double v;
-    if (std::isfinite(r.lo) && std::isfinite(hi)) v = r.lo + unit(rng) * (hi - r.lo);
-    else v = current * (0.5 + unit(rng)) + (unit(rng) - 0.5);
+    if (std::isfinite(r.lo) && std::isfinite(hi))
+      v = r.lo + unit(rng) * (hi - r.lo);
+    else
+      v = current * (0.5 + unit(rng)) + (unit(rng) - 0.5);
     v = std::clamp(v, r.lo, hi);
     if (r.loOpen && v <= r.lo) v = r.lo + 1e-3;
     if (r.hiOpen && v >= r.hi) v = r.hi - 1e-3;
@@ -129,11 +136,12 @@ std::string randomAssignment(std::mt19937_64& rng, const Scene& current) {
       const KeySpec& spec = list.keys[rng() % list.keys.size()];
       Scene scratch;
       list.entry(scene, i, scratch);
-      const std::string key = std::string(list.name) + "." + std::to_string(i + 1) + "." +
-                              std::string(spec.name);
+      const std::string key =
+          std::string(list.name) + "." + std::to_string(i + 1) + "." + std::string(spec.name);
       return key + "=" + randomValue(rng, spec, scratch, spec.name, valid);
     }
-    default: break;
+    default:
+      break;
   }
   std::vector<const KeySpec*> keys;
   for (const KeySpec& spec : keySpecs()) {
@@ -144,9 +152,12 @@ std::string randomAssignment(std::mt19937_64& rng, const Scene& current) {
   return std::string(spec.name) + "=" + randomValue(rng, spec, scene, spec.name, valid);
 }
 
-
-std::span<const char* const> goodFormulas() { return kGoodFormulas; }
-std::span<const char* const> badFormulas() { return kBadFormulas; }
+std::span<const char* const> goodFormulas() {
+  return kGoodFormulas;
+}
+std::span<const char* const> badFormulas() {
+  return kBadFormulas;
+}
 
 std::string randomSurfText(std::mt19937_64& rng, bool good) {
   if (!good) return "formula = \"x^2+y^2+z^2-1\"\n[tracing]\nepsilon = -1\n";

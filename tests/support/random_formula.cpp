@@ -53,12 +53,22 @@ class Generator {
   Piece expr(int depth) {
     if (depth <= 0 || chance(o_.leafProbability)) return leaf();
     switch (pick(10)) {
-      case 0: case 1: return sum(depth);
-      case 2: case 3: return product(depth);
-      case 4: return negate(depth);
-      case 5: case 6: return power(depth);
-      case 7: case 8: return call(depth);
-      default: return group(expr(depth - 1));
+      case 0:
+      case 1:
+        return sum(depth);
+      case 2:
+      case 3:
+        return product(depth);
+      case 4:
+        return negate(depth);
+      case 5:
+      case 6:
+        return power(depth);
+      case 7:
+      case 8:
+        return call(depth);
+      default:
+        return group(expr(depth - 1));
     }
   }
 
@@ -77,12 +87,22 @@ class Generator {
     const auto frac = std::to_string(pick(1000));
     std::string t;
     switch (pick(6)) {
-      case 0: case 1: t = whole; break;
-      case 2: t = whole + "." + frac; break;
-      case 3: t = "." + frac; break;
-      case 4: t = std::to_string(1 + pick(9)) + pickOf({"e", "E"}) + pickOf({"", "-", "+"}) +
-                  std::to_string(pick(4)); break;
-      default: t = std::to_string(1 + pick(9)) + "." + frac + "e-" + std::to_string(pick(3));
+      case 0:
+      case 1:
+        t = whole;
+        break;
+      case 2:
+        t = whole + "." + frac;
+        break;
+      case 3:
+        t = "." + frac;
+        break;
+      case 4:
+        t = std::to_string(1 + pick(9)) + pickOf({"e", "E"}) + pickOf({"", "-", "+"}) +
+            std::to_string(pick(4));
+        break;
+      default:
+        t = std::to_string(1 + pick(9)) + "." + frac + "e-" + std::to_string(pick(3));
     }
     return {t, kAtom, Edge::Number, Edge::Number, true};
   }
@@ -103,7 +123,9 @@ class Generator {
   }
   Piece atLeast(Piece p, Level level) { return p.level >= level ? p : group(std::move(p)); }
 
-  std::string op(const char* symbol) { return chance(0.5) ? symbol : std::string(" ") + symbol + " "; }
+  std::string op(const char* symbol) {
+    return chance(0.5) ? symbol : std::string(" ") + symbol + " ";
+  }
 
   Piece sum(int depth) {
     Piece a = atLeast(expr(depth - 1), kSum);
@@ -156,9 +178,11 @@ class Generator {
   Piece powerExponent(int depth) {
     const int maxExp = std::max(1, o_.maxIntegerExponent);
     switch (pick(6)) {
-      case 0: case 1: case 2:
-        return {std::to_string(1 + pick(std::uint64_t(maxExp))), kAtom, Edge::Number,
-                Edge::Number, true};
+      case 0:
+      case 1:
+      case 2:
+        return {std::to_string(1 + pick(std::uint64_t(maxExp))), kAtom, Edge::Number, Edge::Number,
+                true};
       case 3:  // negative integer: the exponent is a unary, "x^-2" is x^(-2)
         return {"-" + std::to_string(1 + pick(std::uint64_t(maxExp))), kUnary, Edge::Sign,
                 Edge::Number, true};

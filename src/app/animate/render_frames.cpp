@@ -12,8 +12,8 @@
 #include "pipeline/load_surface.hpp"
 #include "pipeline/pipeline.hpp"
 #include "render/ray_tracer.hpp"
-#include "session/session.hpp"
 #include "scene/scene_io.hpp"
+#include "session/session.hpp"
 
 namespace zs::app {
 
@@ -30,9 +30,10 @@ int digitsFor(int frames) {
 bool parseShard(const std::string& text, int& shard, int& shards, std::string& error) {
   int k = 0, n = 0;
   char slash = 0, rest = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &k, &slash, &n, &rest) != 3 || slash != '/' ||
-      n < 1 || k < 0 || k >= n) {
-    error = "error: --shard '" + text + "' is not K/N with 0 <= K < N\n"
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &k, &slash, &n, &rest) != 3 || slash != '/' || n < 1 ||
+      k < 0 || k >= n) {
+    error = "error: --shard '" + text +
+            "' is not K/N with 0 <= K < N\n"
             "hint: --shard 0/4 renders frames 0, 4, 8, ...; --shard 3/4 frames 3, 7, 11, ...\n";
     return false;
   }
@@ -159,15 +160,14 @@ int renderAnimation(const Scene& base, const AnimateOptions& opt, Backend backen
   const double totalMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   const std::string shard = opt.shards > 1 ? " of " + std::to_string(anim->frames) + " (shard " +
-                                                   std::to_string(opt.shard) + "/" +
-                                                   std::to_string(opt.shards) + ")"
-                                             : std::string();
+                                                 std::to_string(opt.shard) + "/" +
+                                                 std::to_string(opt.shards) + ")"
+                                           : std::string();
   std::printf("wrote %d frame%s%s (%dx%d) to %s in %.0f ms, %s; %s\n", written,
-              written == 1 ? "" : "s", shard.c_str(),
-              scene.width, scene.height, opt.outDir.c_str(), totalMs,
-              !perFrameOctree ? "octree built once (F does not change)"
-              : anim->kind == Animation::Kind::Level
-                  ? "octree rebuilt per frame (the level moves)"
+              written == 1 ? "" : "s", shard.c_str(), scene.width, scene.height, opt.outDir.c_str(),
+              totalMs,
+              !perFrameOctree                        ? "octree built once (F does not change)"
+              : anim->kind == Animation::Kind::Level ? "octree rebuilt per frame (the level moves)"
               : anim->kind == Animation::Kind::Setting
                   ? "surface rebuilt per frame (the setting changes its shader or octree)"
                   : "octree rebuilt per frame (the parameter is in F)",

@@ -1,8 +1,8 @@
 #pragma once
 // The frame loop of `zeroset render --animate`: takes the loaded scene and the animation
 // options, writes one numbered PNG per frame (or per frame of its shard) into a folder, and
-// optionally joins them into a video with ffmpeg (video.hpp). One GL context and one compiled shader serve every
-// frame; the octree is rebuilt per frame only when the animated key changes F
+// optionally joins them into a video with ffmpeg (video.hpp). One GL context and one compiled
+// shader serve every frame; the octree is rebuilt per frame only when the animated key changes F
 // (animation.hpp says when). Returns the process exit status; messages go to stderr,
 // one line per written frame to stdout.
 #include <string>

@@ -22,9 +22,9 @@ namespace zs::bench {
 struct BenchOptions {
   int width = 800;
   int height = 600;
-  int frames = 20;     // timed frames per configuration (the median is reported)
-  int warmup = 3;      // untimed frames first: first use of a hierarchy, caches, clocks
-  int maxLevel = 6;    // deepest octree level timed
+  int frames = 20;          // timed frames per configuration (the median is reported)
+  int warmup = 3;           // untimed frames first: first use of a hierarchy, caches, clocks
+  int maxLevel = 6;         // deepest octree level timed
   bool quick = false;       // the CI settings (quickOptions)
   bool levelsOnly = false;  // the levels plan instead of the full one
   Backend backend = Backend::Egl;

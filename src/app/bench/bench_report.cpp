@@ -11,9 +11,9 @@ namespace zs::bench {
 
 namespace {
 
-constexpr double kGoalFps = 60;               // goal: every thesis configuration
-constexpr double kGoalFirstFrameMs = 150;     // goal: typed formula to first frame
-constexpr double kIssueFirstFrameMs = 300;    // issue 7: every thesis surface
+constexpr double kGoalFps = 60;             // goal: every thesis configuration
+constexpr double kGoalFirstFrameMs = 150;   // goal: typed formula to first frame
+constexpr double kIssueFirstFrameMs = 300;  // issue 7: every thesis surface
 
 std::string format(const char* fmt, ...) {
   char buffer[512];
@@ -67,9 +67,8 @@ void tallyThesisConfigs(const BenchResults& results, GoalTally& t) {
     if ((!a && !b) || !r.error.empty()) continue;
     const double thesis = std::max(a.value_or(0), b.value_or(0));  // the harder of the two
     const double fps = r.stats.fps();
-    const std::string name = format("surface %d, level %d, %d intervals, epsilon %s",
-                                    c.surface, c.level, c.intervals,
-                                    formatEpsilon(c.epsilon).c_str());
+    const std::string name = format("surface %d, level %d, %d intervals, epsilon %s", c.surface,
+                                    c.level, c.intervals, formatEpsilon(c.epsilon).c_str());
     ++t.measured;
     t.atGoal += fps >= kGoalFps;
     t.atThesis += fps >= thesis;
@@ -78,21 +77,25 @@ void tallyThesisConfigs(const BenchResults& results, GoalTally& t) {
   }
 }
 
-const char* verdict(bool met) { return met ? "**met**" : "**not met**"; }
+const char* verdict(bool met) {
+  return met ? "**met**" : "**not met**";
+}
 
 std::string goals(const BenchResults& results) {
   GoalTally t;
   tallyThesisConfigs(results, t);
   std::string md = "## Goals\n\n";
   if (t.measured == 0) return md + "No thesis configuration was measured.\n\n";
-  md += format("- Thesis configurations at >= %.0f fps (goal): %d of %d - %s. "
-               "Slowest: %s at %.1f fps.\n",
-               kGoalFps, t.atGoal, t.measured,
-               verdict(t.atGoal == t.measured), t.worstName.c_str(), t.worstFps);
-  md += format("- At least the thesis' fps (issue 7): %d of %d - %s. Smallest ratio ours / "
-               "thesis: %.2fx (%s).\n",
-               t.atThesis, t.measured, verdict(t.atThesis == t.measured), t.worstRatio,
-               t.worstRatioName.c_str());
+  md += format(
+      "- Thesis configurations at >= %.0f fps (goal): %d of %d - %s. "
+      "Slowest: %s at %.1f fps.\n",
+      kGoalFps, t.atGoal, t.measured, verdict(t.atGoal == t.measured), t.worstName.c_str(),
+      t.worstFps);
+  md += format(
+      "- At least the thesis' fps (issue 7): %d of %d - %s. Smallest ratio ours / "
+      "thesis: %.2fx (%s).\n",
+      t.atThesis, t.measured, verdict(t.atThesis == t.measured), t.worstRatio,
+      t.worstRatioName.c_str());
   // Issue 10's goals are the exact method's, with the scene defaults (level 1).
   int exact = 0, exactAtGoal = 0;
   double exactWorst = 0;
@@ -104,9 +107,10 @@ std::string goals(const BenchResults& results) {
     exactWorst = std::max(exactWorst, r->stats.medianMs);
   }
   if (exact > 0) {
-    md += format("- Default method (bernstein), level 1, at >= %.0f fps (issue 10): %d of %d - "
-                 "%s. Slowest frame: %.1f ms.\n",
-                 kGoalFps, exactAtGoal, exact, verdict(exactAtGoal == exact), exactWorst);
+    md += format(
+        "- Default method (bernstein), level 1, at >= %.0f fps (issue 10): %d of %d - "
+        "%s. Slowest frame: %.1f ms.\n",
+        kGoalFps, exactAtGoal, exact, verdict(exactAtGoal == exact), exactWorst);
   }
   int ok = 0, fast = 0, total = 0;
   double worst = 0;
@@ -118,19 +122,21 @@ std::string goals(const BenchResults& results) {
     fast += f.totalMs <= kGoalFirstFrameMs;
     worst = std::max(worst, f.totalMs);
   }
-  md += format("- First frame <= %.0f ms (issue 7): %d of %d surfaces - %s; <= %.0f ms "
-               "(goal): %d of %d - %s. Slowest: %.0f ms.\n",
-               kIssueFirstFrameMs, ok, total, verdict(ok == total && total > 0),
-               kGoalFirstFrameMs, fast, total, verdict(fast == total && total > 0), worst);
+  md += format(
+      "- First frame <= %.0f ms (issue 7): %d of %d surfaces - %s; <= %.0f ms "
+      "(goal): %d of %d - %s. Slowest: %.0f ms.\n",
+      kIssueFirstFrameMs, ok, total, verdict(ok == total && total > 0), kGoalFirstFrameMs, fast,
+      total, verdict(fast == total && total > 0), worst);
   return md + "\n";
 }
 
 std::string deepLevels(const BenchResults& results) {
   std::string md = format("## Octree level 0..%d, both methods (10 intervals, epsilon 0.001)\n\n",
                           results.options.maxLevel);
-  md += "| Surface | Level | Leaves | Nodes | Octree + hierarchy ms | sampling ms | fps | "
-        "bernstein ms | fps | bernstein speed-up |\n"
-        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  md +=
+      "| Surface | Level | Leaves | Nodes | Octree + hierarchy ms | sampling ms | fps | "
+      "bernstein ms | fps | bernstein speed-up |\n"
+      "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   const auto ms = [](const ConfigResult* r) {
     return r && r->error.empty() ? format("%.2f", r->stats.medianMs) : std::string("-");
   };
@@ -144,8 +150,8 @@ std::string deepLevels(const BenchResults& results) {
       const bool both = r && b && r->error.empty() && b->error.empty() && b->stats.medianMs > 0;
       md += format("| %s | %d | %zu | %zu | %.2f | %s | %s | %s | %s | %s |\n",
                    level == 0 ? std::to_string(s.number).c_str() : "", level, any->leaves,
-                   any->nodes, any->octreeMs, ms(r).c_str(), fpsCell(r).c_str(),
-                   ms(b).c_str(), fpsCell(b).c_str(),
+                   any->nodes, any->octreeMs, ms(r).c_str(), fpsCell(r).c_str(), ms(b).c_str(),
+                   fpsCell(b).c_str(),
                    both ? format("%.2fx", r->stats.medianMs / b->stats.medianMs).c_str() : "-");
     }
   }
@@ -171,8 +177,8 @@ std::string firstFrames(const BenchResults& results) {
                                 ? format("%.0f", f.firstDrawMs - same->stats.medianMs)
                                 : std::string("-");
     md += format("| %d | %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.1f | %.0f | %s |\n", f.surface,
-                 tracingMethodName(f.method), f.cpu.parseMs, f.cpu.octreeMs, f.cpu.codegenMs, f.cpu.validateMs,
-                 f.glCompileMs, f.firstDrawMs, f.totalMs, jit.c_str());
+                 tracingMethodName(f.method), f.cpu.parseMs, f.cpu.octreeMs, f.cpu.codegenMs,
+                 f.cpu.validateMs, f.glCompileMs, f.firstDrawMs, f.totalMs, jit.c_str());
   }
   return md + "\n";
 }
@@ -190,14 +196,16 @@ std::string markdownReport(const BenchResults& results) {
   std::string md = "# zeroset bench\n\n";
   md += format("- Device: %s, %u CPU threads%s\n", results.device.c_str(), results.cpuThreads,
                o.quick ? " (quick mode: not comparable with the thesis)" : "");
-  md += format("- Frames: %dx%d, one ray per pixel, median of %d glFinish-timed full-frame "
-               "draws after %d warm-up draws; fps = 1000 / median ms\n",
-               o.width, o.height, o.frames, o.warmup);
+  md += format(
+      "- Frames: %dx%d, one ray per pixel, median of %d glFinish-timed full-frame "
+      "draws after %d warm-up draws; fps = 1000 / median ms\n",
+      o.width, o.height, o.frames, o.warmup);
   md += "- Scene: default camera and lights, domain [-1.5, 1.5]^3, thesis octree criteria\n";
-  md += format("- MESA_SHADER_CACHE_DISABLE=%s during the run; GL context creation (%.0f ms) "
-               "is not part of any first frame\n- Thesis: Intel HD Graphics 3000, resolution "
-               "not stated\n\n",
-               results.shaderCache.c_str(), results.contextMs);
+  md += format(
+      "- MESA_SHADER_CACHE_DISABLE=%s during the run; GL context creation (%.0f ms) "
+      "is not part of any first frame\n- Thesis: Intel HD Graphics 3000, resolution "
+      "not stated\n\n",
+      results.shaderCache.c_str(), results.contextMs);
   md += goals(results);
   md += thesisTable(
       results, "Table 5.2: fps by intervals and octree level (epsilon 0.001)",
@@ -226,26 +234,27 @@ std::string configCsv(const BenchResults& results) {
     std::string error = r.error.substr(0, r.error.find('\n'));
     std::replace(error.begin(), error.end(), ',', ';');
     const bool thesis = c.method == TracingMethod::Sampling;
-    csv += format("%d,%s,%d,%d,%s,%d,%d,%d,%.3f,%.3f,%.3f,%.2f,%.3f,%zu,%zu,%s,%s,%s\n",
-                  c.surface, tracingMethodName(c.method), c.level, c.intervals, formatEpsilon(c.epsilon).c_str(),
-                  results.options.width, results.options.height, r.stats.frames,
-                  r.stats.medianMs, r.stats.minMs, r.stats.maxMs, r.stats.fps(), r.octreeMs,
-                  r.leaves, r.nodes,
-                  thesis ? opt(table52Fps(c.surface, c.level, c.intervals, c.epsilon)).c_str() : "",
-                  thesis ? opt(table53Fps(c.surface, c.level, c.intervals, c.epsilon)).c_str() : "",
-                  error.c_str());
+    csv +=
+        format("%d,%s,%d,%d,%s,%d,%d,%d,%.3f,%.3f,%.3f,%.2f,%.3f,%zu,%zu,%s,%s,%s\n", c.surface,
+               tracingMethodName(c.method), c.level, c.intervals, formatEpsilon(c.epsilon).c_str(),
+               results.options.width, results.options.height, r.stats.frames, r.stats.medianMs,
+               r.stats.minMs, r.stats.maxMs, r.stats.fps(), r.octreeMs, r.leaves, r.nodes,
+               thesis ? opt(table52Fps(c.surface, c.level, c.intervals, c.epsilon)).c_str() : "",
+               thesis ? opt(table53Fps(c.surface, c.level, c.intervals, c.epsilon)).c_str() : "",
+               error.c_str());
   }
   return csv;
 }
 
 std::string firstFrameCsv(const BenchResults& results) {
-  std::string csv = "surface,method,parse_ms,octree_ms,codegen_ms,glslang_ms,gl_compile_ms,"
-                    "first_draw_ms,total_ms,error\n";
+  std::string csv =
+      "surface,method,parse_ms,octree_ms,codegen_ms,glslang_ms,gl_compile_ms,"
+      "first_draw_ms,total_ms,error\n";
   for (const FirstFrame& f : results.firstFrames)
     csv += format("%d,%s,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%s\n", f.surface,
-                  tracingMethodName(f.method), f.cpu.parseMs,
-                  f.cpu.octreeMs, f.cpu.codegenMs, f.cpu.validateMs, f.glCompileMs,
-                  f.firstDrawMs, f.totalMs, f.error.empty() ? "" : "failed");
+                  tracingMethodName(f.method), f.cpu.parseMs, f.cpu.octreeMs, f.cpu.codegenMs,
+                  f.cpu.validateMs, f.glCompileMs, f.firstDrawMs, f.totalMs,
+                  f.error.empty() ? "" : "failed");
   return csv;
 }
 
@@ -254,21 +263,23 @@ std::string inputMarkdownReport(const InputBenchResults& results) {
   const Scene& scene = results.scene;
   std::string md = "# zeroset bench: " + scene.formula + "\n\n";
   md += format("- Device: %s, %u CPU threads\n", results.device.c_str(), results.cpuThreads);
-  md += format("- Frames: %dx%d, median of %d glFinish-timed full-frame draws after %d warm-up "
-               "draws; fps = 1000 / median ms\n",
-               o.width, o.height, o.frames, o.warmup);
-  md += format("- Scene: octree level %d, reflection %s, %d x %d rays per pixel, epsilon %s "
-               "(sampling: %d intervals)\n",
-               scene.octree.level, scene.render.reflection.enabled ? "on" : "off",
-               scene.render.samples, scene.render.samples,
-               formatEpsilon(scene.render.tracing.epsilon).c_str(),
-               scene.render.tracing.intervals);
-  md += format("- First frame: parse to the first frame's pixels, shader cache %s "
-               "(MESA_SHADER_CACHE_DISABLE=%s)\n\n",
-               results.shaderCache == "true" ? "cold" : "as configured",
-               results.shaderCache.c_str());
-  md += "| Method | Median ms | fps | Min ms | Max ms | First frame ms | of which first draw "
-        "| Leaves |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  md += format(
+      "- Frames: %dx%d, median of %d glFinish-timed full-frame draws after %d warm-up "
+      "draws; fps = 1000 / median ms\n",
+      o.width, o.height, o.frames, o.warmup);
+  md += format(
+      "- Scene: octree level %d, reflection %s, %d x %d rays per pixel, epsilon %s "
+      "(sampling: %d intervals)\n",
+      scene.octree.level, scene.render.reflection.enabled ? "on" : "off", scene.render.samples,
+      scene.render.samples, formatEpsilon(scene.render.tracing.epsilon).c_str(),
+      scene.render.tracing.intervals);
+  md += format(
+      "- First frame: parse to the first frame's pixels, shader cache %s "
+      "(MESA_SHADER_CACHE_DISABLE=%s)\n\n",
+      results.shaderCache == "true" ? "cold" : "as configured", results.shaderCache.c_str());
+  md +=
+      "| Method | Median ms | fps | Min ms | Max ms | First frame ms | of which first draw "
+      "| Leaves |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
   const MethodResult* sampled = nullptr;
   for (const MethodResult& r : results.methods) {
     const char* name = tracingMethodName(r.method);
@@ -278,8 +289,8 @@ std::string inputMarkdownReport(const InputBenchResults& results) {
       md += format("| %s | not used: see below | | | | | | |\n", name);
     } else {
       md += format("| %s | %.2f | %.1f | %.2f | %.2f | %.0f | %.0f | %zu |\n", name,
-                   r.stats.medianMs, r.stats.fps(), r.stats.minMs, r.stats.maxMs,
-                   r.first.totalMs, r.first.firstDrawMs, r.leaves);
+                   r.stats.medianMs, r.stats.fps(), r.stats.minMs, r.stats.maxMs, r.first.totalMs,
+                   r.first.firstDrawMs, r.leaves);
       if (r.method == TracingMethod::Sampling) sampled = &r;
     }
   }
@@ -292,7 +303,8 @@ std::string inputMarkdownReport(const InputBenchResults& results) {
   }
   for (const MethodResult& r : results.methods) {
     if (!r.skipped.empty()) md += r.skipped + "\n";
-    if (!r.error.empty()) md += format("%s failed: %s\n", tracingMethodName(r.method), r.error.c_str());
+    if (!r.error.empty())
+      md += format("%s failed: %s\n", tracingMethodName(r.method), r.error.c_str());
   }
   return md;
 }

@@ -74,13 +74,12 @@ FirstFrame measureFirstFrame(int number, const Scene& scene, RayTracer& tracer,
 }
 
 // Builds the octree and box hierarchy of one level and hands them to the tracer.
-std::string loadLevel(const PreparedSurface& surface, Scene& scene, int level,
-                      RayTracer& tracer, ConfigResult& info) {
+std::string loadLevel(const PreparedSurface& surface, Scene& scene, int level, RayTracer& tracer,
+                      ConfigResult& info) {
   scene.octree.level = level;
   const auto start = Clock::now();
-  OctreeResult tree =
-      buildOctree(surface.formula, surface.params, toBox(scene.domain), scene.octree,
-                  toBall(scene.domain));
+  OctreeResult tree = buildOctree(surface.formula, surface.params, toBox(scene.domain),
+                                  scene.octree, toBall(scene.domain));
   if (auto* err = std::get_if<OctreeError>(&tree)) return err->message;
   const Octree& octree = std::get<Octree>(tree);
   const BoxHierarchy hierarchy =
@@ -134,9 +133,8 @@ void benchSurface(const PreparedSurface& surface, Scene scene,
                    "[%zu/%zu] surface %d, %s, level %d, %d intervals, epsilon %s: %.2f ms "
                    "median (%.1f fps), %zu leaves\n",
                    done, total, config.surface, tracingMethodName(config.method), config.level,
-                   config.intervals,
-                   formatEpsilon(config.epsilon).c_str(), r.stats.medianMs, r.stats.fps(),
-                   r.leaves);
+                   config.intervals, formatEpsilon(config.epsilon).c_str(), r.stats.medianMs,
+                   r.stats.fps(), r.leaves);
     } else {
       std::fprintf(stderr, "[%zu/%zu] surface %d, level %d: FAILED: %s\n", done, total,
                    config.surface, config.level, r.error.c_str());
@@ -147,9 +145,9 @@ void benchSurface(const PreparedSurface& surface, Scene scene,
 // The measuring context: llvmpipe JIT-compiles at the first draw, and a warm Mesa disk cache
 // would hide that cost from the time to first frame (an explicit setting in the environment
 // is respected). Returns the context, or nothing with `error` set.
-std::unique_ptr<GlContext> openBenchContext(const BenchOptions& options,
-                                            std::string& shaderCache, std::string& device,
-                                            double& contextMs, std::string& error) {
+std::unique_ptr<GlContext> openBenchContext(const BenchOptions& options, std::string& shaderCache,
+                                            std::string& device, double& contextMs,
+                                            std::string& error) {
   setenv("MESA_SHADER_CACHE_DISABLE", "true", 0);
   shaderCache = std::getenv("MESA_SHADER_CACHE_DISABLE");
   const auto start = Clock::now();
@@ -186,8 +184,8 @@ BenchResults runBench(const BenchOptions& options, const std::vector<BenchConfig
   BenchResults results;
   results.options = options;
   results.cpuThreads = std::thread::hardware_concurrency();
-  auto context = openBenchContext(options, results.shaderCache, results.device,
-                                  results.contextMs, results.error);
+  auto context = openBenchContext(options, results.shaderCache, results.device, results.contextMs,
+                                  results.error);
   if (!context) return results;
   RayTracer tracer;
   payDriverStartUp(tracer, options);
@@ -218,8 +216,8 @@ BenchResults runBench(const BenchOptions& options, const std::vector<BenchConfig
       std::fprintf(stderr,
                    "surface %d (%s), %s: first frame after %.0f ms (CPU %.1f, GL compile "
                    "%.1f, first draw %.1f)\n",
-                   surface.number, std::string(surface.formula).c_str(),
-                   tracingMethodName(method), ff.totalMs,
+                   surface.number, std::string(surface.formula).c_str(), tracingMethodName(method),
+                   ff.totalMs,
                    ff.cpu.parseMs + ff.cpu.octreeMs + ff.cpu.codegenMs + ff.cpu.validateMs,
                    ff.glCompileMs, ff.firstDrawMs);
       benchSurface(*prepared, scene, configs, options, tracer, results, done, plan.size());
@@ -234,8 +232,8 @@ InputBenchResults runInputBench(const Scene& input, const BenchOptions& options)
   results.scene = input;
   results.cpuThreads = std::thread::hardware_concurrency();
   double contextMs = 0;
-  auto context = openBenchContext(options, results.shaderCache, results.device, contextMs,
-                                  results.error);
+  auto context =
+      openBenchContext(options, results.shaderCache, results.device, contextMs, results.error);
   if (!context) return results;
   RayTracer tracer;
   payDriverStartUp(tracer, options);

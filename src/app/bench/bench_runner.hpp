@@ -24,7 +24,7 @@ struct FirstFrame {
   StageTimes cpu;  // parse (+ gradient), octree (+ box hierarchy), codegen, glslang
   double glCompileMs = 0;
   double firstDrawMs = 0;
-  double totalMs = 0;   // wall time of all of the above, end to end
+  double totalMs = 0;  // wall time of all of the above, end to end
   std::string error;
 };
 
@@ -45,10 +45,10 @@ struct ConfigResult {
 
 struct BenchResults {
   BenchOptions options;
-  std::string device;           // GL_VERSION / GL_RENDERER
-  std::string shaderCache;      // value of MESA_SHADER_CACHE_DISABLE during the run
-  unsigned cpuThreads = 0;      // std::thread::hardware_concurrency()
-  double contextMs = 0;         // headless context creation, not part of any first frame
+  std::string device;       // GL_VERSION / GL_RENDERER
+  std::string shaderCache;  // value of MESA_SHADER_CACHE_DISABLE during the run
+  unsigned cpuThreads = 0;  // std::thread::hardware_concurrency()
+  double contextMs = 0;     // headless context creation, not part of any first frame
   std::vector<FirstFrame> firstFrames;
   std::vector<ConfigResult> configs;
   std::string error;  // non-empty: no GL context, nothing was measured

@@ -18,7 +18,7 @@ class Canvas {
  public:
   Canvas(int width, int height, Rgb background);
 
-  void set(int x, int y, Rgb color);  // ignores pixels outside the image
+  void set(int x, int y, Rgb color);                         // ignores pixels outside the image
   void fillRect(int x0, int y0, int x1, int y1, Rgb color);  // inclusive corners
   // pen: side of the square drawn at each step; dash > 0 leaves gaps of `dash` pixels.
   void line(int x0, int y0, int x1, int y1, Rgb color, int pen = 1, int dash = 0);

@@ -14,11 +14,10 @@ namespace zs::bench {
 
 namespace {
 
-constexpr Rgb kWhite{255, 255, 255}, kInk{40, 40, 40}, kGrid{225, 225, 225},
-    kGoal{200, 30, 30};
+constexpr Rgb kWhite{255, 255, 255}, kInk{40, 40, 40}, kGrid{225, 225, 225}, kGoal{200, 30, 30};
 // Tableau-10 colors: distinguishable for the seven surfaces, also in gray print.
-constexpr Rgb kPalette[7] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44}, {214, 39, 40},
-                             {148, 103, 189}, {140, 86, 75}, {227, 119, 194}};
+constexpr Rgb kPalette[7] = {{31, 119, 180},  {255, 127, 14}, {44, 160, 44},  {214, 39, 40},
+                             {148, 103, 189}, {140, 86, 75},  {227, 119, 194}};
 constexpr double kGoalFps = 60;
 
 struct Point {
@@ -59,8 +58,7 @@ Image fpsByLevelPlot(const BenchResults& results, int width, int height) {
   };
 
   Canvas canvas(width, height, kWhite);
-  for (double decade = std::pow(10.0, logLo); decade < std::pow(10.0, logHi) * 1.01;
-       decade *= 10) {
+  for (double decade = std::pow(10.0, logLo); decade < std::pow(10.0, logHi) * 1.01; decade *= 10) {
     for (double m : {1.0, 2.0, 5.0}) {
       const double v = decade * m;
       if (v > std::pow(10.0, logHi) * 1.01) break;

@@ -1,8 +1,8 @@
 #pragma once
 // The published side of the benchmark: the 7 test surfaces of thesis Table 5.1 (Gallegos
 // 2018) with the frames per second its prototype reached on an Intel HD Graphics 3000 in
-// Tables 5.2 and 5.3, plus the Barth sextic, on which the peers (jsurf, ImpVis) are compared too. Takes
-// nothing, puts out constant data; header-only so the microbenchmarks can use it without
+// Tables 5.2 and 5.3, plus the Barth sextic, on which the peers (jsurf, ImpVis) are compared too.
+// Takes nothing, puts out constant data; header-only so the microbenchmarks can use it without
 // linking the app. The fps values are transcribed from the thesis text
 // (shared/seed/thesis-gallegos-2018.txt, "Cuadro 5.2" and "Cuadro 5.3"); they are the
 // reference column, never something zeroset computes.

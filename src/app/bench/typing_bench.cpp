@@ -10,14 +10,14 @@
 
 #include "app/bench/bench_runner.hpp"
 #include "app/shader_warmer.hpp"
-#include "session/session.hpp"
-#include "session/surface_worker.hpp"
 #include "interact/trace_budget.hpp"
 #include "pipeline/load_surface.hpp"
 #include "pipeline/quick_surface.hpp"
 #include "render/gl_context.hpp"
 #include "render/ray_tracer.hpp"
 #include "render/view_target.hpp"
+#include "session/session.hpp"
+#include "session/surface_worker.hpp"
 
 namespace zs::bench {
 namespace {
@@ -27,8 +27,6 @@ using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
-
-
 
 }  // namespace
 
@@ -165,8 +163,8 @@ std::string typingReport(const TypingResults& r) {
       first.push_back(k.firstMs);
       final.push_back(k.finalMs);
       std::snprintf(line, sizeof line, "| `%s` | %.1f | %dx%d | %.1f | %.1f | %s |\n",
-                    k.text.c_str(), k.firstMs, k.firstWidth, k.firstHeight, k.quickCpuMs,
-                    k.finalMs, k.note.c_str());
+                    k.text.c_str(), k.firstMs, k.firstWidth, k.firstHeight, k.quickCpuMs, k.finalMs,
+                    k.note.c_str());
     } else {
       std::snprintf(line, sizeof line, "| `%s` | | | | | not drawn: %s |\n", k.text.c_str(),
                     k.note.c_str());
@@ -176,11 +174,11 @@ std::string typingReport(const TypingResults& r) {
   auto maxOf = [](const std::vector<double>& v) {
     return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
   };
-  std::snprintf(line, sizeof line,
-                "\n%zu of %zu keystrokes drawn.\n\ntyping: first picture median %.0f ms, max %.0f ms\n"
-                "typing: final picture median %.0f ms, max %.0f ms\n",
-                first.size(), r.keys.size(), median(first), maxOf(first), median(final),
-                maxOf(final));
+  std::snprintf(
+      line, sizeof line,
+      "\n%zu of %zu keystrokes drawn.\n\ntyping: first picture median %.0f ms, max %.0f ms\n"
+      "typing: final picture median %.0f ms, max %.0f ms\n",
+      first.size(), r.keys.size(), median(first), maxOf(first), median(final), maxOf(final));
   return s + line;
 }
 

@@ -15,12 +15,12 @@
 namespace zs::bench {
 
 struct Keystroke {
-  std::string text;  // the formula typed so far
+  std::string text;    // the formula typed so far
   bool drawn = false;  // false: the text does not parse yet (the viewer keeps its picture)
   double firstMs = 0, finalMs = 0;
-  double quickCpuMs = 0;  // of firstMs: the tape and the shallow hierarchy on the CPU
+  double quickCpuMs = 0;                // of firstMs: the tape and the shallow hierarchy on the CPU
   int firstWidth = 0, firstHeight = 0;  // the first picture's size
-  std::string note;  // why it was not drawn, or what went wrong
+  std::string note;                     // why it was not drawn, or what went wrong
 };
 
 struct TypingResults {

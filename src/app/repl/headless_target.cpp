@@ -24,7 +24,9 @@ std::string HeadlessTarget::render(const std::filesystem::path& path) {
     tracer_ = std::make_unique<RayTracer>();
   }
   if (loadedGeneration_ != session_.generation()) {
-    if (std::string err = loadSurface(*tracer_, *session_.surface(), session_.scene().render); !err.empty()) return err;
+    if (std::string err = loadSurface(*tracer_, *session_.surface(), session_.scene().render);
+        !err.empty())
+      return err;
     loadedGeneration_ = session_.generation();
   }
   const Scene& scene = session_.scene();
@@ -47,12 +49,14 @@ std::string HeadlessTarget::run(const PromptCommand& command) {
       std::string notes = command.kind == PromptCommand::Kind::Load ? session_.notes() : "";
       return notes + render(nextFreePath(outputDir_, "zeroset", ".png"));
     }
-    case PromptCommand::Kind::Png: return render(command.arg);
+    case PromptCommand::Kind::Png:
+      return render(command.arg);
     case PromptCommand::Kind::Save: {
       std::string err = writeSceneFile(command.arg, session_.scene());
       return err.empty() ? "saved: " + command.arg + "\n" : err;
     }
-    default: return {};
+    default:
+      return {};
   }
 }
 

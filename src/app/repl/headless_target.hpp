@@ -27,7 +27,7 @@ class HeadlessTarget final : public PromptTarget {
 
   std::filesystem::path outputDir_;
   session::Session session_;
-  int loadedGeneration_ = 0;  // the session's surface in the tracer
+  int loadedGeneration_ = 0;            // the session's surface in the tracer
   std::unique_ptr<GlContext> context_;  // created at the first render
   std::unique_ptr<RayTracer> tracer_;
 };

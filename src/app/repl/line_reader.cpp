@@ -1,6 +1,7 @@
 // libedit through its readline-compatible API (BSD licensed, unlike GNU readline).
 #include "app/repl/line_reader.hpp"
 
+#include <editline/readline.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -8,8 +9,6 @@
 #include <cstring>
 #include <iostream>
 #include <string>
-
-#include <editline/readline.h>
 
 namespace zs::app {
 namespace {

@@ -50,8 +50,10 @@ void promptLoop(LineReader& reader, PromptTarget& target) {
     } else {
       const PromptCommand& command = std::get<PromptCommand>(parsed);
       if (command.kind == PromptCommand::Kind::Quit) break;
-      if (command.kind == PromptCommand::Kind::Help) reply = promptHelp();
-      else if (command.kind != PromptCommand::Kind::Empty) reply = target.run(command);
+      if (command.kind == PromptCommand::Kind::Help)
+        reply = promptHelp();
+      else if (command.kind != PromptCommand::Kind::Empty)
+        reply = target.run(command);
     }
     std::fputs(reply.c_str(), stdout);
   }
@@ -75,7 +77,8 @@ int runPrompt() {
     options.outputDir = outputDir();
     std::string error;
     viewer = Viewer::open(options, error);
-    if (!viewer) std::fprintf(stderr, "note: no window (%s); rendering to PNG files\n", error.c_str());
+    if (!viewer)
+      std::fprintf(stderr, "note: no window (%s); rendering to PNG files\n", error.c_str());
   }
   if (!viewer) {
     HeadlessTarget target(outputDir());

@@ -10,10 +10,14 @@ namespace zs::app {
 
 std::string applyPromptEdit(const PromptCommand& command, session::Session& session) {
   switch (command.kind) {
-    case PromptCommand::Kind::Formula: return session.setFormula(command.arg);
-    case PromptCommand::Kind::Load: return session.loadFile(command.arg);
-    case PromptCommand::Kind::Set: return session.applyOverrides(std::span(&command.arg, 1));
-    default: return "error: internal: not a scene edit\n";
+    case PromptCommand::Kind::Formula:
+      return session.setFormula(command.arg);
+    case PromptCommand::Kind::Load:
+      return session.loadFile(command.arg);
+    case PromptCommand::Kind::Set:
+      return session.applyOverrides(std::span(&command.arg, 1));
+    default:
+      return "error: internal: not a scene edit\n";
   }
 }
 

@@ -29,7 +29,8 @@ struct BuiltIn {
 // Thesis Table 5.1, in its order and with its names.
 constexpr std::array<BuiltIn, 7> kThesisSurfaces{{
     {N_("1 cross channel"), "x^2 + z^2 - y"},
-    {N_("2 Cayley cubic"), "x^2*y + x^2*z + y^2*x + y^2*z + z^2*y + z^2*x - (2/5)*(x*y + x*z + y*z)"},
+    {N_("2 Cayley cubic"),
+     "x^2*y + x^2*z + y^2*x + y^2*z + z^2*y + z^2*x - (2/5)*(x*y + x*z + y*z)"},
     {N_("3 cuboid"), "x^4 + y^4 + z^4 - 1"},
     {N_("4 peninsula"), "x^2 + y^3 + z^5 - 1"},
     {N_("5 Klein quartic"), "x^3*y + y^3*z + z^3*x"},

@@ -14,9 +14,9 @@
 namespace zs::app {
 
 struct Example {
-  std::string name;             // file stem, or the thesis' name of a built-in surface
-  std::filesystem::path file;   // empty for a built-in
-  std::string formula;          // built-ins only
+  std::string name;            // file stem, or the thesis' name of a built-in surface
+  std::filesystem::path file;  // empty for a built-in
+  std::string formula;         // built-ins only
 };
 
 // The examples/ folder: $ZS_SOURCE_DIR/examples, the installed gallery

@@ -13,7 +13,9 @@ ImFont* g_formulaFont = nullptr;  // in the ImGui context's atlas, which owns it
 
 }  // namespace
 
-ImFont* formulaFont() { return g_formulaFont ? g_formulaFont : ImGui::GetFont(); }
+ImFont* formulaFont() {
+  return g_formulaFont ? g_formulaFont : ImGui::GetFont();
+}
 
 std::string findViewerFont() {
   if (const char* own = std::getenv("ZS_FONT"); own && *own) return own;
@@ -42,17 +44,18 @@ std::string loadViewerFont(float contentScale) {
   ImGuiIO& io = ImGui::GetIO();
   ImFontConfig config;
   config.OversampleH = 2;
-  ImFont* font = io.Fonts->AddFontFromFileTTF(path.c_str(), kViewerFontSize * scale, &config,
-                                              kRanges);
+  ImFont* font =
+      io.Fonts->AddFontFromFileTTF(path.c_str(), kViewerFontSize * scale, &config, kRanges);
   if (!font) return "could not read the font " + path + "; the panel uses ImGui's built-in font";
   io.FontDefault = font;
   // Its monospaced sibling, where the family is installed whole.
-  const std::filesystem::path mono = std::filesystem::path(path).parent_path() / "DejaVuSansMono.ttf";
+  const std::filesystem::path mono =
+      std::filesystem::path(path).parent_path() / "DejaVuSansMono.ttf";
   std::error_code ec;
-  g_formulaFont = std::filesystem::is_regular_file(mono, ec)
-                      ? io.Fonts->AddFontFromFileTTF(mono.c_str(), kViewerFontSize * scale,
-                                                     &config, kRanges)
-                      : nullptr;
+  g_formulaFont =
+      std::filesystem::is_regular_file(mono, ec)
+          ? io.Fonts->AddFontFromFileTTF(mono.c_str(), kViewerFontSize * scale, &config, kRanges)
+          : nullptr;
   ImGui::GetStyle().ScaleAllSizes(scale);
   return {};
 }

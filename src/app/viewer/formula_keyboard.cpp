@@ -40,8 +40,8 @@ void drawFormulaKeyboard(PanelState& state, PanelResult& result) {
   ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(l.gapX, l.gapY));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
   constexpr ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration |
-                                     ImGuiWindowFlags_AlwaysAutoResize |
-                                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings;
+                                     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
+                                     ImGuiWindowFlags_NoSavedSettings;
   if (ImGui::Begin(i18n::label("formula keyboard"), nullptr, flags)) {
     for (const auto& row : interact::formulaKeyRows()) {
       for (std::size_t i = 0; i < row.size(); ++i) {

@@ -16,10 +16,10 @@ void drawFormulaKeyboard(PanelState& state, PanelResult& result);
 // Where the keyboard lies on a display of the given size with text of `fontSize` pixels:
 // centred at the bottom, square keys in rows (what the window tests click).
 struct FormulaKeyboardLayout {
-  float key = 0;            // side of a key, pixels
+  float key = 0;             // side of a key, pixels
   float gapX = 0, gapY = 0;  // between keys
-  float padding = 0;        // inside the window's edge
-  float left = 0, top = 0;  // the window's corner
+  float padding = 0;         // inside the window's edge
+  float left = 0, top = 0;   // the window's corner
   int rows = 0, columns = 0;
   std::pair<float, float> centre(int row, int column) const;
 };

@@ -41,8 +41,8 @@ int drawGallery(GalleryPanel& g, int current) {
         ImGui::SameLine();
       }
       ImGui::BeginGroup();
-      const std::string label =
-          std::string(i18n::tr(e.name.c_str())) + "   " + i18n::format(i18n::tr("degree %s"), e.degree.c_str());
+      const std::string label = std::string(i18n::tr(e.name.c_str())) + "   " +
+                                i18n::format(i18n::tr("degree %s"), e.degree.c_str());
       if (ImGui::Selectable(label.c_str(), static_cast<int>(i) == current))
         picked = static_cast<int>(i);
       if (ImGui::IsItemHovered() && !e.description.empty()) {
@@ -53,8 +53,8 @@ int drawGallery(GalleryPanel& g, int current) {
         ImGui::EndTooltip();
       }
       ImGui::PushTextWrapPos(0);
-      ImGui::TextDisabled("%s", e.summary.empty() ? i18n::tr("(no description)")
-                                                  : i18n::tr(e.summary.c_str()));
+      ImGui::TextDisabled(
+          "%s", e.summary.empty() ? i18n::tr("(no description)") : i18n::tr(e.summary.c_str()));
       ImGui::PopTextWrapPos();
       ImGui::EndGroup();
       ImGui::PopID();

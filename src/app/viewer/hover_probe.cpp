@@ -39,11 +39,11 @@ std::string HoverProbe::logLine() const {
   if (!shown_) return {};
   const ProbeResult& r = *shown_;
   char text[200];
-  std::snprintf(text, sizeof text, "K %.6g H %.6g k1 %.6g k2 %.6g at %.6g, %.6g, %.6g",
-                r.gaussian, r.mean, r.k1, r.k2, r.point[0], r.point[1], r.point[2]);
+  std::snprintf(text, sizeof text, "K %.6g H %.6g k1 %.6g k2 %.6g at %.6g, %.6g, %.6g", r.gaussian,
+                r.mean, r.k1, r.k2, r.point[0], r.point[1], r.point[2]);
   if (r.surfaces == 1) return std::string("probe: ") + text;
-  return "probe: surface " + std::to_string(r.surface + 1) + " of " +
-         std::to_string(r.surfaces) + " " + text;
+  return "probe: surface " + std::to_string(r.surface + 1) + " of " + std::to_string(r.surfaces) +
+         " " + text;
 }
 
 void HoverProbe::draw() const {

@@ -37,8 +37,8 @@ void drawFormula(PanelState& state, PanelResult& result) {
   state.formulaFocus.beforeItem();
   ImGui::SetNextItemWidth(-1);
   ImGui::PushFont(formulaFont());
-  const bool enter = ImGui::InputText("##formula", &state.formula,
-                                      ImGuiInputTextFlags_EnterReturnsTrue);
+  const bool enter =
+      ImGui::InputText("##formula", &state.formula, ImGuiInputTextFlags_EnterReturnsTrue);
   state.formulaFocus.afterItem();
   if (ImGui::IsItemEdited()) {
     result.formulaEdited = true;
@@ -97,8 +97,7 @@ void drawStats(const PanelStats& s) {
   if (s.singularPoints >= 0)
     ImGui::Text(i18n::tr("%d certified singular points"), s.singularPoints);
   if (!s.example.empty()) ImGui::Text(i18n::tr("example %s"), s.example.c_str());
-  if (!s.status.empty())
-    ImGui::TextWrapped("%s", s.status.c_str());
+  if (!s.status.empty()) ImGui::TextWrapped("%s", s.status.c_str());
 }
 
 // The curvature coloring's legend: the diverging map of raytrace_shading.frag.glsl
@@ -140,8 +139,8 @@ void drawExports(PanelState& state, PanelResult& result) {
   const char* print = i18n::label("Print page (Ctrl+P)");
   const float printWidth =
       ImGui::CalcTextSize(print, nullptr, true).x + 2 * ImGui::GetStyle().FramePadding.x;
-  if (printWidth + ImGui::GetStyle().ItemSpacing.x <= ImGui::GetContentRegionAvail().x -
-                                                         ImGui::GetItemRectSize().x)
+  if (printWidth + ImGui::GetStyle().ItemSpacing.x <=
+      ImGui::GetContentRegionAvail().x - ImGui::GetItemRectSize().x)
     ImGui::SameLine();
   if (ImGui::Button(print)) result.printPage = true;
 }
@@ -221,8 +220,8 @@ PanelResult drawPanel(Scene& scene, PanelState& state, const PanelStats& stats) 
     drawFormula(state, result);
     drawParams(scene, state, result);
     // surface.level: the surface drawn is F = level (a level set of F).
-    ImGui::DragScalar(i18n::label("level"), ImGuiDataType_Double, &scene.level, 0.01f, nullptr, nullptr,
-                      "%.4g");
+    ImGui::DragScalar(i18n::label("level"), ImGuiDataType_Double, &scene.level, 0.01f, nullptr,
+                      nullptr, "%.4g");
     result.sliderActive = result.sliderActive || ImGui::IsItemActive();
     drawStats(stats);
     drawLegend(stats);

@@ -102,9 +102,8 @@ void keyWidget(const KeySpec& spec, Scene& scene, const std::string& id) {
         } else if constexpr (std::is_same_v<F, RealRef>) {
           double& value = field(scene);
           const Bounds b = boundsOf(spec.range);
-          ImGui::DragScalar(label.c_str(), ImGuiDataType_Double, &value,
-                            speedOf(spec.range, value), b.clamp ? &b.lo : nullptr,
-                            b.clamp ? &b.hi : nullptr, "%.4g",
+          ImGui::DragScalar(label.c_str(), ImGuiDataType_Double, &value, speedOf(spec.range, value),
+                            b.clamp ? &b.lo : nullptr, b.clamp ? &b.hi : nullptr, "%.4g",
                             b.clamp ? ImGuiSliderFlags_AlwaysClamp : 0);
         } else if constexpr (std::is_same_v<F, VecRef>) {
           Vec3& v = field(scene);
@@ -125,7 +124,8 @@ void keyWidget(const KeySpec& spec, Scene& scene, const std::string& id) {
           }
         } else if constexpr (std::is_same_v<F, EnumRef>) {
           std::string items;
-          for (std::string_view name : field.names) (items += i18n::tr(std::string(name).c_str())) += '\0';
+          for (std::string_view name : field.names)
+            (items += i18n::tr(std::string(name).c_str())) += '\0';
           int current = field.get(scene);
           if (ImGui::Combo(label.c_str(), &current, items.c_str())) field.set(scene, current);
         } else {  // FunctionRef: applied on Enter, a text that does not parse is refused

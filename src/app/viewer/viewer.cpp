@@ -114,9 +114,9 @@ void Viewer::run() {
     for (int reduced = 0; reduced < 2; ++reduced) {
       if (traces_[reduced] == 0) continue;
       const double mean = traceMsTotal_[reduced] / traces_[reduced];
-      std::printf("traces %s: %d, mean %.1f ms (%.1f fps) at %dx%d\n",
-                  reduced ? "reduced" : "full", traces_[reduced], mean, 1000.0 / mean,
-                  stats_.width / (reduced ? lastScale_ : 1), stats_.height / (reduced ? lastScale_ : 1));
+      std::printf("traces %s: %d, mean %.1f ms (%.1f fps) at %dx%d\n", reduced ? "reduced" : "full",
+                  traces_[reduced], mean, 1000.0 / mean, stats_.width / (reduced ? lastScale_ : 1),
+                  stats_.height / (reduced ? lastScale_ : 1));
     }
     std::fflush(stdout);
   }
@@ -152,11 +152,9 @@ void Viewer::traceIfNeeded(int width, int height) {
   const bool quick = view_->showingQuick();
   int scale = 0;
   if (dirty_) {
-    scale = moving ? reducedScale(width, height)
-            : quick ? session_.quickScale(width, height)
-                    : 1;
-  }
-  else if (refine_ && !moving && !quick) scale = 1;
+    scale = moving ? reducedScale(width, height) : quick ? session_.quickScale(width, height) : 1;
+  } else if (refine_ && !moving && !quick)
+    scale = 1;
   if (scale == 0) return;
   const Scene& scene = session_.scene();
   RenderSettings settings = quick ? firstPictureSettings(scene.render) : scene.render;
@@ -165,8 +163,10 @@ void Viewer::traceIfNeeded(int width, int height) {
   const double ms = view_->trace(settings, scene.domain, width, height, scale);
   const double rays =
       double(width / scale) * double(height / scale) * settings.samples * settings.samples;
-  if (quick) session_.quickDrawn(ms, rays);
-  else msPerPixel_ = ms / rays;
+  if (quick)
+    session_.quickDrawn(ms, rays);
+  else
+    msPerPixel_ = ms / rays;
   stats_.traceMs = ms;
   stats_.traceScale = scale;
   stats_.curvatureRange = view_->curvatureRange();
@@ -242,7 +242,8 @@ void Viewer::frame() {
       session_.preparedScene().formula == session_.scene().formula && !buildAt_) {
     int windowWidth = 0, windowHeight = 0;
     glfwGetWindowSize(window_->window(), &windowWidth, &windowHeight);
-    if (hover_.update(session_.scene(), cursorX_, cursorY_, windowWidth, windowHeight) && options_.log) {
+    if (hover_.update(session_.scene(), cursorX_, cursorY_, windowWidth, windowHeight) &&
+        options_.log) {
       std::printf("%s\n", hover_.logLine().c_str());
       std::fflush(stdout);
     }
@@ -263,8 +264,10 @@ void Viewer::frame() {
   if (edited != before) {
     // Refused (a value a .surf would refuse): the session keeps the last scene that saves
     // and loads, and says why.
-    if (std::string err = session_.edit(edited); !err.empty()) stats_.status = panelError(err);
-    else onSceneEdited(before);
+    if (std::string err = session_.edit(edited); !err.empty())
+      stats_.status = panelError(err);
+    else
+      onSceneEdited(before);
   }
   if (panel.formulaEdited && panel_.formulaRefused && options_.log) {
     std::printf("refused: %s\n", panel_.formulaError.c_str());
@@ -276,8 +279,10 @@ void Viewer::frame() {
     // while typing, a pause of session::kTypingPauseMs does (the worker builds the latest
     // request only).
     showFirstPicture();
-    if (panel.formulaSubmitted) applyTypedFormula();
-    else buildAt_ = Clock::now() + std::chrono::milliseconds(session::kTypingPauseMs);
+    if (panel.formulaSubmitted)
+      applyTypedFormula();
+    else
+      buildAt_ = Clock::now() + std::chrono::milliseconds(session::kTypingPauseMs);
   }
   // After the panel has taken this frame's keys: a slow frame may hold several, and the
   // pause is measured from the last of them, not from a prefix typed before it.

@@ -21,26 +21,30 @@ void Viewer::startMeshExport() {
   std::filesystem::path dir = options_.outputDir;
   std::string stem = "zeroset";
   if (!sceneFile_.empty()) {
-    const std::filesystem::path beside = sceneFile_.parent_path().empty() ? "." : sceneFile_.parent_path();
+    const std::filesystem::path beside =
+        sceneFile_.parent_path().empty() ? "." : sceneFile_.parent_path();
     if (::access(beside.c_str(), W_OK) == 0) dir = beside;
     stem = sceneFile_.stem().string();
   }
   MeshExport request;
   request.settings.level = panel_.meshLevel;
   request.settings.cap = panel_.meshCap;
-  request.output = nextFreePath(dir, stem + "-level" + std::to_string(request.settings.level), ".stl").string();
+  request.output =
+      nextFreePath(dir, stem + "-level" + std::to_string(request.settings.level), ".stl").string();
   stats_.status = i18n::format(i18n::tr("exporting a mesh at level %d..."), request.settings.level);
   meshExport_ = std::async(std::launch::async, [scene = session_.scene(), request] {
     std::vector<SurfaceMesh> meshes;
     const std::string error = exportMeshes(scene, request, meshes);
     glfwPostEmptyEvent();  // wake the loop to show it
     if (!error.empty()) return FileJobResult{error, panelError(error)};
-    return FileJobResult{meshSummary(meshes), i18n::format(i18n::tr("mesh written: %s"),
-                                                           meshes.front().output.c_str())};
+    return FileJobResult{meshSummary(meshes),
+                         i18n::format(i18n::tr("mesh written: %s"), meshes.front().output.c_str())};
   });
 }
 
-void Viewer::finishMeshExport() { finishFileJob(meshExport_); }
+void Viewer::finishMeshExport() {
+  finishFileJob(meshExport_);
+}
 
 void Viewer::finishFileJob(std::future<FileJobResult>& job) {
   if (!job.valid() || job.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;

@@ -28,7 +28,9 @@ std::future<std::string> Viewer::post(PromptCommand command) {
   return answer;
 }
 
-void Viewer::requestClose() { post({PromptCommand::Kind::Quit, {}}); }
+void Viewer::requestClose() {
+  post({PromptCommand::Kind::Quit, {}});
+}
 
 void Viewer::runPending() {
   std::deque<Pending> batch;
@@ -64,13 +66,19 @@ void Viewer::runPending() {
         break;
       }
       case PromptCommand::Kind::Save:
-      case PromptCommand::Kind::Png: waiting_.push_back({c, std::move(p.reply)}); break;
+      case PromptCommand::Kind::Png:
+        waiting_.push_back({c, std::move(p.reply)});
+        break;
       case PromptCommand::Kind::Quit:
         glfwSetWindowShouldClose(window_->window(), GLFW_TRUE);
         p.reply.set_value("");
         break;
-      case PromptCommand::Kind::Help: p.reply.set_value(promptHelp()); break;
-      case PromptCommand::Kind::Empty: p.reply.set_value(""); break;
+      case PromptCommand::Kind::Help:
+        p.reply.set_value(promptHelp());
+        break;
+      case PromptCommand::Kind::Empty:
+        p.reply.set_value("");
+        break;
     }
   }
 }
@@ -151,11 +159,12 @@ void Viewer::captureWindow(int width, int height) {
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
   const std::size_t stride = std::size_t(width) * 4;
   for (int y = 0; y < height; ++y)  // GL rows come bottom-up
-    std::memcpy(&image.rgba[std::size_t(y) * stride], &rows[std::size_t(height - 1 - y) * stride], stride);
+    std::memcpy(&image.rgba[std::size_t(y) * stride], &rows[std::size_t(height - 1 - y) * stride],
+                stride);
   const std::filesystem::path path = nextFreePath(options_.outputDir, "zeroset-window", ".png");
   const std::string err = writePng(path.string(), image);
-  stats_.status = err.empty() ? i18n::format(i18n::tr("window: %s"), path.string().c_str())
-                              : panelError(err);
+  stats_.status =
+      err.empty() ? i18n::format(i18n::tr("window: %s"), path.string().c_str()) : panelError(err);
   const std::string logged = err.empty() ? "window: " + path.string() : "error: " + err;
   std::printf("%s\n", logged.c_str());
   std::fflush(stdout);
@@ -166,8 +175,8 @@ std::string Viewer::save(const std::filesystem::path& path) {
   Scene saved = session_.scene();
   window_->framebufferSize(saved.width, saved.height);
   std::string text = writeSceneFile(path, saved);
-  stats_.status = text.empty() ? i18n::format(i18n::tr("saved: %s"), path.string().c_str())
-                               : panelError(text);
+  stats_.status =
+      text.empty() ? i18n::format(i18n::tr("saved: %s"), path.string().c_str()) : panelError(text);
   if (text.empty()) text = "saved: " + path.string() + "\n";
   return text;
 }

@@ -19,7 +19,8 @@ void Viewer::startPrint() {
   PrintJob job;
   job.scene = session_.scene();
   // The file's name and description only while its formula is the one shown.
-  const bool fromFile = !sceneFile_.empty() && session_.scene().formula == session_.loadedScene().formula;
+  const bool fromFile =
+      !sceneFile_.empty() && session_.scene().formula == session_.loadedScene().formula;
   describeForPrint(fromFile ? sceneFile_.string() : "", job.title, job.description);
   const std::string stem = fromFile ? sceneFile_.stem().string() : "zeroset";
   job.output = nextFreePath(options_.outputDir, stem + "-page", ".pdf");
@@ -33,6 +34,8 @@ void Viewer::startPrint() {
   });
 }
 
-void Viewer::finishPrint() { finishFileJob(print_); }
+void Viewer::finishPrint() {
+  finishFileJob(print_);
+}
 
 }  // namespace zs::app
