@@ -102,15 +102,8 @@ int runRender(const RenderArgs& args) {
   const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
   std::cerr << surface.formulaNote << surface.methodWarning << surface.singularNote;
 
-  // One frame: on llvmpipe the JIT compile of the shader costs more than the frame unless
-  // the image is large. Without LLVM's optimization passes the JIT takes about half as long
-  // and the frame a fifth longer, so below some 8 megapixels of rays the picture is ready
-  // sooner that way (docs/renderer.md has the measurement).
-  // Mesa reads this once, when the driver starts; a value the user set is kept. Other
-  // drivers ignore it.
-  const double rays = double(scene->width) * (band ? band->rows : scene->height) *
-                      scene->render.samples * scene->render.samples;
-  if (rays <= 8e6) setenv("GALLIVM_PERF", "nopt", /*overwrite=*/0);
+  preferQuickShaderCompile(double(scene->width) * (band ? band->rows : scene->height) *
+                           scene->render.samples * scene->render.samples);
   HeadlessTracer gl = openHeadlessTracer(backend, surface, scene->render);
   if (!gl.tracer) return 1;
   RayTracer& tracer = *gl.tracer;

@@ -7,9 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "app/commands.hpp"
 #include "curve/curve.hpp"
@@ -20,7 +18,6 @@
 #include "render/image_formats.hpp"
 #include "render/ray_tracer.hpp"
 #include "scene/scene_io.hpp"
-#include "session/session.hpp"
 #include "surfscript/surf_import.hpp"
 
 namespace zs::app {
@@ -55,10 +52,8 @@ std::string drawSurfaces(const Scene& scene, Image& out) {
   auto prepared = prepareSurface(scene, kWithoutGlslang);
   if (auto* err = std::get_if<std::string>(&prepared)) return *err;
   const PreparedSurface& surface = std::get<PreparedSurface>(prepared);
-  // Small pictures: llvmpipe's JIT without LLVM's optimizer is done sooner (cmd_render.cpp).
-  const double rays =
-      double(scene.width) * scene.height * scene.render.samples * scene.render.samples;
-  if (rays <= 8e6) setenv("GALLIVM_PERF", "nopt", /*overwrite=*/0);
+  preferQuickShaderCompile(double(scene.width) * scene.height * scene.render.samples *
+                           scene.render.samples);
   HeadlessTracer gl = openHeadlessTracer(Backend::Egl, surface, scene.render);
   if (!gl.tracer) return "no GL context to draw with";
   Frame frame = gl.tracer->render(scene.render, scene.domain, scene.width, scene.height);
@@ -101,26 +96,20 @@ std::string drawPicture(const surfscript::ScriptPicture& p) {
 }
 
 int runScriptFile(const std::string& file, bool quiet) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  if (in) text << in.rdbuf();
-  if (!in || in.bad()) {
-    std::cerr << file << ": error: cannot open the surf script\n";
+  auto text = readSceneFile(file, "surf script");
+  if (auto* err = std::get_if<SceneError>(&text)) {
+    std::cerr << formatSceneError(*err);
     return 1;
   }
   if (!quiet) std::printf("zeroset: executing %s\n", file.c_str());
-  auto run = surfscript::runSurfScript(text.str(), file);
+  auto run = surfscript::runSurfScript(std::get<std::string>(text), file);
   if (auto* err = std::get_if<SceneError>(&run)) {
     std::cerr << formatSceneError(*err);
     return 1;
   }
   const auto& pictures = std::get<surfscript::ScriptPictures>(run);
-  if (!quiet) {
-    for (const SceneError& w : pictures.warnings) {
-      ImportedScene shown{{}, {w}};
-      std::cerr << session::formatImportWarnings(shown);
-    }
-  }
+  if (!quiet)
+    for (const SceneError& w : pictures.warnings) std::cerr << formatSceneWarning(w);
   for (const surfscript::ScriptPicture& p : pictures.pictures) {
     if (std::string err = drawPicture(p); !err.empty()) {
       SceneError e = p.place;
@@ -131,6 +120,12 @@ int runScriptFile(const std::string& file, bool quiet) {
     if (!quiet)
       std::printf("wrote %s (%dx%d)\n", p.fileName.c_str(), p.scene.width, p.scene.height);
   }
+  return 0;
+}
+
+int runScripts(const std::vector<std::string>& files, bool quiet) {
+  for (const std::string& f : files)
+    if (int rc = runScriptFile(f, quiet); rc != 0) return rc;
   return 0;
 }
 
@@ -164,9 +159,7 @@ int runSurfCommandLine(const std::vector<std::string>& args) {
               << kSurfUsage;
     return 1;
   }
-  for (const std::string& f : files)
-    if (int rc = runScriptFile(f, quiet); rc != 0) return rc;
-  return 0;
+  return runScripts(files, quiet);
 }
 
 void addSurfCommand(CLI::App& app) {
@@ -176,12 +169,7 @@ void addSurfCommand(CLI::App& app) {
   auto quiet = std::make_shared<bool>(false);
   cmd->add_option("files", *files, "the surf scripts, run in order")->required();
   cmd->add_flag("-q,--quiet", *quiet, "print nothing but errors");
-  cmd->callback([files, quiet] {
-    int rc = 0;
-    for (const std::string& f : *files)
-      if ((rc = runScriptFile(f, *quiet)) != 0) break;
-    std::exit(rc);
-  });
+  cmd->callback([files, quiet] { std::exit(runScripts(*files, *quiet)); });
 }
 
 }  // namespace zs::app

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "expr/degree.hpp"
 #include "expr/number_text.hpp"
@@ -31,29 +29,15 @@ ImportResult importJsurf(std::string_view text, std::string_view fileName) {
     w.message = std::move(n);
     out.warnings.push_back(std::move(w));
   }
-  // The mapped scene must be one a .surf file may hold; a failure here is a bug in the
-  // mapping, said as such rather than passed on to the renderer.
-  const SceneResult check = parseScene(saveScene(out.scene), fileName);
-  if (const auto* err = std::get_if<SceneError>(&check)) {
-    SceneError e = *err;
-    e.line = 0;
-    e.message = "the imported scene is not valid (a bug in zeroset's .jsurf import): " + e.message;
-    return e;
-  }
+  // A failure here is a bug in the mapping, said as such rather than passed on.
+  if (auto err = checkImportedScene(out.scene, fileName, ".jsurf")) return *err;
   return out;
 }
 
 ImportResult loadJsurf(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  if (in) text << in.rdbuf();
-  if (!in || in.bad()) {
-    SceneError e;
-    e.file = path.string();
-    e.message = "cannot open .jsurf file";
-    return e;
-  }
-  return importJsurf(text.str(), path.string());
+  auto text = readSceneFile(path, ".jsurf file");
+  if (auto* err = std::get_if<SceneError>(&text)) return *err;
+  return importJsurf(std::get<std::string>(text), path.string());
 }
 
 bool isJsurfPath(std::string_view path) {
@@ -123,10 +107,7 @@ std::variant<Exported, std::string> exportJsurf(const Scene& scene) {
 }
 
 std::string formatWarning(const SceneError& warning) {
-  std::string text = formatSceneError(warning);
-  const std::size_t at = text.find(": error: ");
-  if (at != std::string::npos) text.replace(at, 9, ": warning: ");
-  return text;
+  return formatSceneWarning(warning);
 }
 
 }  // namespace zs::jsurf

@@ -36,7 +36,7 @@ struct Exported {
 // polynomial in x, y, z, or that uses what SURFER's formula language lacks).
 std::variant<Exported, std::string> exportJsurf(const Scene& scene);
 
-// As formatSceneError, with "warning" for "error".
+// formatSceneWarning, under the name jsurf's callers have used.
 std::string formatWarning(const SceneError& warning);
 
 }  // namespace zs::jsurf

@@ -1,5 +1,6 @@
 #include "pipeline/load_surface.hpp"
 
+#include <cstdlib>
 #include <iostream>
 
 #include "interpreter/interpreter_glsl.hpp"
@@ -101,6 +102,10 @@ RayTracer* TapeInterpreters::load(const QuickSurface& surface, std::string& erro
   }
   error = loadQuickSurface(*tracer, surface);
   return error.empty() ? tracer : nullptr;
+}
+
+void preferQuickShaderCompile(double rays) {
+  if (rays <= 8e6) setenv("GALLIVM_PERF", "nopt", /*overwrite=*/0);
 }
 
 HeadlessTracer openHeadlessTracer(Backend backend, const PreparedSurface& surface,

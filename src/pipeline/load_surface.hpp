@@ -60,6 +60,14 @@ struct HeadlessTracer {
   std::unique_ptr<RayTracer> tracer;
 };
 
+// For one picture of `rays` rays (width x rows x samples^2), before the first context: on
+// llvmpipe the JIT compile of the shader costs more than the frame unless the picture is
+// large. Without LLVM's optimization passes the JIT takes about half as long and the frame a
+// fifth longer, so below some 8 million rays the picture is ready sooner that way
+// (docs/renderer.md has the measurement). Mesa reads this once, when the driver starts; a
+// value the user set is kept; other drivers ignore it.
+void preferQuickShaderCompile(double rays);
+
 // Null members after printing why (and a hint) to stderr.
 HeadlessTracer openHeadlessTracer(Backend backend, const PreparedSurface& surface,
                                   const RenderSettings& drawnWith);

@@ -27,4 +27,11 @@ std::string formatSceneError(const SceneError& e) {
   return out;
 }
 
+std::string formatSceneWarning(const SceneError& warning) {
+  std::string text = formatSceneError(warning);
+  const std::size_t at = text.find(": error: ");
+  if (at != std::string::npos) text.replace(at, 9, ": warning: ");
+  return text;
+}
+
 }  // namespace zs

@@ -51,22 +51,41 @@ SceneResult parseScene(std::string_view text, std::string_view fileName) {
   return scene;
 }
 
-SceneResult loadScene(const std::filesystem::path& path) {
+std::variant<std::string, SceneError> readSceneFile(const std::filesystem::path& path,
+                                                    std::string_view what) {
+  const std::string kind(what);
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
-    return fileError(path, "is a directory, not a scene file");
+    return fileError(path, "is a directory, not a " + kind);
   std::ifstream in(path, std::ios::binary);
-  if (!in) return fileError(path, std::string("cannot open scene file: ") + std::strerror(errno));
+  if (!in) return fileError(path, "cannot open " + kind + ": " + std::strerror(errno));
   const auto size = std::filesystem::file_size(path, ec);
   if (!ec && size > kMaxSceneBytes) {
     return fileError(path,
-                     "scene file is larger than " + std::to_string(kMaxSceneBytes >> 20) + " MiB");
+                     kind + " is larger than " + std::to_string(kMaxSceneBytes >> 20) + " MiB");
   }
   std::ostringstream text;
   text << in.rdbuf();
-  if (in.bad())
-    return fileError(path, std::string("cannot read scene file: ") + std::strerror(errno));
-  return parseScene(text.str(), path.string());
+  if (in.bad()) return fileError(path, "cannot read " + kind + ": " + std::strerror(errno));
+  return text.str();
+}
+
+SceneResult loadScene(const std::filesystem::path& path) {
+  auto text = readSceneFile(path, "scene file");
+  if (auto* err = std::get_if<SceneError>(&text)) return *err;
+  return parseScene(std::get<std::string>(text), path.string());
+}
+
+std::optional<SceneError> checkImportedScene(const Scene& scene, std::string_view fileName,
+                                             std::string_view importer) {
+  const SceneResult check = parseScene(saveScene(scene), fileName);
+  const auto* err = std::get_if<SceneError>(&check);
+  if (!err) return std::nullopt;
+  SceneError e = *err;
+  e.line = 0;
+  e.message = "the imported scene is not valid (a bug in zeroset's " + std::string(importer) +
+              " import): " + e.message;
+  return e;
 }
 
 SceneResult loadSceneOrFormula(std::string_view arg) {

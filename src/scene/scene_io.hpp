@@ -48,6 +48,20 @@ SceneResult parseScene(std::string_view text, std::string_view fileName);
 // Reads the file and parses it; a missing or unreadable file is a SceneError with line 0.
 SceneResult loadScene(const std::filesystem::path& path);
 
+// The whole text of a scene-sized file (a .surf, a .jsurf, a surf script); `what` names
+// the kind in the errors ("cannot open scene file: ..."): a directory, a missing or
+// unreadable file, or one over 16 MiB is a SceneError with line 0.
+std::variant<std::string, SceneError> readSceneFile(const std::filesystem::path& path,
+                                                    std::string_view what);
+
+// An importer's scene must be one a .surf file may hold: nothing, or the error that says it
+// is not (a bug in the importer, named by `importer`, e.g. "SURFER .jsurf").
+std::optional<SceneError> checkImportedScene(const Scene& scene, std::string_view fileName,
+                                             std::string_view importer);
+
+// As formatSceneError, with "warning" for "error" (an importer's notes).
+std::string formatSceneWarning(const SceneError& warning);
+
 // A scene file when `arg` names an existing file or ends in ".surf"; otherwise `arg` is a
 // formula, and the scene holds it with every other setting at its default.
 SceneResult loadSceneOrFormula(std::string_view arg);

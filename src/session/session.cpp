@@ -96,7 +96,7 @@ std::optional<ImportResult> importForeignFile(const std::filesystem::path& path,
 
 std::string formatImportWarnings(const ImportedScene& imported) {
   std::string notes;
-  for (const SceneError& w : imported.warnings) notes += jsurf::formatWarning(w);
+  for (const SceneError& w : imported.warnings) notes += formatSceneWarning(w);
   return notes;
 }
 

@@ -9,6 +9,20 @@
 
 namespace zs::surfscript {
 
+AffineMap surfRotation(double angle, int axis) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  AffineMap m = identityMap();
+  const int i = axis == 0 ? 1 : 0;  // the two coordinates that turn: (i, j)
+  const int j = axis == 2 ? 1 : 2;
+  m[i] = {0, 0, 0, 0};
+  m[j] = {0, 0, 0, 0};
+  m[i][i] = c;
+  m[i][j] = s;
+  m[j][i] = -s;
+  m[j][j] = c;
+  return m;
+}
+
 double Globals::number(std::string_view name) const {
   auto it = values.find(name);
   if (it == values.end() ||
@@ -641,25 +655,9 @@ class Runner {
       fail(axisExpr.place, "the axis is xAxis, yAxis or zAxis",
            "rotate(POLY, ANGLE, xAxis|yAxis|zAxis)");
     const Poly poly = p.type == Value::Type::Poly ? *p.poly : Poly::constant(p.number);
-    return polyValue(poly.substitute(rotationMap(angle, axisExpr.text[0] - 'x')));
+    return polyValue(poly.substitute(surfRotation(angle, axisExpr.text[0] - 'x')));
   }
 
- public:
-  static AffineMap rotationMap(double angle, int axis) {
-    const double c = std::cos(angle), s = std::sin(angle);
-    AffineMap m = identityMap();
-    const int i = axis == 0 ? 1 : 0;  // the two coordinates that turn: (i, j)
-    const int j = axis == 2 ? 1 : 2;
-    m[i] = {0, 0, 0, 0};
-    m[j] = {0, 0, 0, 0};
-    m[i][i] = c;
-    m[i][j] = s;
-    m[j][i] = -s;
-    m[j][j] = c;
-    return m;
-  }
-
- private:
   Globals globals_;
   std::map<std::string, Value, std::less<>> locals_;
   std::vector<Drawing> screen_;
@@ -676,10 +674,6 @@ std::variant<ScriptRun, ScriptError> runScript(std::string_view text) {
   } catch (const Failure& f) {
     return f.error;
   }
-}
-
-AffineMap surfRotation(double angle, int axis) {
-  return Runner::rotationMap(angle, axis);
 }
 
 }  // namespace zs::surfscript

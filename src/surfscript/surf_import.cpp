@@ -3,42 +3,22 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
+#include "scene/source_text.hpp"
 #include "surfscript/surf_scene.hpp"
 
 namespace zs::surfscript {
 
 namespace {
 
-std::string lineOf(std::string_view text, int line) {
-  int at = 1;
-  std::size_t start = 0;
-  while (at < line) {
-    const std::size_t nl = text.find('\n', start);
-    if (nl == std::string_view::npos) return {};
-    start = nl + 1;
-    ++at;
-  }
-  const std::size_t end = text.find('\n', start);
-  std::string out(
-      text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
-  if (!out.empty() && out.back() == '\r') out.pop_back();
-  return out;
-}
-
+// A SceneError at `p` with its source line for the caret (scene/source_text.hpp): the
+// script's columns count bytes, a SceneError's code points (a file name may hold an ä).
 SceneError placed(std::string_view text, std::string_view fileName, const Place& p,
                   std::string message, std::string hint = {}) {
-  SceneError e;
-  e.file = std::string(fileName);
-  e.line = p.line;
-  e.column = p.column;
-  e.width = std::max(1, p.width);
-  e.message = std::move(message);
-  e.hint = std::move(hint);
-  e.sourceLine = lineOf(text, p.line);
-  return e;
+  const scene_detail::SourceText src(fileName, text);
+  const std::size_t offset = src.offsetOf({p.line, 1}) + std::size_t(std::max(0, p.column - 1));
+  return src.error(src.positionOf(offset), {}, std::move(message), std::move(hint),
+                   std::max(1, p.width));
 }
 
 std::variant<ScriptRun, SceneError> run(std::string_view text, std::string_view fileName) {
@@ -69,12 +49,9 @@ std::variant<Scene, SceneError> sceneOf(std::string_view text, std::string_view 
   if (scene.formula.empty())
     return placed(text, fileName, d.place, "draw_surface has no surface to draw",
                   "set surface = ...; to a polynomial in x, y, z of degree 1 or more before it");
-  // The mapped scene must be one a .surf file may hold; a failure here is zeroset's bug.
-  const SceneResult check = parseScene(saveScene(scene), fileName);
-  if (const auto* err = std::get_if<SceneError>(&check))
-    return placed(
-        text, fileName, d.place,
-        "the imported scene is not valid (a bug in zeroset's surf import): " + err->message);
+  // A failure here is a bug in the mapping: said at the drawing it maps.
+  if (auto err = checkImportedScene(scene, fileName, "surf"))
+    return placed(text, fileName, d.place, err->message);
   return scene;
 }
 
@@ -148,16 +125,9 @@ ImportResult importSurfScript(std::string_view text, std::string_view fileName) 
 }
 
 ImportResult loadSurfScript(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  if (in) text << in.rdbuf();
-  if (!in || in.bad()) {
-    SceneError e;
-    e.file = path.string();
-    e.message = "cannot open the surf script";
-    return e;
-  }
-  return importSurfScript(text.str(), path.string());
+  auto text = readSceneFile(path, "surf script");
+  if (auto* err = std::get_if<SceneError>(&text)) return *err;
+  return importSurfScript(std::get<std::string>(text), path.string());
 }
 
 std::variant<ScriptPictures, SceneError> runSurfScript(std::string_view text,

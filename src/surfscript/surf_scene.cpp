@@ -126,12 +126,12 @@ Material material(const Globals& g, int i, bool front, Clamp& within) {
   return m;
 }
 
-struct Frame {
+struct ScreenMap {
   AffineMap screenToWorld;  // a similarity: k times a rotation, plus a translation
   double k = 1;
 };
 
-Camera cameraOf(const Globals& g, const Frame& f, int width, int height) {
+Camera cameraOf(const Globals& g, const ScreenMap& f, int width, int height) {
   const double hf = width >= height ? 10 : 10.0 * height / width;
   // surf samples pixel centres from -hf to hf: the picture's edges lie half a pixel beyond.
   const double halfHeight = hf * height / std::max(1, height - 1);
@@ -156,7 +156,7 @@ Camera cameraOf(const Globals& g, const Frame& f, int width, int height) {
 
 // The screen-space slab surf searches, clip_back <= z <= clip_front, as clip planes where
 // the domain reaches beyond it.
-void depthPlanes(const Globals& g, const Frame& f, double domainReach, RenderSettings& r) {
+void depthPlanes(const Globals& g, const ScreenMap& f, double domainReach, RenderSettings& r) {
   const Vec3 back = scaled(column(f.screenToWorld, 2), 1 / f.k);
   const double front = g.number("clip_front"), rear = g.number("clip_back");
   if (domainReach > front) {
@@ -220,7 +220,7 @@ Scene surfaceScene(const Drawing& d, std::vector<Note>& notes) {
   bool sharedMap = true;
   for (const auto& [i, p] : surfaces)
     sharedMap = sharedMap && p.pending() == surfaces[0].second.pending();
-  Frame frame;
+  ScreenMap frame;
   std::vector<std::string> formulas;
   AffineMap toWorld =
       modelClip || !sharedMap ? chain : compose(surfaces[0].second.pending(), chain);

@@ -113,6 +113,14 @@ SideBySide compare(const Image& a, const Image& b) {
   return out;
 }
 
+// What the run printed after `label` on its line, or "" when it did not print the label.
+std::string printed(const std::string& out, const std::string& label) {
+  const std::size_t at = out.find(label);
+  if (at == std::string::npos) return {};
+  const std::size_t from = at + label.size();
+  return out.substr(from, out.find('\n', from) - from);
+}
+
 std::string runIn(const fs::path& dir, const std::string& command) {
   const fs::path log = dir / "command.log";
   const int rc = shell("cd " + dir.string() + " && " + command + " > " + log.string() + " 2>&1");
@@ -281,9 +289,8 @@ TEST_F(SingularCalls, PlotJupyterReturnsThePicture) {
       "LIB \"surf_jupyter.lib\"; ring r = 0, (x,y,z), dp; poly f = x^2 + y^2 - z^2 - 1/4;"
       "string file = plot_jupyter(f); print(\"picture: \" + file);");
   ASSERT_EQ(out.substr(0, 2), "0\n") << out;
-  const std::size_t at = out.find("picture: ");
-  ASSERT_NE(at, std::string::npos) << out;
-  const fs::path file = out.substr(at + 9, out.find('\n', at) - at - 9);
+  const fs::path file = printed(out, "picture: ");
+  ASSERT_FALSE(file.empty()) << out;
   Image picture;
   ASSERT_TRUE(readJpeg(file, picture)) << out;
   fs::remove(file);
@@ -295,9 +302,8 @@ TEST_F(SingularCalls, SurferShowsTheSurfaceWithoutADisplayAsAPicture) {
       "LIB \"surf.lib\"; ring r = 0, (x,y,z), dp; poly f = x^3 + y^3 + z^3 - 1;"
       "print(\"pid: \" + string(system(\"pid\"))); surfer(f);");
   ASSERT_EQ(out.substr(0, 2), "0\n") << out;
-  const std::size_t at = out.find("pid: ");
-  ASSERT_NE(at, std::string::npos) << out;
-  const std::string pid = out.substr(at + 5, out.find('\n', at) - at - 5);
+  const std::string pid = printed(out, "pid: ");
+  ASSERT_FALSE(pid.empty()) << out;
   const fs::path picture = "/tmp/surfer" + pid + ".png";
   Image png;
   ASSERT_EQ(readPng(picture.string(), png), "") << out;
